@@ -1,0 +1,61 @@
+#pragma once
+/// @file
+/// The checks behind `massprops check`: each rule looks at a Model (per link and per welded group)
+/// and returns Findings. Checks never print and never decide exit codes.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "massprops/model.h"
+
+namespace massprops {
+
+enum class Severity { kNote = 0, kWarning = 1, kError = 2 };
+
+/// "note", "warning", "error".
+const char* ToString(Severity severity);
+/// Parses "note" / "warning" / "error"; nullopt otherwise.
+std::optional<Severity> ParseSeverity(std::string_view text);
+
+/// One problem found in a model.
+struct Finding {
+  std::string rule;  ///< Stable kebab-case id, e.g. "inertia-not-physical".
+  Severity severity = Severity::kError;
+  std::string model;        ///< The model's name.
+  std::string link;         ///< The link (for a welded-group finding: the group's root link).
+  SourceLocation location;  ///< Where to point the user (usually the <inertial> or <inertia>).
+  std::string message;      ///< A sentence that quotes the offending numbers.
+  /// Named measured values behind the message (e.g. {"mass", 0}, {"principal_min", -0.1}), for
+  /// machine-readable output.
+  std::vector<std::pair<std::string, double>> values;
+};
+
+/// What a rule is: its id, default severity, whether it runs by default, and a one-line summary.
+struct RuleInfo {
+  std::string id;
+  Severity default_severity;
+  bool enabled_by_default;
+  std::string summary;
+};
+
+/// Every rule, in a stable order (the README documents each).
+const std::vector<RuleInfo>& AllRules();
+
+struct CheckOptions {
+  /// Tolerance of the physical-validity test, relative to the trace of the inertia at the center
+  /// of mass (scale-free). See RotationalInertia::CouldBePhysicallyValid.
+  double tolerance = 1e-6;
+  /// Per-rule overrides: a severity, or nullopt to disable the rule. Rules not named keep their
+  /// defaults.
+  std::map<std::string, std::optional<Severity>> overrides;
+};
+
+/// Runs every enabled rule on the model. Findings are ordered by location (line), then rule id.
+/// Rules listed in a link's `ignored_rules` are not reported for that link.
+std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options = {});
+
+}  // namespace massprops

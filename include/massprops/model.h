@@ -1,0 +1,127 @@
+#pragma once
+/// @file
+/// The Model: what massprops reads from a URDF or SDF file, and nothing more. Only what inertia
+/// work needs is kept (links with their inertials and geometries, joints, the root link), each
+/// element with the SourceLocation it was read from. Numbers are stored as written in the file
+/// (no silent fix-ups), so a check can quote them and a fix can rewrite them.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace massprops {
+
+/// Where an element was read from. line and column are 1-based; 0 means unknown.
+struct SourceLocation {
+  std::string file;  ///< The path as given by the user ("-" or "<stdin>" for standard input).
+  int line = 0;
+  int column = 0;
+};
+
+/// A rigid pose X_AB: the frame B (its origin and its axes) measured and expressed in frame A.
+/// p_AB is the position of B's origin from A's origin in A; R_AB re-expresses vectors from B in A.
+struct Pose {
+  Eigen::Vector3d p_AB = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d R_AB = Eigen::Matrix3d::Identity();
+
+  /// X_AC = X_AB * X_BC.
+  Pose operator*(const Pose& X_BC) const { return {p_AB + R_AB * X_BC.p_AB, R_AB * X_BC.R_AB}; }
+  /// X_BA from X_AB.
+  Pose Inverse() const { return {-(R_AB.transpose() * p_AB), R_AB.transpose()}; }
+  bool IsIdentity() const { return p_AB.isZero(0) && R_AB.isIdentity(0); }
+};
+
+/// An <inertial>: mass, the pose of the inertial frame Bi in the link frame B, and the six
+/// numbers of the inertia about Bcm (the origin of Bi) expressed in Bi, exactly as written.
+/// Products use the negated convention of URDF and SDF (ixy = -∫xy dm).
+struct Inertial {
+  double mass = 0;
+  Pose X_BBi;  ///< URDF <origin> / SDF <pose> of the inertial, in the link frame.
+  double ixx = 0, iyy = 0, izz = 0, ixy = 0, ixz = 0, iyz = 0;
+
+  SourceLocation location;          ///< The <inertial> element.
+  SourceLocation mass_location;     ///< The <mass> element (line 0 when absent).
+  SourceLocation inertia_location;  ///< The <inertia> element (line 0 when absent).
+  SourceLocation pose_location;     ///< The <origin>/<pose> element (line 0 when absent).
+};
+
+/// A collision or visual geometry of a link, with its pose X_BG in the link frame B.
+struct Geometry {
+  enum class Type { kBox, kCylinder, kSphere, kCapsule, kEllipsoid, kMesh, kOther };
+  Type type = Type::kOther;
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();  ///< kBox: full lengths along x, y, z.
+  double radius = 0;                               ///< kCylinder, kSphere, kCapsule.
+  double length = 0;  ///< kCylinder, kCapsule: along the geometry's z axis (capsule: cylinder part).
+  Eigen::Vector3d radii = Eigen::Vector3d::Zero();  ///< kEllipsoid: semi-axes along x, y, z.
+  std::string uri;                                   ///< kMesh: the filename/uri, as written.
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();   ///< kMesh.
+  Pose X_BG;
+  bool is_collision = true;  ///< false for <visual>.
+  SourceLocation location;   ///< The <collision>/<visual> element.
+};
+
+struct Link {
+  std::string name;  ///< SDF: scoped name of a nested model's link ("inner::link").
+  std::optional<Inertial> inertial;  ///< Absent when the file has no <inertial> (massless link).
+  std::vector<Geometry> geometries;  ///< Collisions and visuals, in file order.
+  /// Rule ids disabled for this link by a `<!-- massprops: ignore rule-id [rule-id...] -->`
+  /// comment inside the link element ("all" disables every rule).
+  std::vector<std::string> ignored_rules;
+  SourceLocation location;  ///< The <link> element.
+};
+
+struct Joint {
+  enum class Type { kFixed, kRevolute, kContinuous, kPrismatic, kFloating, kPlanar, kBall,
+                    kUniversal, kScrew, kOther };
+  std::string name;
+  Type type = Type::kOther;
+  std::string type_name;  ///< As written in the file ("revolute", "fixed", ...).
+  std::string parent;     ///< Parent link name ("world" for SDF joints to the world).
+  std::string child;      ///< Child link name.
+  /// Pose of the child link frame C in the parent link frame P with every joint at zero.
+  /// URDF: the joint <origin>. SDF: computed from the resolved link poses.
+  Pose X_PC;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  ///< Unit axis, expressed in the child frame C.
+  SourceLocation location;  ///< The <joint> element.
+};
+
+struct Model {
+  enum class Format { kUrdf, kSdf };
+  std::string name;
+  Format format = Format::kUrdf;
+  std::string file;           ///< The path as given.
+  std::vector<Link> links;    ///< In file order.
+  std::vector<Joint> joints;  ///< In file order.
+  std::string root_link;      ///< The link that is no joint's child (URDF: urdfdom's root).
+  SourceLocation location;    ///< The <robot>/<model> element.
+
+  /// Index of the link with that name, or -1.
+  int FindLink(const std::string& name) const;
+  /// Index of the joint whose child is that link, or -1 (the root, or a free-floating SDF link).
+  int FindParentJoint(const std::string& child_link) const;
+};
+
+/// A problem in the input: the file could not be read, parsed, or understood. `element` names the
+/// XML element (e.g. "<inertia> of link 'arm'"); `message` says what is wrong and quotes the text.
+struct ReadError {
+  SourceLocation location;
+  std::string element;
+  std::string message;
+  /// "file:line:col: element: message".
+  std::string ToString() const;
+};
+
+/// What a reader returns: the models it read (a world may hold several) and the errors it found.
+/// A file with errors yields no model unless the errors are confined to elements that can be
+/// skipped (then `warnings` says so).
+struct ReadResult {
+  std::vector<Model> models;
+  std::vector<ReadError> errors;
+  std::vector<ReadError> warnings;
+  bool ok() const { return errors.empty(); }
+};
+
+}  // namespace massprops

@@ -1,0 +1,1 @@
+#include "massprops/model.h"

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Quick start, command 2: set up and run every test, twice:
+#   1. build/        Release, warnings are errors;
+#   2. build-asan/   Debug under AddressSanitizer + UndefinedBehaviorSanitizer.
+# Set MASSPROPS_SKIP_SANITIZERS=1 to run only the first.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+jobs=$(nproc)
+
+BUILD_DIR="$here/build" "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_TESTS=ON
+(cd "$here/build" && ctest --output-on-failure -j "$jobs")
+
+if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
+  BUILD_DIR="$here/build-asan" BUILD_TYPE=Debug "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON \
+    -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_SANITIZE=address,undefined
+  (cd "$here/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+     ctest --output-on-failure -j "$jobs")
+fi
