@@ -1,3 +1,416 @@
-// The `massprops` command-line tool (placeholder until the check command lands).
+// The `massprops` command-line tool: `massprops check [options] FILE...` lints the mass properties
+// of URDF/SDF robot models. Exit codes (a contract, see docs/cli.md):
+//   0  nothing at or above the fail level;
+//   1  findings at or above the fail level (--fail-on, default error);
+//   2  a file could not be read or parsed (the others are still checked and reported), a
+//      configuration file is invalid, or the command line is wrong.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
-int main() { std::cout << "massprops " << MASSPROPS_VERSION << "\n"; }
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "massprops/checks.h"
+#include "massprops/config.h"
+#include "massprops/model.h"
+#include "massprops/model_reader.h"
+#include "massprops/reporters.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using massprops::CheckOptions;
+using massprops::Config;
+using massprops::ConfigError;
+using massprops::FileResult;
+using massprops::Finding;
+using massprops::ReadError;
+using massprops::ReadResult;
+using massprops::Severity;
+
+constexpr int kExitClean = 0;
+constexpr int kExitFindings = 1;
+constexpr int kExitError = 2;  // unreadable input, bad configuration, bad command line
+
+constexpr const char* kExampleName = "two_link_arm.urdf";
+
+struct CheckArgs {
+  std::vector<std::string> files;
+  std::string format = "text";
+  std::string color = "auto";
+  std::string fail_on = "error";
+  std::vector<std::string> disable;
+  std::vector<std::string> severity;
+  double tolerance = 0;
+  bool tolerance_given = false;
+  std::string config;
+  std::vector<std::string> model_paths;
+  bool quiet = false;
+  bool list_rules = false;
+};
+
+// A command-line mistake found after CLI11 has parsed the arguments.
+struct UsageError {
+  std::string message;
+};
+
+// The folder holding the running executable ("" when it cannot be found).
+fs::path ExecutableDir(const char* argv0) {
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec || self.empty()) {
+    if (argv0 == nullptr || std::string(argv0).find('/') == std::string::npos) return {};
+    self = fs::absolute(argv0, ec);
+    if (ec) return {};
+  }
+  return self.parent_path();
+}
+
+// The bundled example model: next to the source tree of a build directory, or installed.
+std::optional<std::string> FindBundledExample(const char* argv0) {
+  std::vector<fs::path> candidates;
+#ifdef MASSPROPS_EXAMPLES_DIR
+  candidates.push_back(fs::path(MASSPROPS_EXAMPLES_DIR) / kExampleName);
+#endif
+  const fs::path dir = ExecutableDir(argv0);
+  if (!dir.empty()) {
+    candidates.push_back(dir / ".." / "examples" / kExampleName);         // <src>/build/massprops
+    candidates.push_back(dir / ".." / ".." / "examples" / kExampleName);  // <src>/build/x/massprops
+    candidates.push_back(dir / ".." / "share" / "massprops" / "examples" / kExampleName);
+  }
+  for (const fs::path& candidate : candidates) {
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return candidate.lexically_normal().string();
+  }
+  return std::nullopt;
+}
+
+// Whether the file's content starts with a <robot> or <sdf> root element (first 64 KiB).
+bool LooksLikeModel(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::string text(64 * 1024, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return massprops::DetectModelFormat(text).has_value();
+}
+
+// Files of a directory tree that look like robot models, sorted. *.urdf and *.sdf are always
+// taken; *.world and *.xml only when their root element is <robot> or <sdf>. Hidden folders are
+// skipped; symbolic links to folders are not followed.
+std::vector<std::string> CollectModelFiles(const fs::path& dir) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const fs::path& path = it->path();
+    const std::string name = path.filename().string();
+    std::error_code type_ec;
+    if (it->is_directory(type_ec)) {
+      if (!name.empty() && name[0] == '.') it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_regular_file(type_ec)) continue;
+    const std::string ext = path.extension().string();
+    if (ext == ".urdf" || ext == ".sdf") {
+      files.push_back(path.string());
+    } else if (ext == ".world" || ext == ".xml") {
+      if (LooksLikeModel(path)) files.push_back(path.string());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Parses "RULE=LEVEL" (LEVEL: off|note|warning|error) into `overrides`.
+void AddOverride(const std::string& rule, const std::string& level_text,
+                 std::map<std::string, std::optional<Severity>>& overrides) {
+  bool known = false;
+  for (const massprops::RuleInfo& info : massprops::AllRules()) known |= info.id == rule;
+  if (!known) {
+    throw UsageError{"unknown rule '" + rule + "' (massprops check --list-rules lists them)"};
+  }
+  if (level_text == "off") {
+    overrides[rule] = std::nullopt;
+    return;
+  }
+  const std::optional<Severity> level = massprops::ParseSeverity(level_text);
+  if (!level) {
+    throw UsageError{"--severity " + rule + "=" + level_text +
+                     ": the level must be off, note, warning or error"};
+  }
+  overrides[rule] = level;
+}
+
+int ListRules(const CheckArgs& args) {
+  const auto& rules = massprops::AllRules();
+  if (args.format == "json") {
+    nlohmann::json out = nlohmann::json::array();
+    for (const massprops::RuleInfo& rule : rules) {
+      out.push_back({{"id", rule.id},
+                     {"severity", massprops::ToString(rule.default_severity)},
+                     {"enabled", rule.enabled_by_default},
+                     {"summary", rule.summary}});
+    }
+    std::cout << out.dump(2) << "\n";
+    return kExitClean;
+  }
+  std::size_t width = 0;
+  for (const massprops::RuleInfo& rule : rules) width = std::max(width, rule.id.size());
+  for (const massprops::RuleInfo& rule : rules) {
+    std::string line = rule.id + std::string(width + 2 - rule.id.size(), ' ');
+    std::string severity = massprops::ToString(rule.default_severity);
+    if (!rule.enabled_by_default) severity += " (off)";
+    line += severity + std::string(severity.size() < 15 ? 15 - severity.size() : 1, ' ');
+    std::cout << line << rule.summary << "\n";
+  }
+  return kExitClean;
+}
+
+// Per-folder configuration lookup, each file read once.
+class ConfigCache {
+ public:
+  // The configuration that applies to a file in `dir`: the nearest .massprops.toml upward, else
+  // the one upward from the working directory; nullptr when there is none. Throws ConfigError.
+  const Config* ForDirectory(const fs::path& dir) {
+    std::optional<std::string> path = massprops::FindConfigUpward(dir.string());
+    if (!path) path = massprops::FindConfigUpward(".");
+    if (!path) return nullptr;
+    auto it = configs_.find(*path);
+    if (it == configs_.end()) it = configs_.emplace(*path, massprops::LoadConfig(*path)).first;
+    return &it->second;
+  }
+
+ private:
+  std::map<std::string, Config> configs_;
+};
+
+struct Settings {
+  CheckOptions options;
+  Severity fail_on = Severity::kError;
+  std::vector<std::string> model_paths;
+};
+
+int RunCheck(const CheckArgs& args, const char* argv0) {
+  if (args.list_rules) return ListRules(args);
+
+  // Command-line overrides, validated before any file is read.
+  std::map<std::string, std::optional<Severity>> cli_overrides;
+  for (const std::string& rule : args.disable) AddOverride(rule, "off", cli_overrides);
+  for (const std::string& spec : args.severity) {
+    const std::size_t eq = spec.find('=');
+    if (eq == std::string::npos) {
+      throw UsageError{"--severity expects RULE=LEVEL, got '" + spec + "'"};
+    }
+    AddOverride(spec.substr(0, eq), spec.substr(eq + 1), cli_overrides);
+  }
+  const std::optional<Severity> cli_fail_on =
+      args.fail_on.empty() ? std::nullopt : massprops::ParseSeverity(args.fail_on);
+
+  std::optional<Config> explicit_config;
+  if (!args.config.empty()) explicit_config = massprops::LoadConfig(args.config);
+  ConfigCache config_cache;
+
+  auto settings_for = [&](const fs::path& dir) {
+    Settings settings;
+    const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
+    if (config) {
+      massprops::ApplyConfig(*config, settings.options);
+      if (config->fail_on) settings.fail_on = *config->fail_on;
+      settings.model_paths = config->model_paths;
+    }
+    if (args.tolerance_given) settings.options.tolerance = args.tolerance;
+    for (const auto& [rule, level] : cli_overrides) settings.options.overrides[rule] = level;
+    if (cli_fail_on) settings.fail_on = *cli_fail_on;
+    settings.model_paths.insert(settings.model_paths.begin(), args.model_paths.begin(),
+                                args.model_paths.end());
+    return settings;
+  };
+
+  // The inputs: the bundled example when none is given; folders expanded.
+  std::vector<std::string> inputs = args.files;
+  if (inputs.empty()) {
+    const std::optional<std::string> example = FindBundledExample(argv0);
+    if (!example) {
+      throw UsageError{"no FILE given, and the bundled example " + std::string(kExampleName) +
+                       " was not found next to the executable"};
+    }
+    if (!args.quiet) {
+      std::cerr << "massprops: no FILE given; checking the bundled example " << *example << "\n";
+    }
+    inputs.push_back(*example);
+  }
+  std::vector<std::string> files;
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (input != "-" && fs::is_directory(input, ec)) {
+      const std::vector<std::string> found = CollectModelFiles(input);
+      if (found.empty() && !args.quiet) {
+        std::cerr << "massprops: no URDF or SDF files found in " << input << "\n";
+      }
+      files.insert(files.end(), found.begin(), found.end());
+    } else {
+      files.push_back(input);
+    }
+  }
+
+  // Configurations are all loaded before anything is checked, so a bad one stops the run before
+  // any report is written.
+  std::vector<Settings> settings;
+  for (const std::string& file : files) {
+    settings.push_back(settings_for(file == "-" ? fs::path(".") : fs::path(file).parent_path()));
+  }
+
+  std::vector<FileResult> results;
+  bool read_failed = false;
+  bool findings_at_fail_level = false;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string& file = files[i];
+    FileResult result;
+    result.path = file == "-" ? "<stdin>" : file;
+    massprops::ReadOptions read_options;
+    read_options.sdf.model_paths = settings[i].model_paths;
+    const ReadResult read = massprops::ReadModelFile(file, read_options);
+    result.errors = read.errors;
+    for (const ReadError& warning : read.warnings) {
+      Finding finding;
+      finding.rule = massprops::kReadWarningRule;
+      finding.severity = Severity::kWarning;
+      finding.location = warning.location;
+      finding.message =
+          warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
+      result.findings.push_back(finding);
+    }
+    for (const massprops::Model& model : read.models) {
+      result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
+      result.models.push_back(model.name);
+      std::vector<Finding> findings = massprops::CheckModel(model, settings[i].options);
+      result.findings.insert(result.findings.end(), findings.begin(), findings.end());
+    }
+    if (!result.errors.empty()) read_failed = true;
+    for (const Finding& finding : result.findings) {
+      if (finding.severity >= settings[i].fail_on) findings_at_fail_level = true;
+    }
+    results.push_back(std::move(result));
+  }
+
+  massprops::ReportOptions report_options;
+  report_options.quiet = args.quiet;
+  if (args.color == "always") {
+    report_options.color = true;
+  } else if (args.color == "auto") {
+    const char* no_color = std::getenv("NO_COLOR");
+    report_options.color =
+        isatty(STDOUT_FILENO) != 0 && (no_color == nullptr || no_color[0] == '\0');
+  }
+  const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
+  massprops::WriteReport(std::cout, format, results, report_options);
+  std::cout.flush();
+
+  if (read_failed) return kExitError;
+  return findings_at_fail_level ? kExitFindings : kExitClean;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "massprops: validate the mass properties (mass, center of mass, inertia) of the links of "
+      "URDF and SDF robot models.",
+      "massprops"};
+  app.set_version_flag("--version", std::string("massprops ") + MASSPROPS_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes of check: 0 nothing at or above the fail level, 1 findings at or above it,\n"
+      "2 a file could not be read or parsed, a bad configuration file, or a usage error.");
+
+  CheckArgs args;
+  CLI::App* check = app.add_subcommand(
+      "check",
+      "Check models for mass properties that no real body could have, and for CAD-export defects. "
+      "With no FILE, checks the bundled example model.");
+  check->add_option("FILE", args.files,
+                    "URDF or SDF files (detected by content), '-' for standard input, or folders "
+                    "(searched recursively for *.urdf, *.sdf, and *.world/*.xml with a <robot> or "
+                    "<sdf> root)");
+  check->add_option("--format", args.format, "Output format")
+      ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
+      ->capture_default_str();
+  check->add_option("--color", args.color, "Colour text output (auto: on a terminal, no NO_COLOR)")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  CLI::Option* fail_on =
+      check
+          ->add_option("--fail-on", args.fail_on,
+                       "Exit with 1 when a finding is at least this severe (default: error, or "
+                       "fail-on in the configuration file)")
+          ->check(CLI::IsMember({"error", "warning", "note"}));
+  check->add_option("--disable", args.disable, "Disable a rule (repeatable)")
+      ->type_name("RULE")
+      ->allow_extra_args(false);
+  check
+      ->add_option("--severity", args.severity,
+                   "Change a rule's severity: RULE=off|note|warning|error (repeatable)")
+      ->type_name("RULE=LEVEL")
+      ->allow_extra_args(false);
+  CLI::Option* tolerance =
+      check
+          ->add_option("--tolerance", args.tolerance,
+                       "Tolerance of the physical-validity test, relative to the trace of the "
+                       "inertia, at least 0 and less than 1 (default 1e-6)")
+          ->check(CLI::Validator(
+              [](std::string& text) -> std::string {
+                char* end = nullptr;
+                const double value = std::strtod(text.c_str(), &end);
+                if (end == text.c_str() || *end != '\0' || !(value >= 0 && value < 1)) {
+                  return "must be a number at least 0 and less than 1, got " + text;
+                }
+                return {};
+              },
+              "0<=X<1"));
+  check
+      ->add_option("--config", args.config,
+                   "Configuration file (default: .massprops.toml found upward from each file, "
+                   "then from the working directory)")
+      ->check(CLI::ExistingFile);
+  check
+      ->add_option("--model-path", args.model_paths,
+                   "Folder searched for SDF model:// URIs (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
+  check->add_flag("--list-rules", args.list_rules, "List the rules and their default severities");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help and --version have exit code 0; every usage error becomes 2.
+    const int code = app.exit(error);
+    return code == 0 ? kExitClean : kExitError;
+  }
+  if (fail_on->count() == 0) args.fail_on.clear();
+  args.tolerance_given = tolerance->count() > 0;
+
+  try {
+    return RunCheck(args, argc > 0 ? argv[0] : nullptr);
+  } catch (const UsageError& error) {
+    std::cerr << "massprops: error: " << error.message << "\n";
+    return kExitError;
+  } catch (const ConfigError& error) {
+    std::cerr << error.what() << "\n";
+    return kExitError;
+  } catch (const std::exception& error) {
+    std::cerr << "massprops: internal error: " << error.what() << "\n";
+    return kExitError;
+  }
+}

@@ -58,4 +58,17 @@ struct CheckOptions {
 /// Rules listed in a link's `ignored_rules` are not reported for that link.
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options = {});
 
+/// The axis-aligned bounding box, in the link frame B, of the link's primitive geometries (box,
+/// cylinder, sphere, capsule, ellipsoid, each posed by X_BG): of its collisions when it has any
+/// and they are all primitives, else of its visuals when they are all primitives.
+struct GeometryBounds {
+  Eigen::AlignedBox3d box_B;   ///< In the link frame B (metres).
+  bool from_collision = true;  ///< false: the visual geometry was used.
+  int count = 0;               ///< Number of geometries in the box.
+};
+
+/// The link's GeometryBounds, or nullopt when its extent is unknown: no geometry, or the chosen
+/// set holds a mesh (meshes are not read) or an unknown shape. Never throws. Cost: O(geometries).
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link);
+
 }  // namespace massprops

@@ -1,0 +1,64 @@
+#pragma once
+/// @file
+/// Reading SDFormat (SDF 1.4 to 1.11) into massprops Models, with libsdformat 12's pose and frame
+/// semantics and the source line of every element. One tinyxml2 pass per file (plus the files that
+/// <include> pulls in).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "massprops/model.h"
+
+namespace massprops {
+
+/// Where <include><uri>model://NAME</uri> looks for the folder NAME.
+struct SdfReadOptions {
+  /// Folders searched first, in order; each may hold a folder NAME with a model.config / model.sdf.
+  std::vector<std::string> model_paths;
+  /// When true, the colon-separated lists in SDF_PATH, GZ_SIM_RESOURCE_PATH,
+  /// IGN_GAZEBO_RESOURCE_PATH and GAZEBO_MODEL_PATH are searched after model_paths (in that order).
+  bool use_environment = true;
+};
+
+/// Files larger than this are refused with a ReadError (bounded memory on hostile input).
+inline constexpr std::size_t kMaxSdfFileBytes = std::size_t{256} << 20;  // 256 MiB
+
+/// Reads the SDF file at `path` (a <world> gives one Model per top-level <model>; a lone <model>
+/// gives one Model). Links of nested models are named "nested::link"; all poses are resolved into
+/// the conventions of model.h (Joint::X_PC from the resolved link poses in the model frame,
+/// Joint::axis in the child link frame, Inertial::X_BBi in the link frame).
+/// An <include> whose URI cannot be resolved (not on the model paths, a Fuel URL, ...) is a
+/// warning naming the include, and the rest of the file is still read (a joint that names one of
+/// its links then becomes an error); an included file that exists but is unreadable or malformed,
+/// and a recursive include, are errors. A file with any error yields no model.
+/// <inertial auto="true"> (SDF 1.11) is recorded as an absent inertial, with a warning.
+/// For a joint whose parent is "world", X_PC is the child link's pose in the world: the model's
+/// pose (its <pose>, or the <include> override) composed with the link's pose in the model. Never
+/// throws for bad input: problems are ReadError values. Cost: linear in the size of the file and of
+/// the files it includes.
+ReadResult ReadSdfFile(const std::string& path, const SdfReadOptions& options = {});
+
+/// Same as ReadSdfFile, for XML text already in memory; `file_name` is used in SourceLocations
+/// and as the base folder of relative include paths.
+ReadResult ReadSdfString(const std::string& xml, const std::string& file_name,
+                         const SdfReadOptions& options = {});
+
+/// The resolved frames of one Model read from SDF, which model.h does not keep: the pose X_WM of
+/// the model frame M in the world W (for a lone model: its own <pose>) and the pose X_MB of each
+/// link frame B in M, in the order of Model::links.
+struct SdfModelFrames {
+  Pose X_WM;
+  std::vector<Pose> X_MB;
+};
+
+/// ReadSdfString that also returns, when `frames` is not null, one SdfModelFrames per model of
+/// the result (same order). Same errors and cost as ReadSdfString.
+ReadResult ReadSdfString(const std::string& xml, const std::string& file_name,
+                         const SdfReadOptions& options, std::vector<SdfModelFrames>* frames);
+
+/// ReadSdfFile that also returns the frames of each model (see the ReadSdfString overload).
+ReadResult ReadSdfFile(const std::string& path, const SdfReadOptions& options,
+                       std::vector<SdfModelFrames>* frames);
+
+}  // namespace massprops

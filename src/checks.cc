@@ -1,0 +1,612 @@
+#include "massprops/checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "massprops/principal_axes.h"
+#include "massprops/rotational_inertia.h"
+#include "massprops/welded_groups.h"
+
+namespace massprops {
+namespace {
+
+// Rule ids (stable; documented in docs/rules.md).
+constexpr const char* kMassNotPositive = "mass-not-positive";
+constexpr const char* kInertiaNotFinite = "inertia-not-finite";
+constexpr const char* kInertiaNotPhysical = "inertia-not-physical";
+constexpr const char* kMasslessMovingBody = "massless-moving-body";
+constexpr const char* kZeroInertiaAboutJointAxis = "zero-inertia-about-joint-axis";
+constexpr const char* kInertialMissing = "inertial-missing";
+constexpr const char* kProductsSignSuspect = "products-sign-suspect";
+constexpr const char* kUnitsSuspect = "units-suspect";
+constexpr const char* kInertiaAboutOriginSuspect = "inertia-about-origin-suspect";
+constexpr const char* kInertiaExceedsGeometry = "inertia-exceeds-geometry";
+constexpr const char* kComOutsideGeometry = "com-outside-geometry";
+constexpr const char* kInertiaNearBoundary = "inertia-near-boundary";
+
+// units-suspect: the radius of gyration k = sqrt(tr(I)/(2m)) is flagged when k / (half-diagonal
+// of the geometry's bounding box) is above kUnitsRatio or below 1/kUnitsRatio (a kg·mm² inertia
+// makes k sqrt(1e6) = 1000 times too large, a mass in grams makes it sqrt(1000) = 31.6 times too
+// small), or, without known geometry, when k exceeds kMaxGyrationRadiusWithoutGeometry.
+constexpr double kUnitsRatio = 30;
+constexpr double kMaxGyrationRadiusWithoutGeometry = 10;  // metres
+
+std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char* format, ...) {
+  char buffer[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  return buffer;
+}
+
+// A number as %g with 6 significant digits (enough to recognise the file's numbers).
+std::string Num(double x) { return Format("%.6g", x); }
+
+std::string Vec(const Eigen::Vector3d& v) {
+  return "(" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + ")";
+}
+
+// The physical-validity facts of an inertia matrix at a center of mass.
+struct Validity {
+  bool finite = false;
+  Eigen::Vector3d moments = Eigen::Vector3d::Zero();  // ascending principal moments
+  double trace = 0;
+  double excess = 0;  // λ3 − (λ1 + λ2): positive when the triangle inequality fails
+};
+
+Validity Analyze(const Eigen::Matrix3d& I) {
+  Validity v;
+  v.finite = I.allFinite();
+  if (!v.finite) return v;
+  v.moments = internal::ScaledPrincipalMoments(I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1),
+                                               PrincipalSolver::kAccurate);
+  v.trace = I.trace();
+  v.excess = v.moments(2) - (v.moments(0) + v.moments(1));
+  return v;
+}
+
+bool IsValid(const Eigen::Matrix3d& I, double relative_tolerance) {
+  return internal::IsPhysicallyValidInertia(I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1),
+                                            relative_tolerance);
+}
+
+// "principal moments 0.1, 0.2, 0.5: 0.1 + 0.2 < 0.5 (by 0.2 = 25% of the trace)".
+std::string DescribeViolation(const Validity& v) {
+  const Eigen::Vector3d& m = v.moments;
+  std::string text = "principal moments " + Num(m(0)) + ", " + Num(m(1)) + ", " + Num(m(2)) + ": ";
+  if (m(0) < 0) text += "a negative moment, and ";
+  text += Num(m(0)) + " + " + Num(m(1)) + " < " + Num(m(2)) + " (by " + Num(v.excess);
+  if (v.trace > 0) {
+    text += " = " + Format("%.3g%%", 100 * v.excess / v.trace) + " of the trace";
+  }
+  return text + ")";
+}
+
+Eigen::Matrix3d WrittenMatrix(const Inertial& in) {
+  Eigen::Matrix3d I;
+  I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  return I;
+}
+
+// Σ = ½·tr(I)·1 − I: the second-moment matrix ∫r·rᵀ dm about the same point.
+Eigen::Matrix3d SecondMoment(const Eigen::Matrix3d& I) {
+  return 0.5 * I.trace() * Eigen::Matrix3d::Identity() - I;
+}
+
+// Half-extents, along the axes of frame B, of a shape whose own axes are R_BG's columns.
+Eigen::Vector3d HalfExtents(const Geometry& g) {
+  const Eigen::Matrix3d& R = g.X_BG.R_AB;
+  Eigen::Vector3d h;
+  for (int i = 0; i < 3; ++i) {
+    const double rz = std::abs(R(i, 2));
+    const double radial = std::sqrt(std::max(0.0, 1 - rz * rz));  // |row i| without z component
+    switch (g.type) {
+      case Geometry::Type::kBox:
+        h(i) = 0.5 *
+               (std::abs(R(i, 0)) * g.size.x() + std::abs(R(i, 1)) * g.size.y() + rz * g.size.z());
+        break;
+      case Geometry::Type::kCylinder:
+        h(i) = rz * 0.5 * g.length + g.radius * radial;
+        break;
+      case Geometry::Type::kSphere:
+        h(i) = g.radius;
+        break;
+      case Geometry::Type::kCapsule:
+        h(i) = rz * 0.5 * g.length + g.radius;
+        break;
+      case Geometry::Type::kEllipsoid:
+        h(i) = std::sqrt(std::pow(R(i, 0) * g.radii.x(), 2) + std::pow(R(i, 1) * g.radii.y(), 2) +
+                         std::pow(R(i, 2) * g.radii.z(), 2));
+        break;
+      default:
+        h(i) = 0;
+    }
+  }
+  return h;
+}
+
+bool IsPrimitive(const Geometry& g) {
+  switch (g.type) {
+    case Geometry::Type::kBox:
+    case Geometry::Type::kCylinder:
+    case Geometry::Type::kSphere:
+    case Geometry::Type::kCapsule:
+    case Geometry::Type::kEllipsoid:
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::optional<GeometryBounds> BoundsOf(const Link& link, bool collision) {
+  GeometryBounds bounds;
+  bounds.from_collision = collision;
+  for (const Geometry& g : link.geometries) {
+    if (g.is_collision != collision) continue;
+    if (!IsPrimitive(g)) return std::nullopt;
+    const Eigen::Vector3d h = HalfExtents(g);
+    if (!h.allFinite() || !g.X_BG.p_AB.allFinite()) return std::nullopt;
+    bounds.box_B.extend(g.X_BG.p_AB - h);
+    bounds.box_B.extend(g.X_BG.p_AB + h);
+    ++bounds.count;
+  }
+  if (bounds.count == 0) return std::nullopt;
+  return bounds;
+}
+
+// Which unit mistake makes tr(I)/m off by `factor` (= (k / k_expected)²), by nearest power of ten.
+std::string GuessUnitError(double factor) {
+  struct Candidate {
+    double factor;
+    const char* text;
+  };
+  static const Candidate kCandidates[] = {
+      {1e6, "the inertia looks like kg·mm² (1e6 too large): multiply it by 1e-6"},
+      {1e4, "the inertia looks like kg·cm² (1e4 too large): multiply it by 1e-4"},
+      {1e-3, "the mass looks like grams (1000 too large): divide it by 1000"},
+      {1e-6, "the inertia looks 1e6 too small (converted from kg·mm² twice?)"},
+  };
+  const Candidate* best = &kCandidates[0];
+  for (const Candidate& c : kCandidates) {
+    if (std::abs(std::log10(factor / c.factor)) < std::abs(std::log10(factor / best->factor))) {
+      best = &c;
+    }
+  }
+  return best->text;
+}
+
+class Checker {
+ public:
+  Checker(const Model& model, const CheckOptions& options) : model_(model), options_(options) {}
+
+  std::vector<Finding> Run() {
+    groups_ = FindWeldedGroups(model_);
+    group_of_.assign(model_.links.size(), -1);
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+      for (int i : groups_[g].links) group_of_[i] = static_cast<int>(g);
+    }
+    for (std::size_t i = 0; i < model_.links.size(); ++i) CheckLink(static_cast<int>(i));
+    for (const WeldedGroup& group : groups_) CheckGroup(group);
+    std::stable_sort(findings_.begin(), findings_.end(), [](const Finding& a, const Finding& b) {
+      if (a.location.line != b.location.line) return a.location.line < b.location.line;
+      return a.rule < b.rule;
+    });
+    return std::move(findings_);
+  }
+
+ private:
+  // The severity of `rule` after the overrides, or nullopt when the rule is off.
+  std::optional<Severity> SeverityOf(const char* rule) const {
+    const auto it = options_.overrides.find(rule);
+    if (it != options_.overrides.end()) return it->second;
+    for (const RuleInfo& info : AllRules()) {
+      if (info.id == rule) {
+        return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
+                                       : std::nullopt;
+      }
+    }
+    return std::nullopt;
+  }
+
+  bool Enabled(const char* rule, const Link& link) const {
+    for (const std::string& ignored : link.ignored_rules) {
+      if (ignored == "all" || ignored == rule) return false;
+    }
+    return SeverityOf(rule).has_value();
+  }
+
+  void Emit(const char* rule, const Link& link, const SourceLocation& location, std::string message,
+            std::vector<std::pair<std::string, double>> values) {
+    if (!Enabled(rule, link)) return;
+    Finding f;
+    f.rule = rule;
+    f.severity = *SeverityOf(rule);
+    f.model = model_.name;
+    f.link = link.name;
+    f.location = location;
+    f.message = std::move(message);
+    f.values = std::move(values);
+    findings_.push_back(std::move(f));
+  }
+
+  // The <inertia> element if present, else the <inertial>, else the <link>.
+  static const SourceLocation& InertiaLocation(const Link& link) {
+    if (link.inertial) {
+      if (link.inertial->inertia_location.line > 0) return link.inertial->inertia_location;
+      if (link.inertial->location.line > 0) return link.inertial->location;
+    }
+    return link.location;
+  }
+  static const SourceLocation& MassLocation(const Link& link) {
+    if (link.inertial && link.inertial->mass_location.line > 0) {
+      return link.inertial->mass_location;
+    }
+    return InertiaLocation(link);
+  }
+  static const SourceLocation& PoseLocation(const Link& link) {
+    if (link.inertial && link.inertial->pose_location.line > 0) {
+      return link.inertial->pose_location;
+    }
+    return InertiaLocation(link);
+  }
+
+  void CheckLink(int link_index) {
+    const Link& link = model_.links[link_index];
+    if (!link.inertial) return;  // inertial-missing is judged with the link's group.
+    const Inertial& in = *link.inertial;
+    const std::string who = "link '" + link.name + "'";
+    const double m = in.mass;
+    if (!std::isfinite(m) || m < 0) {
+      Emit(kMassNotPositive, link, MassLocation(link),
+           who + ": mass " + Num(m) + " is " + (std::isfinite(m) ? "negative" : "not finite") +
+               " (a mass must be a finite number >= 0; 0 only for a massless frame welded to a "
+               "body)",
+           {{"mass", m}});
+    }
+    const Eigen::Matrix3d I_written = WrittenMatrix(in);
+    if (!I_written.allFinite() || !in.X_BBi.p_AB.allFinite() || !in.X_BBi.R_AB.allFinite()) {
+      Emit(kInertiaNotFinite, link, InertiaLocation(link),
+           who + ": the inertial has a NaN or infinite number: ixx " + Num(in.ixx) + ", iyy " +
+               Num(in.iyy) + ", izz " + Num(in.izz) + ", ixy " + Num(in.ixy) + ", ixz " +
+               Num(in.ixz) + ", iyz " + Num(in.iyz) + ", center of mass " + Vec(in.X_BBi.p_AB),
+           {{"ixx", in.ixx},
+            {"iyy", in.iyy},
+            {"izz", in.izz},
+            {"ixy", in.ixy},
+            {"ixz", in.ixz},
+            {"iyz", in.iyz}});
+      return;
+    }
+    // Validity does not depend on the frame the inertia is expressed in: judge the numbers as
+    // written (about the center of mass, in the inertial frame), free of rotation round-off.
+    const double tol = options_.tolerance;
+    const bool valid = IsValid(I_written, tol);
+    if (!valid) {
+      const Validity v = Analyze(I_written);
+      Emit(kInertiaNotPhysical, link, InertiaLocation(link),
+           who + ": the inertia about the center of mass is not physically valid: " +
+               DescribeViolation(v) + GroupNote(link_index),
+           {{"principal_min", v.moments(0)},
+            {"principal_mid", v.moments(1)},
+            {"principal_max", v.moments(2)},
+            {"trace", v.trace},
+            {"violation", v.excess},
+            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+            {"tolerance", tol}});
+      Eigen::Matrix3d I_negated = -I_written;
+      I_negated.diagonal() = I_written.diagonal();
+      if (IsValid(I_negated, tol)) {
+        const Validity vn = Analyze(I_negated);
+        Emit(kProductsSignSuspect, link, InertiaLocation(link),
+             who +
+                 ": the inertia is invalid as written but valid with the products of inertia "
+                 "negated (ixy, ixz, iyz = " +
+                 Num(in.ixy) + ", " + Num(in.ixz) + ", " + Num(in.iyz) +
+                 "; negated, the principal moments are " + Num(vn.moments(0)) + ", " +
+                 Num(vn.moments(1)) + ", " + Num(vn.moments(2)) +
+                 "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
+             {{"ixy", in.ixy},
+              {"ixz", in.ixz},
+              {"iyz", in.iyz},
+              {"negated_principal_min", vn.moments(0)},
+              {"negated_principal_mid", vn.moments(1)},
+              {"negated_principal_max", vn.moments(2)}});
+      }
+    } else if (!IsValid(I_written, internal::DefaultInertiaValidityTolerance<double>())) {
+      const Validity v = Analyze(I_written);
+      Emit(kInertiaNearBoundary, link, InertiaLocation(link),
+           who + ": the inertia is valid only within the tolerance " + Num(tol) +
+               " of the trace: " + DescribeViolation(v) +
+               " (the body is a thin shape, written with rounded numbers?)",
+           {{"principal_min", v.moments(0)},
+            {"principal_mid", v.moments(1)},
+            {"principal_max", v.moments(2)},
+            {"trace", v.trace},
+            {"violation", v.excess},
+            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+            {"tolerance", tol}});
+    }
+    if (!(m > 0) || !std::isfinite(m)) return;
+
+    const MassProperties props = LinkMassProperties(link);
+    const Eigen::Vector3d& c = props.p_FoScm_F;
+    const Eigen::Matrix3d& I_B = props.I_SScm_F;
+    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
+    const double trace = I_written.trace();
+
+    // units-suspect.
+    bool units_flagged = false;
+    if (trace > 0) {
+      const double k = std::sqrt(trace / (2 * m));
+      if (bounds) {
+        const double extent = 0.5 * bounds->box_B.diagonal().norm();
+        if (extent > 0) {
+          const double ratio = k / extent;
+          if (ratio > kUnitsRatio || ratio < 1 / kUnitsRatio) {
+            units_flagged = true;
+            // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
+            Emit(kUnitsSuspect, link, InertiaLocation(link),
+                 who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
+                     " times the half-diagonal " + Num(extent) + " m of its " +
+                     (bounds->from_collision ? "collision" : "visual") + " geometry (expected " +
+                     "about 0.3 to 1): " + GuessUnitError(ratio * ratio / 0.25),
+                 {{"radius_of_gyration", k},
+                  {"geometry_half_diagonal", extent},
+                  {"ratio", ratio},
+                  {"mass", m},
+                  {"trace", trace}});
+          }
+        }
+      } else if (k > kMaxGyrationRadiusWithoutGeometry) {
+        units_flagged = true;
+        Emit(kUnitsSuspect, link, InertiaLocation(link),
+             who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
+                 Num(kMaxGyrationRadiusWithoutGeometry) +
+                 " m (the link has no geometry of known size): the inertia looks like kg·mm² "
+                 "(1e6 too large), which would make it " +
+                 Num(k / 1000) + " m",
+             {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
+      }
+    }
+    if (!bounds) return;
+    const Eigen::Vector3d o = bounds->box_B.center();
+    const Eigen::Vector3d h = 0.5 * bounds->box_B.sizes();
+    const double scale2 = h.squaredNorm();
+    const char* geometry_kind = bounds->from_collision ? "collision" : "visual";
+
+    // inertia-exceeds-geometry / inertia-about-origin-suspect (valid inertias only). A body inside
+    // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
+    // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
+    if (valid && !units_flagged) {
+      const double r2 = scale2;
+      const Eigen::Vector3d d = c - o;
+      // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
+      const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
+      const double bound = m * r2;
+      if (spread - bound > tol * bound) {
+        // Would the numbers fit as the inertia about the link origin Bo? Then I_Bcm = I − m·(|c|²1
+        // − c·cᵀ) must be valid and fit the sphere.
+        const Eigen::Matrix3d I_shifted =
+            I_B - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        const double shifted_spread = 0.5 * I_shifted.trace() + m * d.squaredNorm();
+        const bool shifted_fits = !c.isZero(0) && IsValid(I_shifted, tol) &&
+                                  shifted_spread - bound <= tol * bound;
+        if (shifted_fits) {
+          const Validity vs = Analyze(I_shifted);
+          Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
+               who + ": the inertia needs more room than the " + std::string(geometry_kind) +
+                   " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
+                   " kg·m² about the center o of its bounding box, r = " + Num(std::sqrt(r2)) +
+                   " m), but taken as the inertia about the link origin and shifted to the center "
+                   "of mass " +
+                   Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) +
+                   ", " + Num(vs.moments(1)) + ", " + Num(vs.moments(2)) +
+                   "): it was probably written about the link origin",
+               {{"spread", spread},
+                {"bound", bound},
+                {"shifted_spread", shifted_spread},
+                {"shifted_principal_min", vs.moments(0)},
+                {"shifted_principal_mid", vs.moments(1)},
+                {"shifted_principal_max", vs.moments(2)}});
+        } else {
+          Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
+               who + ": no mass distribution inside the bounding box of the " +
+                   std::string(geometry_kind) + " geometry (center " + Vec(o) + ", half-sizes " +
+                   Vec(h) + " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " +
+                   Num(spread) + " kg·m² exceeds m·r² = " + Num(bound) +
+                   " kg·m² (r = half-diagonal " + Num(std::sqrt(r2)) + " m; ratio " +
+                   Num(spread / bound) + ")",
+               {{"spread", spread},
+                {"bound", bound},
+                {"ratio", spread / bound},
+                {"half_diagonal", std::sqrt(r2)}});
+        }
+      }
+    }
+
+    // com-outside-geometry.
+    const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
+    const double distance = outside.norm();
+    if (distance > tol * std::sqrt(scale2) && distance > 0) {
+      Emit(kComOutsideGeometry, link, PoseLocation(link),
+           who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
+               " m outside the bounding box " + Vec(bounds->box_B.min()) + " to " +
+               Vec(bounds->box_B.max()) + " of its " + geometry_kind + " geometry",
+           {{"com_x", c.x()}, {"com_y", c.y()}, {"com_z", c.z()}, {"distance", distance}});
+    }
+  }
+
+  // For an invalid member of a welded group: whether the group is valid as a whole.
+  std::string GroupNote(int link_index) const {
+    const WeldedGroup& group = groups_[group_of_[link_index]];
+    if (group.links.size() < 2) return "";
+    const CompositeInertia composite = CalcCompositeInertia(model_, group);
+    if (composite.I_SScm_R.allFinite() && IsValid(composite.I_SScm_R, options_.tolerance)) {
+      return "; its welded group rooted at '" + group.root_link +
+             "' is valid as a whole (as a simulator that merges fixed joints sees it)";
+    }
+    return "";
+  }
+
+  void CheckGroup(const WeldedGroup& group) {
+    const Link& root = model_.links[group.links.front()];
+    const CompositeInertia composite = CalcCompositeInertia(model_, group);
+    bool all_massless = true;
+    int contributing = 0;
+    std::vector<std::string> invalid_members;
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      if (!link.inertial) continue;
+      if (link.inertial->mass != 0) all_massless = false;
+      if (link.inertial->mass != 0 || !WrittenMatrix(*link.inertial).isZero(0)) ++contributing;
+    }
+    const std::string who = group.links.size() > 1
+                                ? "the welded group rooted at '" + root.name + "' (" +
+                                      std::to_string(group.links.size()) + " links)"
+                                : "link '" + root.name + "'";
+    bool massless_moving = false;
+    if (group.is_moving && all_massless) {
+      massless_moving = true;
+      std::string how = "is free-floating";
+      if (group.parent_joint >= 0) {
+        const Joint& joint = model_.joints[group.parent_joint];
+        how = "moves on " + joint.type_name + " joint '" + joint.name + "'";
+      }
+      Emit(kMasslessMovingBody, root, MassLocation(root),
+           who + " " + how +
+               " but has zero mass: simulators reject a moving body without mass or become "
+               "unstable",
+           {{"mass", 0}, {"group_links", static_cast<double>(group.links.size())}});
+    }
+    // inertial-missing: links with collision geometry and no <inertial>.
+    if (!massless_moving) {
+      for (int i : group.links) {
+        const Link& link = model_.links[i];
+        if (link.inertial) continue;
+        int collisions = 0;
+        for (const Geometry& g : link.geometries) collisions += g.is_collision ? 1 : 0;
+        if (collisions == 0) continue;
+        Emit(kInertialMissing, link, link.location,
+             "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
+                 (collisions == 1 ? "y" : "ies") +
+                 " but no <inertial>: its mass was probably forgotten (it counts as massless)",
+             {{"collisions", collisions}});
+      }
+    }
+    if (!composite.I_SScm_R.allFinite() || !std::isfinite(composite.mass)) return;
+    // inertia-not-physical for the group as one rigid body.
+    if (contributing > 1 && !IsValid(composite.I_SScm_R, options_.tolerance)) {
+      const Validity v = Analyze(composite.I_SScm_R);
+      Emit(kInertiaNotPhysical, root, InertiaLocation(root),
+           who + ": the composite inertia about the composite center of mass " +
+               Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
+               ") is not physically valid: " + DescribeViolation(v),
+           {{"principal_min", v.moments(0)},
+            {"principal_mid", v.moments(1)},
+            {"principal_max", v.moments(2)},
+            {"trace", v.trace},
+            {"violation", v.excess},
+            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+            {"tolerance", options_.tolerance},
+            {"group_links", static_cast<double>(group.links.size())}});
+    }
+    // zero-inertia-about-joint-axis.
+    if (group.parent_joint >= 0 && composite.mass > 0) {
+      const Joint& joint = model_.joints[group.parent_joint];
+      if (joint.type != Joint::Type::kRevolute && joint.type != Joint::Type::kContinuous) return;
+      const double norm = joint.axis.norm();
+      if (!(norm > 0) || !joint.axis.allFinite()) return;
+      const Eigen::Vector3d a = joint.axis / norm;
+      const Eigen::Matrix3d I_Ro = composite.CalcInertiaAboutOrigin();
+      const double I_axis = a.dot(I_Ro * a);
+      if (I_axis <= options_.tolerance * I_Ro.trace()) {
+        Emit(kZeroInertiaAboutJointAxis, root, InertiaLocation(root),
+             who + " turns on " + joint.type_name + " joint '" + joint.name +
+                 "' but its moment of inertia about the joint axis " + Vec(a) + " is " +
+                 Num(I_axis) + " kg·m² (mass " + Num(composite.mass) +
+                 "): a torque would give it infinite angular acceleration",
+             {{"moment_about_axis", I_axis},
+              {"mass", composite.mass},
+              {"trace", I_Ro.trace()},
+              {"group_links", static_cast<double>(group.links.size())}});
+      }
+    }
+  }
+
+  const Model& model_;
+  const CheckOptions& options_;
+  std::vector<WeldedGroup> groups_;
+  std::vector<int> group_of_;  // link index -> index into groups_
+  std::vector<Finding> findings_;
+};
+
+}  // namespace
+
+const char* ToString(Severity severity) {
+  switch (severity) {
+    case Severity::kNote:
+      return "note";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kError:
+      return "error";
+  }
+  return "error";
+}
+
+std::optional<Severity> ParseSeverity(std::string_view text) {
+  if (text == "note") return Severity::kNote;
+  if (text == "warning") return Severity::kWarning;
+  if (text == "error") return Severity::kError;
+  return std::nullopt;
+}
+
+const std::vector<RuleInfo>& AllRules() {
+  static const std::vector<RuleInfo> kRules = {
+      {kMassNotPositive, Severity::kError, true,
+       "An inertial's mass is negative, NaN or infinite."},
+      {kInertiaNotFinite, Severity::kError, true,
+       "An inertial has a NaN or infinite inertia entry or center of mass."},
+      {kInertiaNotPhysical, Severity::kError, true,
+       "At the center of mass, a principal moment is negative or the triangle inequality fails "
+       "(per link and per welded group)."},
+      {kMasslessMovingBody, Severity::kError, true,
+       "A welded group that moves relative to its parent has zero mass."},
+      {kZeroInertiaAboutJointAxis, Severity::kWarning, true,
+       "A revolute/continuous joint's child group has zero moment of inertia about the axis."},
+      {kInertialMissing, Severity::kWarning, true,
+       "A link has collision geometry but no <inertial>."},
+      {kProductsSignSuspect, Severity::kWarning, true,
+       "The inertia is invalid as written but valid with the products of inertia negated."},
+      {kUnitsSuspect, Severity::kWarning, true,
+       "The radius of gyration is out of proportion with the link's geometry (unit mistake)."},
+      {kInertiaAboutOriginSuspect, Severity::kWarning, true,
+       "The inertia looks like it is about the link origin rather than the center of mass."},
+      {kInertiaExceedsGeometry, Severity::kWarning, true,
+       "No mass distribution inside the link's geometry bounding box has this inertia."},
+      {kComOutsideGeometry, Severity::kWarning, true,
+       "The center of mass is outside the bounding box of the link's geometry."},
+      {kInertiaNearBoundary, Severity::kNote, true,
+       "The inertia is physically valid only within the tolerance."},
+  };
+  return kRules;
+}
+
+std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {
+  return Checker(model, options).Run();
+}
+
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link) {
+  if (std::optional<GeometryBounds> bounds = BoundsOf(link, /*collision=*/true)) return bounds;
+  return BoundsOf(link, /*collision=*/false);
+}
+
+}  // namespace massprops

@@ -1,0 +1,1124 @@
+// Reading SDFormat into massprops Models (see sdf_reader.h).
+//
+// The reader walks the XML once (plus the files that <include> pulls in) and records every
+// frame-bearing element (model, link, joint, frame) as a node of one pose graph, named by its scope
+// from the file's root ("model::nested::link"). Poses are resolved lazily, each in the frame of the
+// model that contains the element, following libsdformat 12:
+//   - a link, a nested model and a frame without attached_to default to the containing model frame;
+//   - a frame with attached_to defaults to that frame; a joint defaults to its child frame;
+//   - a model's placement_frame P turns the given pose X_RP into X_RM = X_RP * X_MP^-1;
+//   - SDF < 1.7: the pose attribute "frame" is read as relative_to (libsdformat's 1.6->1.7
+//     converter renames it); the joint axis <xyz> is expressed in the model frame for SDF 1.4
+//     joints of top-level models (the 1.4->1.5 converter adds use_parent_model_frame=true) and when
+//     <use_parent_model_frame> is true (1.5, 1.6), else in the joint frame;
+//   - SDF >= 1.7: <xyz expressed_in="..."> names the frame, default the joint frame.
+
+#include "massprops/sdf_reader.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <unordered_map>
+#include <utility>
+
+namespace massprops {
+namespace {
+
+namespace fs = std::filesystem;
+using tinyxml2::XMLComment;
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+using tinyxml2::XMLNode;
+
+constexpr int kWorld = -1;     // The world (or the root of a file holding a lone model).
+constexpr int kNotFound = -2;  // A reference that names nothing.
+constexpr int kMaxResolveDepth = 1000;
+constexpr int kMaxNestingDepth = 100;
+constexpr double kPi = 3.14159265358979323846;
+
+struct Version {
+  int major = 1;
+  int minor = 0;
+  bool AtLeast(int a, int b) const { return major > a || (major == a && minor >= b); }
+};
+
+struct Node {
+  enum class Kind { kModel, kLink, kJoint, kFrame };
+  Kind kind = Kind::kLink;
+  std::string name;  // Scoped from the root: "top::nested::link".
+  int scope = kWorld;
+  Version version;
+  std::string relative_to;  // As written; "" = default.
+  Pose X_raw;
+  std::string attached_to;      // kFrame.
+  std::string placement_frame;  // kModel.
+  std::string canonical_link;   // kModel.
+  const XMLElement* element = nullptr;
+  SourceLocation location;
+  int state = 0;  // 0 = unresolved, 1 = resolving, 2 = resolved.
+  Pose X_SF;      // Pose in the frame of the containing model (or the world).
+  // kJoint:
+  std::string parent, child;
+  // kModel: the link and model nodes directly inside, in file order.
+  std::vector<int> members;
+  bool axis_in_model_frame_1_4 = false;  // kJoint of a top-level SDF 1.4 model.
+};
+
+std::string Describe(const Node& node) {
+  switch (node.kind) {
+    case Node::Kind::kModel:
+      return "<model> '" + node.name + "'";
+    case Node::Kind::kLink:
+      return "<link> '" + node.name + "'";
+    case Node::Kind::kJoint:
+      return "<joint> '" + node.name + "'";
+    case Node::Kind::kFrame:
+      return "<frame> '" + node.name + "'";
+  }
+  return "";
+}
+
+ReadError MakeError(const std::string& file, int line, const std::string& element,
+                    const std::string& message) {
+  ReadError error;
+  error.location.file = file;
+  error.location.line = line;
+  error.element = element;
+  error.message = message;
+  return error;
+}
+
+std::string Trim(std::string_view s) {
+  const char* ws = " \t\r\n";
+  const size_t b = s.find_first_not_of(ws);
+  if (b == std::string_view::npos) return "";
+  const size_t e = s.find_last_not_of(ws);
+  return std::string(s.substr(b, e - b + 1));
+}
+
+std::string Text(const XMLElement* e) {
+  const char* t = e ? e->GetText() : nullptr;
+  return t ? Trim(t) : std::string();
+}
+
+std::string Attr(const XMLElement* e, const char* name) {
+  const char* a = e->Attribute(name);
+  return a ? std::string(a) : std::string();
+}
+
+bool ParseVersion(const std::string& text, Version* v) {
+  const std::string t = Trim(text);
+  const char* b = t.data();
+  const char* end = t.data() + t.size();
+  auto r = std::from_chars(b, end, v->major);
+  if (r.ec != std::errc() || r.ptr == end || *r.ptr != '.') return false;
+  r = std::from_chars(r.ptr + 1, end, v->minor);
+  return r.ec == std::errc() && r.ptr == end;
+}
+
+Eigen::Matrix3d RotationFromRpy(double roll, double pitch, double yaw) {
+  // R = Rz(yaw) * Ry(pitch) * Rx(roll) (SDFormat's fixed-axis roll, pitch, yaw).
+  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
+/// State of one read: the pose graph, the errors, the include stack.
+class Reader {
+ public:
+  Reader(const SdfReadOptions& options, std::string top_file) : top_file_(std::move(top_file)) {
+    search_paths_ = options.model_paths;
+    if (options.use_environment) {
+      for (const char* var :
+           {"SDF_PATH", "GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH", "GAZEBO_MODEL_PATH"}) {
+        const char* value = std::getenv(var);
+        if (value == nullptr) continue;
+        std::stringstream ss(value);
+        std::string item;
+        while (std::getline(ss, item, ':')) {
+          if (!item.empty()) search_paths_.push_back(item);
+        }
+      }
+    }
+  }
+
+  ReadResult Read(const std::string& xml, const std::string& file_name,
+                  std::vector<SdfModelFrames>* frames);
+
+ private:
+  struct Context {
+    std::string file;
+    Version version;
+    int depth = 0;
+  };
+
+  // ------------------------------------------------------------ errors
+  void Error(const std::string& file, const XMLElement* e, const std::string& element,
+             const std::string& message) {
+    result_.errors.push_back(MakeError(file, e ? e->GetLineNum() : 0, element, message));
+  }
+  void Warning(const std::string& file, const XMLElement* e, const std::string& element,
+               const std::string& message) {
+    result_.warnings.push_back(MakeError(file, e ? e->GetLineNum() : 0, element, message));
+  }
+
+  // ------------------------------------------------------------ numbers
+  bool ParseNumbers(const std::string& text, size_t min_count, size_t max_count,
+                    std::vector<double>* out, std::string* why) {
+    out->clear();
+    const char* p = text.data();
+    const char* end = p + text.size();
+    while (true) {
+      while (p < end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
+      if (p == end) break;
+      const char* tok = p;
+      while (p < end && !(*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
+      std::string_view token(tok, static_cast<size_t>(p - tok));
+      std::string_view digits = token;
+      if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+      double value = 0;
+      const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+      if (r.ec == std::errc::result_out_of_range) {
+        *why = "number '" + std::string(token) + "' is out of the range of double";
+        return false;
+      }
+      if (r.ec != std::errc() || r.ptr != digits.data() + digits.size() || digits.empty()) {
+        *why = "'" + std::string(token) + "' is not a number";
+        return false;
+      }
+      if (!std::isfinite(value)) {
+        *why = "'" + std::string(token) + "' is not a finite number";
+        return false;
+      }
+      out->push_back(value);
+      if (out->size() > max_count) break;
+    }
+    if (out->size() < min_count || out->size() > max_count) {
+      *why = "expected " +
+             (min_count == max_count
+                  ? std::to_string(min_count)
+                  : std::to_string(min_count) + " to " + std::to_string(max_count)) +
+             " numbers, found '" + text + "'";
+      return false;
+    }
+    return true;
+  }
+
+  /// Reads one number from element `e` (text), or `fallback` when e is null.
+  double Number(const XMLElement* e, double fallback, const Context& ctx,
+                const std::string& element) {
+    if (e == nullptr) return fallback;
+    std::vector<double> v;
+    std::string why;
+    if (!ParseNumbers(Text(e), 1, 1, &v, &why)) {
+      Error(ctx.file, e, element, why);
+      return fallback;
+    }
+    return v[0];
+  }
+
+  Eigen::Vector3d Vector(const XMLElement* e, const Eigen::Vector3d& fallback, const Context& ctx,
+                         const std::string& element) {
+    if (e == nullptr) return fallback;
+    std::vector<double> v;
+    std::string why;
+    if (!ParseNumbers(Text(e), 3, 3, &v, &why)) {
+      Error(ctx.file, e, element, why);
+      return fallback;
+    }
+    return {v[0], v[1], v[2]};
+  }
+
+  /// Parses a <pose> element (nullptr: identity).
+  Pose ParsePose(const XMLElement* e, const Context& ctx, const std::string& element) {
+    Pose X;
+    if (e == nullptr) return X;
+    const std::string text = Text(e);
+    if (text.empty()) return X;
+    const bool v19 = ctx.version.AtLeast(1, 9);
+    const std::string format = v19 ? Attr(e, "rotation_format") : "";
+    const std::string degrees_attr = v19 ? Attr(e, "degrees") : "";
+    const bool degrees = degrees_attr == "true" || degrees_attr == "1";
+    std::vector<double> v;
+    std::string why;
+    if (format == "quat_xyzw") {
+      if (!ParseNumbers(text, 7, 7, &v, &why)) {
+        Error(ctx.file, e, element, why);
+        return X;
+      }
+      Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
+      if (q.norm() == 0) {
+        Error(ctx.file, e, element, "the quaternion '" + text + "' has zero length");
+        return X;
+      }
+      X.R_AB = q.normalized().toRotationMatrix();
+    } else {
+      if (!format.empty() && format != "euler_rpy") {
+        Error(ctx.file, e, element, "unknown rotation_format '" + format + "'");
+        return X;
+      }
+      if (!ParseNumbers(text, 6, 6, &v, &why)) {
+        Error(ctx.file, e, element, why);
+        return X;
+      }
+      const double k = degrees ? kPi / 180.0 : 1.0;
+      X.R_AB = RotationFromRpy(v[3] * k, v[4] * k, v[5] * k);
+    }
+    X.p_AB = Eigen::Vector3d(v[0], v[1], v[2]);
+    return X;
+  }
+
+  /// relative_to of a pose element (SDF < 1.7: its "frame" attribute, as libsdformat converts).
+  static std::string RelativeTo(const XMLElement* pose, const Version& v) {
+    if (pose == nullptr) return "";
+    return v.AtLeast(1, 7) ? Attr(pose, "relative_to") : Attr(pose, "frame");
+  }
+
+  // ------------------------------------------------------------ graph building
+  std::string Prefix(int scope) const { return scope == kWorld ? "" : nodes_[scope].name + "::"; }
+
+  int AddNode(Node node, const Context& ctx) {
+    const int index = static_cast<int>(nodes_.size());
+    auto [it, inserted] = by_name_.emplace(node.name, index);
+    if (!inserted) {
+      const Node& other = nodes_[it->second];
+      const bool same_kind = other.kind == node.kind;
+      if (same_kind || node.version.AtLeast(1, 7)) {
+        Error(ctx.file, node.element, Describe(node),
+              "the name '" + node.name + "' is already used by " + Describe(other) + " (line " +
+                  std::to_string(other.location.line) + ")");
+        return kNotFound;
+      }
+      // SDF < 1.7 lets a joint share a link's name: links win the lookup.
+      if (node.kind == Node::Kind::kLink) it->second = index;
+    }
+    nodes_.push_back(std::move(node));
+    return index;
+  }
+
+  void ReadWorld(const XMLElement* world, const Context& ctx) {
+    for (const XMLElement* c = world->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      const std::string tag = c->Name();
+      if (tag == "model") {
+        const int m = ReadModel(c, kWorld, ctx, nullptr);
+        if (m >= 0) top_models_.push_back(m);
+      } else if (tag == "include") {
+        const int m = ReadInclude(c, kWorld, ctx);
+        if (m >= 0) top_models_.push_back(m);
+      } else if (tag == "frame" && ctx.version.AtLeast(1, 7)) {
+        ReadFrame(c, kWorld, ctx);
+      } else if (tag == "joint") {
+        Warning(ctx.file, c, "<joint> '" + Attr(c, "name") + "'",
+                "joints directly in a <world> are not read (only joints of models)");
+      }
+    }
+  }
+
+  /// Reads a <model>; `include` (may be null) is the <include> that brought it in, whose <name>,
+  /// <pose> and <placement_frame> override the model's own. Returns the node index or kNotFound.
+  int ReadModel(const XMLElement* model, int scope, const Context& ctx, const XMLElement* include) {
+    if (ctx.depth > kMaxNestingDepth) {
+      Error(ctx.file, model, "<model>",
+            "models nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
+      return kNotFound;
+    }
+    std::string name = Attr(model, "name");
+    const XMLElement* pose = model->FirstChildElement("pose");
+    const Version* pose_version = &ctx.version;
+    std::string placement = ctx.version.AtLeast(1, 8) ? Attr(model, "placement_frame") : "";
+    if (include != nullptr) {
+      if (const XMLElement* n = include->FirstChildElement("name")) name = Text(n);
+      if (const XMLElement* p = include->FirstChildElement("pose")) {
+        pose = p;
+        pose_version = &include_version_;
+      }
+      if (const XMLElement* pf = include->FirstChildElement("placement_frame")) {
+        placement = Text(pf);
+      }
+    }
+    if (name.empty()) {
+      Error(ctx.file, model, "<model>", "a <model> needs a name attribute");
+      return kNotFound;
+    }
+    Node node;
+    node.kind = Node::Kind::kModel;
+    node.name = Prefix(scope) + name;
+    node.scope = scope;
+    node.version = ctx.version;
+    node.element = model;
+    node.location = {ctx.file, model->GetLineNum(), 0};
+    Context pose_ctx = ctx;
+    pose_ctx.version = *pose_version;
+    if (include != nullptr && pose != model->FirstChildElement("pose")) {
+      pose_ctx.file = include_file_;
+    }
+    node.X_raw = ParsePose(pose, pose_ctx, "<pose> of <model> '" + name + "'");
+    node.relative_to = RelativeTo(pose, *pose_version);
+    node.placement_frame = placement;
+    node.canonical_link = ctx.version.AtLeast(1, 7) ? Attr(model, "canonical_link") : "";
+    const int index = AddNode(std::move(node), ctx);
+    if (index < 0) return index;
+    if (scope != kWorld) nodes_[scope].members.push_back(index);
+
+    Context inner = ctx;
+    inner.depth = ctx.depth + 1;
+    for (const XMLElement* c = model->FirstChildElement(); c; c = c->NextSiblingElement()) {
+      const std::string tag = c->Name();
+      if (tag == "link") {
+        ReadLink(c, index, ctx);
+      } else if (tag == "joint") {
+        ReadJoint(c, index, ctx);
+      } else if (tag == "frame" && ctx.version.AtLeast(1, 7)) {
+        ReadFrame(c, index, ctx);
+      } else if (tag == "model") {
+        ReadModel(c, index, inner, nullptr);
+      } else if (tag == "include") {
+        ReadInclude(c, index, inner);
+      }
+    }
+    return index;
+  }
+
+  void ReadFrame(const XMLElement* frame, int scope, const Context& ctx) {
+    Node node;
+    node.kind = Node::Kind::kFrame;
+    const std::string name = Attr(frame, "name");
+    if (name.empty()) {
+      Error(ctx.file, frame, "<frame>", "a <frame> needs a name attribute");
+      return;
+    }
+    node.name = Prefix(scope) + name;
+    node.scope = scope;
+    node.version = ctx.version;
+    node.element = frame;
+    node.location = {ctx.file, frame->GetLineNum(), 0};
+    node.attached_to = Attr(frame, "attached_to");
+    const XMLElement* pose = frame->FirstChildElement("pose");
+    node.X_raw = ParsePose(pose, ctx, "<pose> of <frame> '" + name + "'");
+    node.relative_to = RelativeTo(pose, ctx.version);
+    AddNode(std::move(node), ctx);
+  }
+
+  void ReadJoint(const XMLElement* joint, int scope, const Context& ctx) {
+    Node node;
+    node.kind = Node::Kind::kJoint;
+    const std::string name = Attr(joint, "name");
+    if (name.empty()) {
+      Error(ctx.file, joint, "<joint>", "a <joint> needs a name attribute");
+      return;
+    }
+    const std::string what = "<joint> '" + name + "'";
+    if (joint->Attribute("type") == nullptr) {
+      Error(ctx.file, joint, what, "a <joint> needs a type attribute");
+      return;
+    }
+    node.name = Prefix(scope) + name;
+    node.scope = scope;
+    node.version = ctx.version;
+    node.element = joint;
+    node.location = {ctx.file, joint->GetLineNum(), 0};
+    const XMLElement* parent = joint->FirstChildElement("parent");
+    const XMLElement* child = joint->FirstChildElement("child");
+    if (parent == nullptr || Text(parent).empty()) {
+      Error(ctx.file, joint, what, "a <joint> needs a <parent>");
+      return;
+    }
+    if (child == nullptr || Text(child).empty()) {
+      Error(ctx.file, joint, what, "a <joint> needs a <child>");
+      return;
+    }
+    node.parent = Text(parent);
+    node.child = Text(child);
+    const XMLElement* pose = joint->FirstChildElement("pose");
+    node.X_raw = ParsePose(pose, ctx, "<pose> of " + what);
+    node.relative_to = RelativeTo(pose, ctx.version);
+    // libsdformat's 1.4->1.5 converter adds use_parent_model_frame=true to the joints of
+    // //sdf/model and //world/model (not of deeper nested models).
+    const XMLNode* model_parent = joint->Parent() ? joint->Parent()->Parent() : nullptr;
+    const bool top_level = model_parent != nullptr && model_parent->ToElement() != nullptr &&
+                           (std::string(model_parent->ToElement()->Name()) == "sdf" ||
+                            std::string(model_parent->ToElement()->Name()) == "world");
+    node.axis_in_model_frame_1_4 = top_level && !ctx.version.AtLeast(1, 5);
+    AddNode(std::move(node), ctx);
+  }
+
+  void ReadLink(const XMLElement* link, int scope, const Context& ctx) {
+    Node node;
+    node.kind = Node::Kind::kLink;
+    const std::string name = Attr(link, "name");
+    if (name.empty()) {
+      Error(ctx.file, link, "<link>", "a <link> needs a name attribute");
+      return;
+    }
+    node.name = Prefix(scope) + name;
+    node.scope = scope;
+    node.version = ctx.version;
+    node.element = link;
+    node.location = {ctx.file, link->GetLineNum(), 0};
+    const XMLElement* pose = link->FirstChildElement("pose");
+    node.X_raw = ParsePose(pose, ctx, "<pose> of <link> '" + name + "'");
+    node.relative_to = RelativeTo(pose, ctx.version);
+    const int index = AddNode(std::move(node), ctx);
+    if (index < 0) return;
+    nodes_[scope].members.push_back(index);
+    link_files_.emplace(index, ctx);
+  }
+
+  /// Resolves an <include>: returns the node of the model it brings in, or kNotFound.
+  int ReadInclude(const XMLElement* include, int scope, const Context& ctx);
+
+  std::optional<std::string> FindModelFile(const std::string& uri, const std::string& base_dir,
+                                           std::string* why);
+
+  // ------------------------------------------------------------ pose resolution
+  /// The node named `ref` as seen from inside `scope`; kWorld for the scope's own frame
+  /// ("__model__", or "world" at the root); kNotFound when it names nothing.
+  int Lookup(const std::string& ref, int scope) const {
+    if (ref == "__model__") return scope;
+    if (scope == kWorld && ref == "world") return kWorld;
+    const auto it = by_name_.find(Prefix(scope) + ref);
+    return it == by_name_.end() ? kNotFound : it->second;
+  }
+
+  /// Pose of node (or scope) `target` in the frame of `scope`, which must contain it.
+  std::optional<Pose> PoseInScope(int target, int scope, int depth) {
+    Pose X;
+    while (target != scope) {
+      if (target == kWorld || target == kNotFound) return std::nullopt;
+      const std::optional<Pose> X_local = Resolve(target, depth + 1);
+      if (!X_local) return std::nullopt;
+      X = *X_local * X;
+      target = nodes_[target].scope;
+    }
+    return X;
+  }
+
+  /// Pose of node i in the frame of its containing model (or the world); nullopt after an error.
+  std::optional<Pose> Resolve(int i, int depth) {
+    Node& n = nodes_[i];
+    if (n.state == 2) return n.X_SF;
+    if (n.state == 3) return std::nullopt;
+    const std::string file = n.location.file;
+    if (n.state == 1 || depth > kMaxResolveDepth) {
+      Error(file, n.element, Describe(n),
+            n.state == 1 ? "the poses form a cycle through '" + n.name + "' (relative_to)"
+                         : "relative_to chain deeper than " + std::to_string(kMaxResolveDepth));
+      n.state = 3;
+      return std::nullopt;
+    }
+    n.state = 1;
+    std::string ref = n.relative_to;
+    if (ref.empty()) {
+      if (n.kind == Node::Kind::kFrame) ref = n.attached_to;
+      if (n.kind == Node::Kind::kJoint) ref = n.child;
+    }
+    int target = ref.empty() ? n.scope : Lookup(ref, n.scope);
+    if (target == kNotFound) {
+      Error(
+          file, n.element, Describe(n),
+          "the frame '" + ref + "' named by its pose (relative_to/attached_to/child) is not found");
+      nodes_[i].state = 3;
+      return std::nullopt;
+    }
+    if (target == i) {
+      Error(file, nodes_[i].element, Describe(nodes_[i]), "its pose is relative to itself");
+      nodes_[i].state = 3;
+      return std::nullopt;
+    }
+    std::optional<Pose> X_ST = PoseInScope(target, nodes_[i].scope, depth);
+    if (!X_ST) {
+      nodes_[i].state = 3;
+      return std::nullopt;
+    }
+    Pose X_SF = *X_ST * nodes_[i].X_raw;
+    if (nodes_[i].kind == Node::Kind::kModel && !nodes_[i].placement_frame.empty()) {
+      const int p = Lookup(nodes_[i].placement_frame, i);
+      std::optional<Pose> X_MP;
+      if (p == kNotFound) {
+        Error(file, nodes_[i].element, Describe(nodes_[i]),
+              "the placement_frame '" + nodes_[i].placement_frame + "' is not found");
+      } else {
+        X_MP = PoseInScope(p, i, depth);
+      }
+      if (!X_MP) {
+        nodes_[i].state = 3;
+        return std::nullopt;
+      }
+      X_SF = X_SF * X_MP->Inverse();
+    }
+    nodes_[i].X_SF = X_SF;
+    nodes_[i].state = 2;
+    return X_SF;
+  }
+
+  /// The link node that frame `i` is attached to (kNotFound if none).
+  int AttachedLink(int i, int depth) const {
+    if (i < 0 || depth > kMaxResolveDepth) return kNotFound;
+    const Node& n = nodes_[i];
+    switch (n.kind) {
+      case Node::Kind::kLink:
+        return i;
+      case Node::Kind::kJoint:
+        return AttachedLink(Lookup(n.child, n.scope), depth + 1);
+      case Node::Kind::kFrame: {
+        if (n.attached_to.empty()) {
+          return n.scope == kWorld ? kNotFound : AttachedLink(n.scope, depth + 1);
+        }
+        return AttachedLink(Lookup(n.attached_to, n.scope), depth + 1);
+      }
+      case Node::Kind::kModel: {
+        if (!n.canonical_link.empty()) {
+          return AttachedLink(Lookup(n.canonical_link, i), depth + 1);
+        }
+        for (int m : n.members) {
+          if (nodes_[m].kind == Node::Kind::kLink) return m;
+        }
+        for (int m : n.members) {  // No link: the first nested model's canonical link.
+          const int l = AttachedLink(m, depth + 1);
+          if (l >= 0) return l;
+        }
+        return kNotFound;
+      }
+    }
+    return kNotFound;
+  }
+
+  void BuildModel(int top);
+  void ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link);
+  bool ResolveInLink(const XMLElement* pose, int link_index, int top, const Pose& X_TB,
+                     const Context& ctx, const std::string& what, Pose* X_BF);
+
+  std::string top_file_;
+  std::vector<std::string> search_paths_;
+  ReadResult result_;
+  std::vector<Node> nodes_;
+  std::unordered_map<std::string, int> by_name_;
+  std::vector<int> top_models_;
+  std::vector<SdfModelFrames> frames_;
+  std::map<int, Context> link_files_;
+  std::vector<std::unique_ptr<XMLDocument>> documents_;
+  std::vector<std::string> include_stack_;
+  Version include_version_;
+  std::string include_file_;
+};
+
+bool ReadWholeFile(const std::string& path, std::string* text, std::string* why) {
+  if (path == "-") {
+    std::string data;
+    char buffer[65536];
+    while (std::cin.read(buffer, sizeof buffer) || std::cin.gcount() > 0) {
+      data.append(buffer, static_cast<size_t>(std::cin.gcount()));
+      if (data.size() > kMaxSdfFileBytes) {
+        *why = "standard input is larger than the limit of " + std::to_string(kMaxSdfFileBytes) +
+               " bytes";
+        return false;
+      }
+    }
+    *text = std::move(data);
+    return true;
+  }
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    *why = "is a directory, not a file";
+    return false;
+  }
+  const auto size = fs::file_size(path, ec);
+  if (ec) {
+    *why = "cannot read the file: " + ec.message();
+    return false;
+  }
+  if (size > kMaxSdfFileBytes) {
+    *why = "the file has " + std::to_string(size) + " bytes, more than the limit of " +
+           std::to_string(kMaxSdfFileBytes);
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    *why = "cannot open the file";
+    return false;
+  }
+  text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (text->size() > kMaxSdfFileBytes) {
+    *why = "the file is larger than the limit of " + std::to_string(kMaxSdfFileBytes) + " bytes";
+    return false;
+  }
+  return true;
+}
+
+/// Parses `xml` into `doc`; on failure returns the error (line in `line`).
+bool ParseXml(const std::string& xml, XMLDocument* doc, std::string* why, int* line) {
+  if (Trim(xml).empty()) {
+    *why = "the file is empty";
+    *line = 0;
+    return false;
+  }
+  if (doc->Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
+    *why = std::string("malformed XML: ") + doc->ErrorName();
+    const char* detail = doc->ErrorStr();
+    if (detail != nullptr) *why += std::string(" (") + detail + ")";
+    *line = doc->ErrorLineNum();
+    return false;
+  }
+  return true;
+}
+
+std::optional<std::string> Reader::FindModelFile(const std::string& uri_in,
+                                                 const std::string& base_dir, std::string* why) {
+  std::string uri = uri_in;
+  std::vector<fs::path> candidates;
+  if (uri.rfind("http://", 0) == 0 || uri.rfind("https://", 0) == 0) {
+    *why = "remote URIs (Fuel) are not fetched";
+    return std::nullopt;
+  }
+  if (uri.rfind("file://", 0) == 0) uri = uri.substr(7);
+  if (uri.rfind("model://", 0) == 0) {
+    const std::string rest = uri.substr(8);
+    for (const std::string& dir : search_paths_) candidates.push_back(fs::path(dir) / rest);
+  } else if (fs::path(uri).is_absolute()) {
+    candidates.emplace_back(uri);
+  } else {
+    candidates.push_back(fs::path(base_dir) / uri);
+    for (const std::string& dir : search_paths_) candidates.push_back(fs::path(dir) / uri);
+  }
+  std::error_code ec;
+  for (const fs::path& c : candidates) {
+    if (fs::is_regular_file(c, ec)) return c.string();
+    if (!fs::is_directory(c, ec)) continue;
+    const fs::path config = c / "model.config";
+    if (fs::is_regular_file(config, ec)) {
+      std::string text;
+      std::string config_why;
+      XMLDocument doc;
+      int line = 0;
+      if (ReadWholeFile(config.string(), &text, &config_why) &&
+          ParseXml(text, &doc, &config_why, &line) && doc.RootElement() != nullptr) {
+        std::string best;
+        Version best_version{-1, -1};
+        for (const XMLElement* s = doc.RootElement()->FirstChildElement("sdf"); s;
+             s = s->NextSiblingElement("sdf")) {
+          Version v{0, 0};
+          if (!ParseVersion(Attr(s, "version"), &v)) v = Version{0, 0};
+          if (best.empty() || !best_version.AtLeast(v.major, v.minor) ||
+              (v.major == best_version.major && v.minor == best_version.minor && best.empty())) {
+            if (!Text(s).empty()) {
+              best = Text(s);
+              best_version = v;
+            }
+          }
+        }
+        if (!best.empty() && fs::is_regular_file(c / best, ec)) return (c / best).string();
+      }
+    }
+    if (fs::is_regular_file(c / "model.sdf", ec)) return (c / "model.sdf").string();
+    *why = "the folder '" + c.string() + "' has no model.config <sdf> file and no model.sdf";
+    return std::nullopt;
+  }
+  *why = "not found in the including file's folder or the model paths (" +
+         std::to_string(search_paths_.size()) + " searched)";
+  return std::nullopt;
+}
+
+int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx) {
+  const XMLElement* uri_element = include->FirstChildElement("uri");
+  const std::string uri = Text(uri_element);
+  const std::string what = "<include> '" + uri + "'";
+  if (uri.empty()) {
+    Error(ctx.file, include, "<include>", "an <include> needs a <uri>");
+    return kNotFound;
+  }
+  if (ctx.depth > kMaxNestingDepth) {
+    Error(ctx.file, include, what,
+          "includes nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
+    return kNotFound;
+  }
+  const std::string base_dir =
+      ctx.file == "-" ? std::string(".") : fs::path(ctx.file).parent_path().string();
+  std::string why;
+  const std::optional<std::string> path = FindModelFile(uri, base_dir, &why);
+  if (!path) {
+    Warning(ctx.file, include, what, "cannot resolve the include (skipped): " + why);
+    return kNotFound;
+  }
+  std::error_code ec;
+  fs::path canonical = fs::weakly_canonical(*path, ec);
+  const std::string key = ec ? *path : canonical.string();
+  if (std::find(include_stack_.begin(), include_stack_.end(), key) != include_stack_.end()) {
+    Error(ctx.file, include, what, "recursive include: '" + *path + "' includes itself");
+    return kNotFound;
+  }
+  std::string text;
+  if (!ReadWholeFile(*path, &text, &why)) {
+    Error(*path, nullptr, what, why);
+    return kNotFound;
+  }
+  auto doc = std::make_unique<XMLDocument>();
+  int line = 0;
+  if (!ParseXml(text, doc.get(), &why, &line)) {
+    result_.errors.push_back(MakeError(*path, line, what, why));
+    return kNotFound;
+  }
+  const XMLElement* root = doc->RootElement();
+  Context inner = ctx;
+  inner.file = *path;
+  if (root == nullptr || std::string(root->Name()) != "sdf" ||
+      !ParseVersion(Attr(root, "version"), &inner.version)) {
+    Error(*path, root, what, "the included file is not SDF (<sdf version=...> expected)");
+    return kNotFound;
+  }
+  const XMLElement* model = root->FirstChildElement("model");
+  if (model == nullptr) {
+    Warning(ctx.file, include, what, "the included file '" + *path + "' has no <model> (skipped)");
+    return kNotFound;
+  }
+  documents_.push_back(std::move(doc));
+  include_stack_.push_back(key);
+  const Version saved_version = include_version_;
+  const std::string saved_file = include_file_;
+  include_version_ = ctx.version;
+  include_file_ = ctx.file;
+  const int index = ReadModel(model, scope, inner, include);
+  include_version_ = saved_version;
+  include_file_ = saved_file;
+  include_stack_.pop_back();
+  return index;
+}
+
+bool Reader::ResolveInLink(const XMLElement* pose, int link_index, int top, const Pose& X_TB,
+                           const Context& ctx, const std::string& what, Pose* X_BF) {
+  const Pose X_raw = ParsePose(pose, ctx, "<pose> of " + what);
+  const std::string rel = RelativeTo(pose, ctx.version);
+  if (rel.empty()) {
+    *X_BF = X_raw;
+    return true;
+  }
+  const int scope = nodes_[link_index].scope;
+  const int target = Lookup(rel, scope);
+  if (target == kNotFound) {
+    Error(ctx.file, pose, "<pose> of " + what, "the frame '" + rel + "' is not found");
+    return false;
+  }
+  const std::optional<Pose> X_TR = PoseInScope(target, top, 0);
+  if (!X_TR) return false;
+  *X_BF = X_TB.Inverse() * *X_TR * X_raw;
+  return true;
+}
+
+void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link) {
+  const Context& ctx = link_files_.at(link_index);
+  const XMLElement* e = nodes_[link_index].element;
+  const std::string lname = "'" + link->name + "'";
+  if (const XMLElement* in = e->FirstChildElement("inertial")) {
+    const std::string auto_attr = Attr(in, "auto");
+    if (ctx.version.AtLeast(1, 11) && (auto_attr == "true" || auto_attr == "1")) {
+      Warning(ctx.file, in, "<inertial> of link " + lname,
+              "auto-computed inertial (auto=\"true\") is recorded as absent");
+    } else {
+      Inertial inertial;
+      inertial.location = {ctx.file, in->GetLineNum(), 0};
+      const XMLElement* pose = in->FirstChildElement("pose");
+      if (pose != nullptr) inertial.pose_location = {ctx.file, pose->GetLineNum(), 0};
+      ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname,
+                    &inertial.X_BBi);
+      const XMLElement* mass = in->FirstChildElement("mass");
+      if (mass != nullptr) inertial.mass_location = {ctx.file, mass->GetLineNum(), 0};
+      // SDF defaults (sdf/1.x/inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
+      inertial.mass = Number(mass, 1.0, ctx, "<mass> of link " + lname);
+      const XMLElement* inertia = in->FirstChildElement("inertia");
+      if (inertia != nullptr) inertial.inertia_location = {ctx.file, inertia->GetLineNum(), 0};
+      auto moment = [&](const char* tag, double fallback) {
+        return Number(inertia ? inertia->FirstChildElement(tag) : nullptr, fallback, ctx,
+                      std::string("<") + tag + "> of link " + lname);
+      };
+      inertial.ixx = moment("ixx", 1.0);
+      inertial.iyy = moment("iyy", 1.0);
+      inertial.izz = moment("izz", 1.0);
+      inertial.ixy = moment("ixy", 0.0);
+      inertial.ixz = moment("ixz", 0.0);
+      inertial.iyz = moment("iyz", 0.0);
+      link->inertial = inertial;
+    }
+  }
+  for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    const std::string tag = c->Name();
+    if (tag != "collision" && tag != "visual") continue;
+    Geometry g;
+    g.is_collision = tag == "collision";
+    g.location = {ctx.file, c->GetLineNum(), 0};
+    const std::string what = "<" + tag + "> '" + Attr(c, "name") + "' of link " + lname;
+    ResolveInLink(c->FirstChildElement("pose"), link_index, top, X_TB, ctx, what, &g.X_BG);
+    const XMLElement* geometry = c->FirstChildElement("geometry");
+    const XMLElement* shape = geometry ? geometry->FirstChildElement() : nullptr;
+    if (shape != nullptr) {
+      const std::string s = shape->Name();
+      const std::string swhat = "<" + s + "> of " + what;
+      if (s == "box") {
+        g.type = Geometry::Type::kBox;
+        g.size = Vector(shape->FirstChildElement("size"), Eigen::Vector3d::Ones(), ctx, swhat);
+      } else if (s == "cylinder" || s == "capsule") {
+        g.type = s == "cylinder" ? Geometry::Type::kCylinder : Geometry::Type::kCapsule;
+        g.radius =
+            Number(shape->FirstChildElement("radius"), s == "cylinder" ? 1.0 : 0.5, ctx, swhat);
+        g.length = Number(shape->FirstChildElement("length"), 1.0, ctx, swhat);
+      } else if (s == "sphere") {
+        g.type = Geometry::Type::kSphere;
+        g.radius = Number(shape->FirstChildElement("radius"), 1.0, ctx, swhat);
+      } else if (s == "ellipsoid") {
+        g.type = Geometry::Type::kEllipsoid;
+        g.radii = Vector(shape->FirstChildElement("radii"), Eigen::Vector3d::Ones(), ctx, swhat);
+      } else if (s == "mesh") {
+        g.type = Geometry::Type::kMesh;
+        g.uri = Text(shape->FirstChildElement("uri"));
+        g.scale = Vector(shape->FirstChildElement("scale"), Eigen::Vector3d::Ones(), ctx, swhat);
+      }
+    }
+    link->geometries.push_back(std::move(g));
+  }
+  // <!-- massprops: ignore rule-id ... --> anywhere inside the link.
+  std::vector<const XMLNode*> stack{e};
+  while (!stack.empty()) {
+    const XMLNode* n = stack.back();
+    stack.pop_back();
+    for (const XMLNode* c = n->LastChild(); c; c = c->PreviousSibling()) {
+      if (const XMLComment* comment = c->ToComment()) {
+        std::istringstream words(comment->Value() ? comment->Value() : "");
+        std::string w1, w2, rule;
+        if (words >> w1 >> w2 && w1 == "massprops:" && w2 == "ignore") {
+          while (words >> rule) link->ignored_rules.push_back(rule);
+        }
+      } else if (c->ToElement() != nullptr) {
+        stack.push_back(c);
+      }
+    }
+  }
+}
+
+Joint::Type JointType(const std::string& t) {
+  if (t == "fixed") return Joint::Type::kFixed;
+  if (t == "revolute") return Joint::Type::kRevolute;
+  if (t == "continuous") return Joint::Type::kContinuous;
+  if (t == "prismatic") return Joint::Type::kPrismatic;
+  if (t == "ball") return Joint::Type::kBall;
+  if (t == "universal") return Joint::Type::kUniversal;
+  if (t == "screw") return Joint::Type::kScrew;
+  return Joint::Type::kOther;  // revolute2, gearbox, ...
+}
+
+void Reader::BuildModel(int top) {
+  const size_t errors_before = result_.errors.size();
+  Model model;
+  model.format = Model::Format::kSdf;
+  model.file = top_file_;
+  const std::string prefix = nodes_[top].name + "::";
+  model.name = nodes_[top].name;
+  model.location = nodes_[top].location;
+  auto local_name = [&](int i) { return nodes_[i].name.substr(prefix.size()); };
+  auto inside = [&](int i) { return nodes_[i].name.rfind(prefix, 0) == 0; };
+
+  std::unordered_map<int, Pose> X_TB;  // Link poses in the top model frame.
+  SdfModelFrames frames;
+  // The nodes of one top-level model are contiguous (read depth-first).
+  int end = top + 1;
+  while (end < static_cast<int>(nodes_.size()) && inside(end)) ++end;
+  for (int i = top; i < end; ++i) {
+    if (nodes_[i].kind != Node::Kind::kLink) continue;
+    const std::optional<Pose> X = PoseInScope(i, top, 0);
+    if (!X) continue;
+    X_TB[i] = *X;
+    frames.X_MB.push_back(*X);
+    Link link;
+    link.name = local_name(i);
+    link.location = nodes_[i].location;
+    ReadLinkContents(i, top, *X, &link);
+    model.links.push_back(std::move(link));
+  }
+  std::optional<Pose> X_WT = PoseInScope(top, kWorld, 0);
+  if (X_WT) frames.X_WM = *X_WT;
+  for (int i = top; i < end; ++i) {
+    const Node& n = nodes_[i];
+    if (n.kind != Node::Kind::kJoint) continue;
+    Joint joint;
+    joint.name = local_name(i);
+    joint.location = n.location;
+    joint.type_name = Attr(n.element, "type");
+    joint.type = JointType(joint.type_name);
+    const std::string what = Describe(n);
+    const int c = AttachedLink(Lookup(n.child, n.scope), 0);
+    if (n.child == "world" || c < 0 || !X_TB.count(c)) {
+      Error(n.location.file, n.element, what, "the child '" + n.child + "' is not a link");
+      continue;
+    }
+    joint.child = local_name(c);
+    const Pose& X_TC = X_TB[c];
+    if (n.parent == "world") {
+      joint.parent = "world";
+      if (!X_WT) continue;
+      joint.X_PC = *X_WT * X_TC;
+    } else {
+      const int p = AttachedLink(Lookup(n.parent, n.scope), 0);
+      if (p < 0 || !X_TB.count(p)) {
+        Error(n.location.file, n.element, what, "the parent '" + n.parent + "' is not a link");
+        continue;
+      }
+      joint.parent = local_name(p);
+      joint.X_PC = X_TB[p].Inverse() * X_TC;
+    }
+    // Axis: <axis><xyz> (default 0 0 1) in the frame E it is expressed in.
+    Context ctx{n.location.file, n.version, 0};
+    const XMLElement* axis = n.element->FirstChildElement("axis");
+    const XMLElement* xyz = axis ? axis->FirstChildElement("xyz") : nullptr;
+    const Eigen::Vector3d axis_E =
+        Vector(xyz, Eigen::Vector3d::UnitZ(), ctx, "<axis><xyz> of " + what);
+    int expressed_in = i;  // The joint frame.
+    if (n.version.AtLeast(1, 7)) {
+      const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
+      if (!e.empty()) expressed_in = Lookup(e, n.scope);
+    } else if (axis != nullptr) {
+      const XMLElement* flag = axis->FirstChildElement("use_parent_model_frame");
+      const std::string f = Text(flag);
+      if (n.axis_in_model_frame_1_4 || f == "true" || f == "1" || f == "True" || f == "TRUE") {
+        expressed_in = n.scope;
+      }
+    }
+    const std::optional<Pose> X_TE =
+        expressed_in == kNotFound ? std::nullopt : PoseInScope(expressed_in, top, 0);
+    if (!X_TE) {
+      Error(n.location.file, xyz, "<axis><xyz> of " + what,
+            "the frame named by expressed_in is not found");
+      continue;
+    }
+    Eigen::Vector3d axis_C = X_TC.R_AB.transpose() * X_TE->R_AB * axis_E;
+    if (axis_C.norm() == 0) {
+      Warning(n.location.file, xyz, "<axis><xyz> of " + what, "the axis has zero length");
+    } else {
+      axis_C.normalize();
+    }
+    joint.axis = axis_C;
+    model.joints.push_back(std::move(joint));
+  }
+  // Root: the canonical link if it is no joint's child, else the first link that is none.
+  auto is_child = [&](const std::string& name) {
+    return std::any_of(model.joints.begin(), model.joints.end(),
+                       [&](const Joint& j) { return j.child == name; });
+  };
+  const int canonical = AttachedLink(top, 0);
+  if (canonical >= 0 && inside(canonical) && !is_child(local_name(canonical))) {
+    model.root_link = local_name(canonical);
+  } else {
+    for (const Link& l : model.links) {
+      if (!is_child(l.name)) {
+        model.root_link = l.name;
+        break;
+      }
+    }
+  }
+  if (result_.errors.size() == errors_before) {
+    result_.models.push_back(std::move(model));
+    frames_.push_back(std::move(frames));
+  }
+}
+
+ReadResult Reader::Read(const std::string& xml, const std::string& file_name,
+                        std::vector<SdfModelFrames>* frames) {
+  if (xml.size() > kMaxSdfFileBytes) {
+    result_.errors.push_back(MakeError(file_name, 0, "<sdf>",
+                                       "the input has " + std::to_string(xml.size()) +
+                                           " bytes, more than the limit of " +
+                                           std::to_string(kMaxSdfFileBytes)));
+    return std::move(result_);
+  }
+  auto doc = std::make_unique<XMLDocument>();
+  std::string why;
+  int line = 0;
+  if (!ParseXml(xml, doc.get(), &why, &line)) {
+    result_.errors.push_back(MakeError(file_name, line, "<sdf>", why));
+    return std::move(result_);
+  }
+  const XMLElement* root = doc->RootElement();
+  if (root == nullptr || std::string(root->Name()) != "sdf") {
+    Error(file_name, root, root ? std::string("<") + root->Name() + ">" : "<sdf>",
+          "the root element must be <sdf>");
+    return std::move(result_);
+  }
+  Context ctx;
+  ctx.file = file_name;
+  const std::string version_text = Attr(root, "version");
+  if (!ParseVersion(version_text, &ctx.version)) {
+    Error(file_name, root, "<sdf>",
+          "the version attribute '" + version_text + "' is not of the form MAJOR.MINOR");
+    return std::move(result_);
+  }
+  if (!ctx.version.AtLeast(1, 4) || ctx.version.AtLeast(2, 0)) {
+    Warning(file_name, root, "<sdf>",
+            "SDF version " + version_text + " is outside 1.4-1.11; read with 1.x rules");
+  }
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(file_name, ec);
+  include_stack_.push_back(ec ? file_name : canonical.string());
+  for (const XMLElement* c = root->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    const std::string tag = c->Name();
+    if (tag == "world") {
+      ReadWorld(c, ctx);
+    } else if (tag == "model") {
+      const int m = ReadModel(c, kWorld, ctx, nullptr);
+      if (m >= 0) top_models_.push_back(m);
+    }
+  }
+  if (top_models_.empty() && result_.errors.empty()) {
+    Warning(file_name, root, "<sdf>", "the file holds no <model>");
+  }
+  if (result_.errors.empty()) {
+    for (int top : top_models_) BuildModel(top);
+  }
+  if (!result_.errors.empty()) {
+    result_.models.clear();
+    frames_.clear();
+  }
+  if (frames != nullptr) *frames = std::move(frames_);
+  documents_.push_back(std::move(doc));
+  return std::move(result_);
+}
+
+}  // namespace
+
+ReadResult ReadSdfString(const std::string& xml, const std::string& file_name,
+                         const SdfReadOptions& options, std::vector<SdfModelFrames>* frames) {
+  Reader reader(options, file_name);
+  return reader.Read(xml, file_name, frames);
+}
+
+ReadResult ReadSdfString(const std::string& xml, const std::string& file_name,
+                         const SdfReadOptions& options) {
+  return ReadSdfString(xml, file_name, options, nullptr);
+}
+
+ReadResult ReadSdfFile(const std::string& path, const SdfReadOptions& options) {
+  return ReadSdfFile(path, options, nullptr);
+}
+
+ReadResult ReadSdfFile(const std::string& path, const SdfReadOptions& options,
+                       std::vector<SdfModelFrames>* frames) {
+  std::string text;
+  std::string why;
+  if (!ReadWholeFile(path, &text, &why)) {
+    ReadResult result;
+    result.errors.push_back(MakeError(path, 0, "<sdf>", why));
+    return result;
+  }
+  return ReadSdfString(text, path, options, frames);
+}
+
+}  // namespace massprops

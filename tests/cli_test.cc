@@ -1,0 +1,357 @@
+// End-to-end tests of the `massprops` tool: runs the built executable (MASSPROPS_TOOL_PATH) on the
+// fixtures of testdata/cli/ and the bundled example, and checks exit codes and outputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "massprops/checks.h"
+
+namespace {
+
+using nlohmann::json;
+
+const std::string kTool = MASSPROPS_TOOL_PATH;
+const std::string kCliData = std::string(MASSPROPS_TESTDATA_DIR) + "/cli";
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string Quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string ReadAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs `sh -c "cd DIR && [ENV] massprops ARGS [< STDIN]"` and collects its exit code and output.
+RunResult Run(const std::string& args, const std::string& stdin_file = "",
+              const std::string& env = "", const std::string& dir = kCliData) {
+  const std::string err_path =
+      ::testing::TempDir() + "massprops_cli_test_stderr_" + std::to_string(getpid()) + ".txt";
+  std::string command = "cd " + Quote(dir) + " && " + env + " " + Quote(kTool) + " " + args;
+  if (!stdin_file.empty()) command += " < " + Quote(stdin_file);
+  command += " 2> " + Quote(err_path);
+  RunResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = pclose(pipe);
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.err = ReadAll(err_path);
+  std::remove(err_path.c_str());
+  return result;
+}
+
+bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// 1-based numbers of the lines of `file` that contain `needle`, in order.
+std::vector<int> LinesContaining(const std::string& file, const std::string& needle) {
+  std::istringstream in(ReadAll(file));
+  std::vector<int> lines;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (Contains(line, needle)) lines.push_back(number);
+  }
+  return lines;
+}
+
+// (rule, link) pairs of every finding in a JSON report.
+std::vector<std::pair<std::string, std::string>> RulesAndLinks(const json& report) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const json& file : report.at("files")) {
+    for (const json& finding : file.at("findings")) {
+      out.emplace_back(finding.at("rule"), finding.at("link"));
+    }
+  }
+  return out;
+}
+
+bool HasFinding(const json& report, const std::string& rule, const std::string& link) {
+  for (const auto& [r, l] : RulesAndLinks(report)) {
+    if (r == rule && l == link) return true;
+  }
+  return false;
+}
+
+TEST(CliTest, VersionPrintsTheProjectVersionAndExitsZero) {
+  const RunResult run = Run("--version");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.out, std::string("massprops ") + MASSPROPS_VERSION + "\n");
+}
+
+TEST(CliTest, HelpDescribesTheCheckCommandAndExitsZero) {
+  RunResult run = Run("--help");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_TRUE(Contains(run.out, "check")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "Exit codes")) << run.out;
+  run = Run("check --help");
+  EXPECT_EQ(run.exit_code, 0);
+  for (const char* option : {"--format", "--fail-on", "--disable", "--severity", "--tolerance",
+                             "--config", "--model-path", "--quiet", "--list-rules", "--color"}) {
+    EXPECT_TRUE(Contains(run.out, option)) << option << " missing from:\n" << run.out;
+  }
+}
+
+TEST(CliTest, UsageErrorsExitWithTwo) {
+  EXPECT_EQ(Run("").exit_code, 2);  // a subcommand is required
+  EXPECT_EQ(Run("frobnicate").exit_code, 2);
+  EXPECT_EQ(Run("check --format xml clean.urdf").exit_code, 2);
+  EXPECT_EQ(Run("check --fail-on fatal clean.urdf").exit_code, 2);
+  EXPECT_EQ(Run("check --tolerance 2 clean.urdf").exit_code, 2);
+  EXPECT_EQ(Run("check --no-such-option clean.urdf").exit_code, 2);
+  const RunResult unknown_rule = Run("check --disable no-such-rule clean.urdf");
+  EXPECT_EQ(unknown_rule.exit_code, 2);
+  EXPECT_TRUE(Contains(unknown_rule.err, "no-such-rule")) << unknown_rule.err;
+  EXPECT_EQ(Run("check --severity inertial-missing clean.urdf").exit_code, 2);
+  EXPECT_EQ(Run("check --severity inertial-missing=loud clean.urdf").exit_code, 2);
+  EXPECT_TRUE(unknown_rule.out.empty());
+}
+
+TEST(CliTest, ACleanModelExitsZeroAndReportsNothing) {
+  RunResult run = Run("check clean.urdf");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_EQ(run.out, "massprops: checked 1 file: 0 errors, 0 warnings, 0 notes\n");
+  run = Run("check --quiet clean.urdf");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.out, "");
+  run = Run("check clean.sdf");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_EQ(run.out, "massprops: checked 1 file: 0 errors, 0 warnings, 0 notes\n");
+}
+
+TEST(CliTest, AnImpossibleInertiaExitsOneWithAFileLineDiagnostic) {
+  const RunResult run = Run("check not_physical.urdf");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  // The arm's inertia is the second <inertial> of the fixture; the finding points at the
+  // <inertial> or at its <inertia>.
+  const int inertial_line = LinesContaining(kCliData + "/not_physical.urdf", "<inertial>")[1];
+  const int inertia_line = LinesContaining(kCliData + "/not_physical.urdf", "<inertia ")[1];
+  const bool at_inertial =
+      Contains(run.out, "not_physical.urdf:" + std::to_string(inertial_line) + ":");
+  const bool at_inertia =
+      Contains(run.out, "not_physical.urdf:" + std::to_string(inertia_line) + ":");
+  EXPECT_TRUE(at_inertial || at_inertia) << run.out;
+  EXPECT_TRUE(Contains(run.out, ": error: ")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[inertia-not-physical]\n")) << run.out;
+}
+
+TEST(CliTest, JsonOutputParsesAndNamesRuleLinkAndLine) {
+  const RunResult run = Run("check --format json not_physical.urdf");
+  EXPECT_EQ(run.exit_code, 1);
+  const json report = json::parse(run.out);
+  EXPECT_EQ(report.at("version"), MASSPROPS_VERSION);
+  ASSERT_EQ(report.at("files").size(), 1u);
+  const json& file = report["files"][0];
+  EXPECT_EQ(file.at("path"), "not_physical.urdf");
+  EXPECT_EQ(file.at("format"), "urdf");
+  EXPECT_EQ(file.at("models"), json::array({"not_physical"}));
+  EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "arm")) << run.out;
+  for (const json& finding : file.at("findings")) {
+    if (finding.at("rule") != "inertia-not-physical") continue;
+    EXPECT_EQ(finding.at("severity"), "error");
+    EXPECT_GT(finding.at("line").get<int>(), 0);
+  }
+  EXPECT_GE(report.at("summary").at("errors").get<int>(), 1);
+  EXPECT_EQ(report.at("summary").at("read_errors"), 0);
+}
+
+TEST(CliTest, FailOnDecidesWhetherWarningsFailTheRun) {
+  // missing_inertial.urdf has one warning (inertial-missing) and nothing else.
+  RunResult run = Run("check missing_inertial.urdf");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_TRUE(Contains(run.out, ": warning: ")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[inertial-missing]")) << run.out;
+  EXPECT_EQ(Run("check --fail-on warning missing_inertial.urdf").exit_code, 1);
+  EXPECT_EQ(Run("check --fail-on note missing_inertial.urdf").exit_code, 1);
+  EXPECT_EQ(Run("check --fail-on error missing_inertial.urdf").exit_code, 0);
+}
+
+TEST(CliTest, RulesCanBeDisabledOrHaveTheirSeverityChanged) {
+  RunResult run = Run("check --fail-on warning --disable inertial-missing missing_inertial.urdf");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_FALSE(Contains(run.out, "[inertial-missing]")) << run.out;
+  EXPECT_EQ(Run("check --severity inertial-missing=error missing_inertial.urdf").exit_code, 1);
+  run = Run("check --fail-on warning --severity inertial-missing=note missing_inertial.urdf");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_TRUE(Contains(run.out, ": note: ")) << run.out;
+  EXPECT_EQ(Run("check --fail-on warning --severity inertial-missing=off missing_inertial.urdf")
+                .exit_code,
+            0);
+}
+
+TEST(CliTest, ADashReadsTheModelFromStandardInput) {
+  const RunResult run = Run("check -", kCliData + "/not_physical.urdf");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_TRUE(Contains(run.out, "<stdin>:")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[inertia-not-physical]")) << run.out;
+  EXPECT_EQ(Run("check -", kCliData + "/clean.urdf").exit_code, 0);
+}
+
+TEST(CliTest, AFolderIsSearchedRecursivelyForModelsOnly) {
+  // tree/ holds a.urdf (clean), sub/b.sdf (clean), sub/robot.xml (a <robot>: not physical),
+  // launch.xml (root <launch>) and notes.txt; the last two are skipped.
+  const RunResult run = Run("check --format json tree");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  const json report = json::parse(run.out);
+  std::vector<std::string> paths;
+  for (const json& file : report.at("files")) paths.push_back(file.at("path"));
+  EXPECT_EQ(paths,
+            (std::vector<std::string>{"tree/a.urdf", "tree/sub/b.sdf", "tree/sub/robot.xml"}));
+  EXPECT_EQ(report["files"][1].at("format"), "sdf");
+  EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "arm"));
+  EXPECT_EQ(report.at("summary").at("files"), 3);
+}
+
+TEST(CliTest, AMissingFileExitsTwoAndTheOtherFilesAreStillReported) {
+  RunResult run = Run("check --format json no_such_file.urdf clean.urdf");
+  EXPECT_EQ(run.exit_code, 2);
+  const json report = json::parse(run.out);
+  ASSERT_EQ(report.at("files").size(), 2u);
+  EXPECT_EQ(report["files"][0].at("path"), "no_such_file.urdf");
+  EXPECT_EQ(report["files"][0].at("errors").size(), 1u);
+  EXPECT_EQ(report["files"][1].at("path"), "clean.urdf");
+  EXPECT_EQ(report["files"][1].at("models"), json::array({"clean"}));
+  EXPECT_TRUE(report["files"][1].at("errors").empty());
+  EXPECT_EQ(report.at("summary").at("read_errors"), 1);
+
+  // A read error outranks findings: exit 2 even with an error finding in the other file.
+  run = Run("check no_such_file.urdf not_physical.urdf");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(Contains(run.out, "no_such_file.urdf")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[read-error]")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[inertia-not-physical]")) << run.out;
+}
+
+TEST(CliTest, AMalformedFileIsAReadErrorWithALine) {
+  const RunResult run = Run("check malformed.urdf");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(Contains(run.out, "malformed.urdf:")) << run.out;
+  EXPECT_TRUE(Contains(run.out, ": error: ")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[read-error]")) << run.out;
+}
+
+TEST(CliTest, SarifOutputHasTheRequiredFieldsAndRelativeUris) {
+  const RunResult run = Run("check --format sarif not_physical.urdf");
+  EXPECT_EQ(run.exit_code, 1);
+  const json log = json::parse(run.out);
+  EXPECT_EQ(log.at("version"), "2.1.0");
+  const json& run0 = log.at("runs").at(0);
+  EXPECT_EQ(run0.at("tool").at("driver").at("name"), "massprops");
+  EXPECT_EQ(run0.at("tool").at("driver").at("version"), MASSPROPS_VERSION);
+  bool found = false;
+  for (const json& result : run0.at("results")) {
+    const json& physical = result.at("locations").at(0).at("physicalLocation");
+    EXPECT_EQ(physical.at("artifactLocation").at("uri"), "not_physical.urdf");
+    EXPECT_GE(physical.at("region").at("startLine").get<int>(), 1);
+    const json& rule = run0["tool"]["driver"]["rules"].at(result.at("ruleIndex").get<int>());
+    EXPECT_EQ(rule.at("id"), result.at("ruleId"));
+    if (result.at("ruleId") == "inertia-not-physical") {
+      found = true;
+      EXPECT_EQ(result.at("level"), "error");
+    }
+  }
+  EXPECT_TRUE(found) << run.out;
+}
+
+TEST(CliTest, GithubOutputIsWorkflowCommands) {
+  const RunResult run = Run("check --format github not_physical.urdf");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.out.rfind("::error file=not_physical.urdf,line=", 0), 0u) << run.out;
+  EXPECT_TRUE(Contains(run.out, ",title=inertia-not-physical::")) << run.out;
+}
+
+TEST(CliTest, ColourOnlyWhenAskedOrOnATerminal) {
+  // The tool's stdout is a pipe here, so auto means no colour.
+  EXPECT_FALSE(Contains(Run("check not_physical.urdf").out, "\x1b["));
+  EXPECT_TRUE(Contains(Run("check --color always not_physical.urdf").out, "\x1b["));
+  EXPECT_TRUE(
+      Contains(Run("check --color always not_physical.urdf", "", "NO_COLOR=1").out, "\x1b["));
+  EXPECT_FALSE(Contains(Run("check --color never not_physical.urdf").out, "\x1b["));
+}
+
+TEST(CliTest, AConfigFileFoundUpwardAppliesAndTheCommandLineWins) {
+  // configured/.massprops.toml says fail-on = "warning"; the model there has one warning.
+  EXPECT_EQ(Run("check configured/missing_inertial.urdf").exit_code, 1);
+  EXPECT_EQ(Run("check --fail-on error configured/missing_inertial.urdf").exit_code, 0);
+  // The same model outside that folder: the default fail level.
+  EXPECT_EQ(Run("check missing_inertial.urdf").exit_code, 0);
+}
+
+TEST(CliTest, AnExplicitConfigReplacesTheOneFoundUpward) {
+  const RunResult run =
+      Run("check --config disable_missing_inertial.toml configured/missing_inertial.urdf");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_FALSE(Contains(run.out, "[inertial-missing]")) << run.out;
+  EXPECT_EQ(Run("check --config no_such_config.toml clean.urdf").exit_code, 2);
+}
+
+TEST(CliTest, ABadConfigFileExitsTwoNamingItsLine) {
+  // bad_config/.massprops.toml names an unknown rule on line 3.
+  const RunResult run = Run("check bad_config/missing_inertial.urdf");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(Contains(run.err, ".massprops.toml:3:")) << run.err;
+  EXPECT_TRUE(Contains(run.err, "no-such-rule")) << run.err;
+  EXPECT_EQ(run.out, "");
+}
+
+TEST(CliTest, ListRulesNamesEveryRule) {
+  RunResult run = Run("check --list-rules");
+  EXPECT_EQ(run.exit_code, 0);
+  for (const massprops::RuleInfo& rule : massprops::AllRules()) {
+    EXPECT_TRUE(Contains(run.out, rule.id)) << rule.id;
+  }
+  run = Run("check --list-rules --format json");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(json::parse(run.out).size(), massprops::AllRules().size());
+}
+
+TEST(CliTest, WithoutAFileTheBundledExampleIsCheckedAndNamed) {
+  RunResult run = Run("check");
+  // The example has an impossible inertia (an error), so the run fails.
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_TRUE(Contains(run.err, "two_link_arm.urdf")) << run.err;
+  EXPECT_TRUE(Contains(run.out, "two_link_arm.urdf:")) << run.out;
+
+  run = Run("check --format json");
+  EXPECT_EQ(run.exit_code, 1);
+  const json report = json::parse(run.out);
+  ASSERT_EQ(report.at("files").size(), 1u);
+  const std::string path = report["files"][0].at("path");
+  EXPECT_EQ(path.substr(path.size() - std::string("/examples/two_link_arm.urdf").size()),
+            "/examples/two_link_arm.urdf");
+  EXPECT_EQ(report["files"][0].at("models"), json::array({"two_link_arm"}));
+  // The three defects documented in the example (hand-derived there): izz = 0.009 >
+  // ixx + iyy = 0.00854667 on the forearm; kg*mm^2 on the upper arm (radius of gyration
+  // sqrt(11562.5 / 1.5) = 87.8 m for a 0.30 m link); no <inertial> on the camera.
+  EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "forearm")) << run.out;
+  EXPECT_TRUE(HasFinding(report, "units-suspect", "upper_arm")) << run.out;
+  EXPECT_TRUE(HasFinding(report, "inertial-missing", "camera_link")) << run.out;
+  // The valid base and the massless tool frame draw nothing.
+  for (const auto& [rule, link] : RulesAndLinks(report)) {
+    EXPECT_NE(link, "base_link") << rule;
+    EXPECT_NE(link, "tool0") << rule;
+  }
+}
+
+}  // namespace

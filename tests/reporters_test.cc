@@ -1,0 +1,328 @@
+#include "massprops/reporters.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace massprops {
+namespace {
+
+using nlohmann::json;
+
+// A hand-made list of results covering each severity, a location without column, one without
+// line, a NaN value, and a file that could not be read (with a space in its path).
+std::vector<FileResult> SampleResults() {
+  FileResult robot;
+  robot.path = "robot.urdf";
+  robot.format = "urdf";
+  robot.models = {"arm"};
+
+  Finding not_physical;
+  not_physical.rule = "inertia-not-physical";
+  not_physical.severity = Severity::kError;
+  not_physical.model = "arm";
+  not_physical.link = "forearm";
+  not_physical.location = {"robot.urdf", 42, 7};
+  not_physical.message = "principal moments 1, 1, 3 break 3 <= 1 + 1";
+  not_physical.values = {{"principal_min", 1.0}, {"principal_max", 3.0}};
+  robot.findings.push_back(not_physical);
+
+  Finding units;
+  units.rule = "units-suspect";
+  units.severity = Severity::kWarning;
+  units.model = "arm";
+  units.link = "upper_arm";
+  units.location = {"robot.urdf", 30, 0};
+  units.message = "radius of gyration 87.8 m, geometry 0.3 m";
+  units.values = {{"radius_of_gyration", 87.8}, {"ratio", std::nan("")}};
+  robot.findings.push_back(units);
+
+  Finding com;
+  com.rule = "com-outside-geometry";
+  com.severity = Severity::kNote;
+  com.model = "arm";
+  com.link = "gripper";
+  com.location = {"", 0, 0};
+  com.message = "center of mass 1, 0, 0 outside the box";
+  robot.findings.push_back(com);
+
+  FileResult broken;
+  broken.path = "dir/bad file.sdf";
+  ReadError error;
+  error.location = {"dir/bad file.sdf", 3, 5};
+  error.element = "<link>";
+  error.message = "unclosed element";
+  broken.errors.push_back(error);
+  return {robot, broken};
+}
+
+TEST(ReportersTest, ParsesEveryFormatNameAndRejectsOthers) {
+  EXPECT_EQ(ParseReportFormat("text"), ReportFormat::kText);
+  EXPECT_EQ(ParseReportFormat("json"), ReportFormat::kJson);
+  EXPECT_EQ(ParseReportFormat("sarif"), ReportFormat::kSarif);
+  EXPECT_EQ(ParseReportFormat("github"), ReportFormat::kGithub);
+  EXPECT_FALSE(ParseReportFormat("xml").has_value());
+  EXPECT_FALSE(ParseReportFormat("JSON").has_value());
+}
+
+TEST(ReportersTest, SummaryCountsFindingsBySeverityAndReadErrors) {
+  // Hand-counted from SampleResults: one finding of each severity, one read error, two files.
+  const ReportSummary s = Summarize(SampleResults());
+  EXPECT_EQ(s.files, 2);
+  EXPECT_EQ(s.errors, 1);
+  EXPECT_EQ(s.warnings, 1);
+  EXPECT_EQ(s.notes, 1);
+  EXPECT_EQ(s.read_errors, 1);
+}
+
+TEST(ReportersTest, TextHasOneCompilerStyleLinePerFindingAndASummary) {
+  // Expected lines written by hand from the format `file:line:col: severity: message [rule-id]`:
+  // the column is left out when unknown, and the line too; an empty location file falls back to
+  // the checked file's path.
+  const std::string expected =
+      "robot.urdf:42:7: error: principal moments 1, 1, 3 break 3 <= 1 + 1 [inertia-not-physical]\n"
+      "robot.urdf:30: warning: radius of gyration 87.8 m, geometry 0.3 m [units-suspect]\n"
+      "robot.urdf: note: center of mass 1, 0, 0 outside the box [com-outside-geometry]\n"
+      "dir/bad file.sdf:3:5: error: <link>: unclosed element [read-error]\n"
+      "massprops: checked 2 files: 1 error, 1 warning, 1 note, 1 read error\n";
+  EXPECT_EQ(RenderText(SampleResults()), expected);
+}
+
+TEST(ReportersTest, QuietTextLeavesOutTheSummary) {
+  ReportOptions options;
+  options.quiet = true;
+  const std::string text = RenderText(SampleResults(), options);
+  EXPECT_EQ(text.find("massprops: checked"), std::string::npos);
+  EXPECT_NE(text.find("[inertia-not-physical]\n"), std::string::npos);
+}
+
+TEST(ReportersTest, TextWithoutProblemsSaysSoInTheSummary) {
+  FileResult clean;
+  clean.path = "clean.urdf";
+  clean.format = "urdf";
+  clean.models = {"clean"};
+  EXPECT_EQ(RenderText({clean}), "massprops: checked 1 file: 0 errors, 0 warnings, 0 notes\n");
+}
+
+TEST(ReportersTest, ColourTextWrapsSeveritiesInAnsiEscapesAndPlainTextHasNone) {
+  ReportOptions options;
+  options.color = true;
+  const std::string colored = RenderText(SampleResults(), options);
+  // SGR codes (ECMA-48): 1;31 bold red, 1;33 bold yellow, 1;36 bold cyan, 0 reset.
+  EXPECT_NE(colored.find("\x1b[1;31merror:\x1b[0m"), std::string::npos);
+  EXPECT_NE(colored.find("\x1b[1;33mwarning:\x1b[0m"), std::string::npos);
+  EXPECT_NE(colored.find("\x1b[1;36mnote:\x1b[0m"), std::string::npos);
+  EXPECT_EQ(RenderText(SampleResults()).find('\x1b'), std::string::npos);
+}
+
+TEST(ReportersTest, JsonCarriesEveryFieldOfTheDocumentedSchema) {
+  ReportOptions options;
+  options.tool_version = "9.8.7";
+  const json doc = json::parse(RenderJson(SampleResults(), options));
+  EXPECT_EQ(doc.at("version"), "9.8.7");
+  ASSERT_EQ(doc.at("files").size(), 2u);
+
+  const json& robot = doc["files"][0];
+  EXPECT_EQ(robot.at("path"), "robot.urdf");
+  EXPECT_EQ(robot.at("format"), "urdf");
+  EXPECT_EQ(robot.at("models"), json::array({"arm"}));
+  ASSERT_EQ(robot.at("findings").size(), 3u);
+  EXPECT_TRUE(robot.at("errors").empty());
+
+  const json& first = robot["findings"][0];
+  EXPECT_EQ(first.at("rule"), "inertia-not-physical");
+  EXPECT_EQ(first.at("severity"), "error");
+  EXPECT_EQ(first.at("model"), "arm");
+  EXPECT_EQ(first.at("link"), "forearm");
+  EXPECT_EQ(first.at("file"), "robot.urdf");
+  EXPECT_EQ(first.at("line"), 42);
+  EXPECT_EQ(first.at("column"), 7);
+  EXPECT_EQ(first.at("message"), "principal moments 1, 1, 3 break 3 <= 1 + 1");
+  EXPECT_EQ(first.at("values").at("principal_min"), 1.0);
+  EXPECT_EQ(first.at("values").at("principal_max"), 3.0);
+
+  const json& second = robot["findings"][1];
+  EXPECT_EQ(second.at("severity"), "warning");
+  EXPECT_EQ(second.at("column"), 0);  // 0 = unknown, as in SourceLocation
+  EXPECT_EQ(second.at("values").at("radius_of_gyration"), 87.8);
+  EXPECT_TRUE(second.at("values").at("ratio").is_null());  // JSON has no NaN
+  EXPECT_EQ(robot["findings"][2].at("severity"), "note");
+  EXPECT_EQ(robot["findings"][2].at("file"), "robot.urdf");
+
+  const json& broken = doc["files"][1];
+  EXPECT_EQ(broken.at("path"), "dir/bad file.sdf");
+  EXPECT_TRUE(broken.at("format").is_null());
+  EXPECT_TRUE(broken.at("models").empty());
+  ASSERT_EQ(broken.at("errors").size(), 1u);
+  EXPECT_EQ(broken["errors"][0].at("line"), 3);
+  EXPECT_EQ(broken["errors"][0].at("column"), 5);
+  EXPECT_EQ(broken["errors"][0].at("element"), "<link>");
+  EXPECT_EQ(broken["errors"][0].at("message"), "unclosed element");
+
+  const json& summary = doc.at("summary");
+  EXPECT_EQ(summary.at("files"), 2);
+  EXPECT_EQ(summary.at("errors"), 1);
+  EXPECT_EQ(summary.at("warnings"), 1);
+  EXPECT_EQ(summary.at("notes"), 1);
+  EXPECT_EQ(summary.at("read_errors"), 1);
+}
+
+TEST(ReportersTest, JsonOfNoFilesIsAValidEmptyReport) {
+  const json doc = json::parse(RenderJson({}));
+  EXPECT_TRUE(doc.at("files").empty());
+  EXPECT_EQ(doc.at("summary").at("files"), 0);
+}
+
+TEST(ReportersTest, SarifHasTheRequiredFieldsOfVersion210) {
+  // Required properties from the SARIF 2.1.0 specification (OASIS, 2020): sarifLog.version
+  // (3.13.2) and runs (3.13.4); run.tool (3.14.6); toolComponent.name (3.19.8); result.message
+  // (3.27.11); levels "error" | "warning" | "note" (3.27.10); region.startLine >= 1 (3.30.5).
+  ReportOptions options;
+  options.tool_version = "1.2.3";
+  options.information_uri = "https://example.org/massprops";
+  const json log = json::parse(RenderSarif(SampleResults(), options));
+  EXPECT_EQ(log.at("version"), "2.1.0");
+  EXPECT_NE(log.at("$schema").get<std::string>().find("sarif"), std::string::npos);
+  ASSERT_EQ(log.at("runs").size(), 1u);
+  const json& run = log["runs"][0];
+  const json& driver = run.at("tool").at("driver");
+  EXPECT_EQ(driver.at("name"), "massprops");
+  EXPECT_EQ(driver.at("version"), "1.2.3");
+  EXPECT_EQ(driver.at("informationUri"), "https://example.org/massprops");
+
+  // Every rule of AllRules() is described, plus the tool's own read-error and read-warning.
+  const json& rules = driver.at("rules");
+  ASSERT_EQ(rules.size(), AllRules().size() + 2);
+  for (std::size_t i = 0; i < AllRules().size(); ++i) {
+    EXPECT_EQ(rules[i].at("id"), AllRules()[i].id);
+    EXPECT_EQ(rules[i].at("shortDescription").at("text"), AllRules()[i].summary);
+    EXPECT_EQ(rules[i].at("defaultConfiguration").at("level"),
+              ToString(AllRules()[i].default_severity));
+    EXPECT_EQ(rules[i].at("helpUri"), "https://example.org/massprops#" + AllRules()[i].id);
+  }
+
+  const json& results = run.at("results");
+  ASSERT_EQ(results.size(), 4u);
+  std::set<std::string> levels;
+  for (const json& result : results) {
+    const int index = result.at("ruleIndex");
+    EXPECT_EQ(rules.at(index).at("id"), result.at("ruleId"));
+    EXPECT_FALSE(result.at("message").at("text").get<std::string>().empty());
+    levels.insert(result.at("level").get<std::string>());
+  }
+  EXPECT_EQ(levels, (std::set<std::string>{"error", "warning", "note"}));
+
+  // Results come file by file, read errors first: the read error is last here.
+  const json& first = results[0];
+  EXPECT_EQ(first.at("ruleId"), "inertia-not-physical");
+  EXPECT_EQ(first.at("level"), "error");
+  const json& physical = first.at("locations")[0].at("physicalLocation");
+  EXPECT_EQ(physical.at("artifactLocation").at("uri"), "robot.urdf");
+  EXPECT_EQ(physical.at("region").at("startLine"), 42);
+  EXPECT_EQ(physical.at("region").at("startColumn"), 7);
+
+  const json& second = results[1].at("locations")[0].at("physicalLocation");
+  EXPECT_EQ(second.at("region").at("startLine"), 30);
+  EXPECT_FALSE(second.at("region").contains("startColumn"));
+  // Line unknown: no region at all (startLine must be >= 1).
+  EXPECT_FALSE(results[2].at("locations")[0].at("physicalLocation").contains("region"));
+
+  const json& read_error = results[3];
+  EXPECT_EQ(read_error.at("ruleId"), "read-error");
+  EXPECT_EQ(read_error.at("level"), "error");
+  EXPECT_EQ(read_error.at("message").at("text"), "<link>: unclosed element");
+  // RFC 3986: a space in a URI path is percent-encoded as %20.
+  EXPECT_EQ(read_error.at("locations")[0].at("physicalLocation").at("artifactLocation").at("uri"),
+            "dir/bad%20file.sdf");
+}
+
+TEST(ReportersTest, SarifUrisAreRelativeForRelativePathsAndFileUrisForAbsoluteOnes) {
+  FileResult absolute;
+  absolute.path = "/models/arm.urdf";
+  Finding finding;
+  finding.rule = "inertia-not-physical";
+  finding.location = {"/models/arm.urdf", 1, 1};
+  finding.message = "m";
+  absolute.findings.push_back(finding);
+  FileResult dotted = absolute;
+  dotted.path = "./arm.urdf";
+  dotted.findings[0].location.file = "./arm.urdf";
+
+  const json log = json::parse(RenderSarif({absolute, dotted}));
+  const json& results = log["runs"][0]["results"];
+  auto uri = [&](int i) {
+    return results[i]["locations"][0]["physicalLocation"]["artifactLocation"]["uri"];
+  };
+  EXPECT_EQ(uri(0), "file:///models/arm.urdf");
+  EXPECT_EQ(uri(1), "arm.urdf");
+  // No informationUri was given: the optional property is left out rather than invented.
+  EXPECT_FALSE(log["runs"][0]["tool"]["driver"].contains("informationUri"));
+}
+
+TEST(ReportersTest, GithubWritesOneWorkflowCommandPerProblem) {
+  // Format from GitHub's "Workflow commands for GitHub Actions" documentation:
+  // ::error file={name},line={line},col={col},title={title}::{message}; notes use ::notice.
+  const std::string expected =
+      "::error file=robot.urdf,line=42,col=7,title=inertia-not-physical::principal moments 1, 1, "
+      "3 break 3 <= 1 + 1\n"
+      "::warning file=robot.urdf,line=30,title=units-suspect::radius of gyration 87.8 m, "
+      "geometry 0.3 m\n"
+      "::notice file=robot.urdf,title=com-outside-geometry::center of mass 1, 0, 0 outside the "
+      "box\n"
+      "::error file=dir/bad file.sdf,line=3,col=5,title=read-error::<link>: unclosed element\n";
+  EXPECT_EQ(RenderGithub(SampleResults()), expected);
+}
+
+TEST(ReportersTest, GithubEscapesDataAndPropertiesPerTheWorkflowCommandRules) {
+  // The escaping of actions/toolkit (packages/core/src/command.ts): data escapes % CR LF;
+  // properties also escape : and ,.
+  EXPECT_EQ(EscapeGithubData("50%, a:b\r\nc"), "50%25, a:b%0D%0Ac");
+  EXPECT_EQ(EscapeGithubProperty("a,b:c%d\r\ne"), "a%2Cb%3Ac%25d%0D%0Ae");
+
+  FileResult result;
+  result.path = "dir,x/a:b.urdf";
+  Finding finding;
+  finding.rule = "mass-not-positive";
+  finding.severity = Severity::kError;
+  finding.location = {"", 2, 0};
+  finding.message = "mass 0 (100% wrong)\nsecond line";
+  result.findings.push_back(finding);
+  EXPECT_EQ(RenderGithub({result}),
+            "::error file=dir%2Cx/a%3Ab.urdf,line=2,title=mass-not-positive::mass 0 (100%25 "
+            "wrong)%0Asecond line\n");
+}
+
+TEST(ReportersTest, FindingsInAnIncludedFileNameThatFile) {
+  // An SDF <include> can put a finding in another file than the one checked.
+  FileResult world;
+  world.path = "world.sdf";
+  Finding finding;
+  finding.rule = "mass-not-positive";
+  finding.severity = Severity::kError;
+  finding.location = {"models/arm/model.sdf", 12, 3};
+  finding.message = "mass -1";
+  world.findings.push_back(finding);
+  ReportOptions quiet;
+  quiet.quiet = true;
+  EXPECT_EQ(RenderText({world}, quiet),
+            "models/arm/model.sdf:12:3: error: mass -1 [mass-not-positive]\n");
+  EXPECT_EQ(json::parse(RenderJson({world}))["files"][0]["path"], "world.sdf");
+  EXPECT_EQ(json::parse(RenderJson({world}))["files"][0]["findings"][0]["file"],
+            "models/arm/model.sdf");
+}
+
+TEST(ReportersTest, RenderDispatchesOnTheFormat) {
+  const std::vector<FileResult> results = SampleResults();
+  EXPECT_EQ(Render(ReportFormat::kText, results), RenderText(results));
+  EXPECT_EQ(Render(ReportFormat::kJson, results), RenderJson(results));
+  EXPECT_EQ(Render(ReportFormat::kSarif, results), RenderSarif(results));
+  EXPECT_EQ(Render(ReportFormat::kGithub, results), RenderGithub(results));
+}
+
+}  // namespace
+}  // namespace massprops
