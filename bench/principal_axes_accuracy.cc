@@ -57,7 +57,7 @@ Vector3<LongDouble> RandomValidMoments(std::mt19937_64* rng) {
 }
 
 struct Errors {
-  double value = 0;      // max |w - w_ref| / trace
+  double value = 0;       // max |w - w_ref| / trace
   double orthogonal = 0;  // max |V^T V - I|
   double residual = 0;    // max |A V - V diag(w)| / trace
   bool has_vectors = false;

@@ -37,6 +37,13 @@ constexpr const char* kInertiaNearBoundary = "inertia-near-boundary";
 constexpr double kUnitsRatio = 30;
 constexpr double kMaxGyrationRadiusWithoutGeometry = 10;  // metres
 
+// Collision and visual primitives are often simplified (smaller than the body: a cylinder for the
+// motor of a link whose casting reaches farther). The geometry rules therefore allow the body to
+// reach kGeometryMargin times the half-diagonal r of the geometry's bounding box: they flag an
+// inertia only if its mass cannot fit in the sphere of radius kGeometryMargin·r about the box
+// center, and a center of mass only if it is more than (kGeometryMargin − 1)·r outside the box.
+constexpr double kGeometryMargin = 2;
+
 std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
 std::string Format(const char* format, ...) {
   char buffer[1024];
@@ -94,11 +101,6 @@ Eigen::Matrix3d WrittenMatrix(const Inertial& in) {
   Eigen::Matrix3d I;
   I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
   return I;
-}
-
-// Σ = ½·tr(I)·1 − I: the second-moment matrix ∫r·rᵀ dm about the same point.
-Eigen::Matrix3d SecondMoment(const Eigen::Matrix3d& I) {
-  return 0.5 * I.trace() * Eigen::Matrix3d::Identity() - I;
 }
 
 // Half-extents, along the axes of frame B, of a shape whose own axes are R_BG's columns.
@@ -194,7 +196,13 @@ class Checker {
       for (int i : groups_[g].links) group_of_[i] = static_cast<int>(g);
     }
     for (std::size_t i = 0; i < model_.links.size(); ++i) CheckLink(static_cast<int>(i));
-    for (const WeldedGroup& group : groups_) CheckGroup(group);
+    kinematic_only_ = model_.format == Model::Format::kUrdf;
+    for (const Link& link : model_.links) kinematic_only_ = kinematic_only_ && !link.inertial;
+    if (kinematic_only_) {
+      CheckKinematicOnlyModel();
+    } else {
+      for (const WeldedGroup& group : groups_) CheckGroup(group);
+    }
     std::stable_sort(findings_.begin(), findings_.end(), [](const Finding& a, const Finding& b) {
       if (a.location.line != b.location.line) return a.location.line < b.location.line;
       return a.rule < b.rule;
@@ -336,7 +344,7 @@ class Checker {
     }
     if (!(m > 0) || !std::isfinite(m)) return;
 
-    const MassProperties props = LinkMassProperties(link);
+    const MassProperties props = LinkMassProperties(link, model_.format);
     const Eigen::Vector3d& c = props.p_FoScm_F;
     const Eigen::Matrix3d& I_B = props.I_SScm_F;
     const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
@@ -386,7 +394,7 @@ class Checker {
     // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
     // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
     if (valid && !units_flagged) {
-      const double r2 = scale2;
+      const double r2 = kGeometryMargin * kGeometryMargin * scale2;
       const Eigen::Vector3d d = c - o;
       // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
       const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
@@ -397,14 +405,15 @@ class Checker {
         const Eigen::Matrix3d I_shifted =
             I_B - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
         const double shifted_spread = 0.5 * I_shifted.trace() + m * d.squaredNorm();
-        const bool shifted_fits = !c.isZero(0) && IsValid(I_shifted, tol) &&
-                                  shifted_spread - bound <= tol * bound;
+        const bool shifted_fits =
+            !c.isZero(0) && IsValid(I_shifted, tol) && shifted_spread - bound <= tol * bound;
         if (shifted_fits) {
           const Validity vs = Analyze(I_shifted);
           Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
                who + ": the inertia needs more room than the " + std::string(geometry_kind) +
                    " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
-                   " kg·m² about the center o of its bounding box, r = " + Num(std::sqrt(r2)) +
+                   " kg·m² about the center o of its bounding box, r = " + Num(kGeometryMargin) +
+                   " × half-diagonal = " + Num(std::sqrt(r2)) +
                    " m), but taken as the inertia about the link origin and shifted to the center "
                    "of mass " +
                    Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) +
@@ -420,10 +429,11 @@ class Checker {
           Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
                who + ": no mass distribution inside the bounding box of the " +
                    std::string(geometry_kind) + " geometry (center " + Vec(o) + ", half-sizes " +
-                   Vec(h) + " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " +
-                   Num(spread) + " kg·m² exceeds m·r² = " + Num(bound) +
-                   " kg·m² (r = half-diagonal " + Num(std::sqrt(r2)) + " m; ratio " +
-                   Num(spread / bound) + ")",
+                   Vec(h) +
+                   " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
+                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " + Num(kGeometryMargin) +
+                   " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
                {{"spread", spread},
                 {"bound", bound},
                 {"ratio", spread / bound},
@@ -435,12 +445,18 @@ class Checker {
     // com-outside-geometry.
     const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
     const double distance = outside.norm();
-    if (distance > tol * std::sqrt(scale2) && distance > 0) {
+    const double allowed = (kGeometryMargin - 1) * std::sqrt(scale2);
+    if (distance - allowed > tol * std::sqrt(scale2)) {
       Emit(kComOutsideGeometry, link, PoseLocation(link),
            who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
                " m outside the bounding box " + Vec(bounds->box_B.min()) + " to " +
-               Vec(bounds->box_B.max()) + " of its " + geometry_kind + " geometry",
-           {{"com_x", c.x()}, {"com_y", c.y()}, {"com_z", c.z()}, {"distance", distance}});
+               Vec(bounds->box_B.max()) + " of its " + geometry_kind +
+               " geometry, farther than its half-diagonal " + Num(allowed) + " m",
+           {{"com_x", c.x()},
+            {"com_y", c.y()},
+            {"com_z", c.z()},
+            {"distance", distance},
+            {"allowed", allowed}});
     }
   }
 
@@ -456,6 +472,25 @@ class Checker {
     return "";
   }
 
+  // A URDF without any <inertial> describes kinematics only: one finding for the whole model
+  // instead of one per moving body and one per link with collision geometry.
+  void CheckKinematicOnlyModel() {
+    int moving = 0;
+    const WeldedGroup* first = nullptr;
+    for (const WeldedGroup& group : groups_) {
+      if (!group.is_moving) continue;
+      ++moving;
+      if (first == nullptr) first = &group;
+    }
+    if (first == nullptr) return;
+    const Link& root = model_.links[first->links.front()];
+    Emit(kMasslessMovingBody, root, root.location,
+         "the model has no <inertial> at all (a kinematics-only description): its " +
+             std::to_string(moving) + " moving bod" + (moving == 1 ? "y is" : "ies are") +
+             " massless, starting with link '" + root.name + "'; a simulator cannot use it",
+         {{"mass", 0}, {"moving_groups", static_cast<double>(moving)}});
+  }
+
   void CheckGroup(const WeldedGroup& group) {
     const Link& root = model_.links[group.links.front()];
     const CompositeInertia composite = CalcCompositeInertia(model_, group);
@@ -464,7 +499,13 @@ class Checker {
     std::vector<std::string> invalid_members;
     for (int i : group.links) {
       const Link& link = model_.links[i];
-      if (!link.inertial) continue;
+      if (!link.inertial) {
+        if (model_.format == Model::Format::kSdf) {  // SDF default: mass 1, inertia diag(1,1,1).
+          all_massless = false;
+          ++contributing;
+        }
+        continue;
+      }
       if (link.inertial->mass != 0) all_massless = false;
       if (link.inertial->mass != 0 || !WrittenMatrix(*link.inertial).isZero(0)) ++contributing;
     }
@@ -497,7 +538,10 @@ class Checker {
         Emit(kInertialMissing, link, link.location,
              "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
                  (collisions == 1 ? "y" : "ies") +
-                 " but no <inertial>: its mass was probably forgotten (it counts as massless)",
+                 " but no <inertial>: its mass was probably forgotten (" +
+                 (model_.format == Model::Format::kSdf
+                      ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
+                      : "URDF makes it massless)"),
              {{"collisions", collisions}});
       }
     }
@@ -545,6 +589,7 @@ class Checker {
   const CheckOptions& options_;
   std::vector<WeldedGroup> groups_;
   std::vector<int> group_of_;  // link index -> index into groups_
+  bool kinematic_only_ = false;
   std::vector<Finding> findings_;
 };
 

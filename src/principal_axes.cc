@@ -140,12 +140,16 @@ void SolveJacobi(const Matrix3<T>& A, Vector3<T>* w, Matrix3<T>* V) {
   if (V != nullptr) V->setIdentity();
   T values[3] = {s.d[0], s.d[1], s.d[2]};
   if (!IsDiagonal(s)) {
-    const T max_abs = MaxAbsEntry(s);
-    int exponent = 0;
-    if (std::isfinite(max_abs)) {
-      std::frexp(max_abs, &exponent);
-      if (exponent > kJacobiMinExponent<T> && exponent < kJacobiMaxExponent<T>) exponent = 0;
+    bool finite = true;
+    for (int i = 0; i < 3; ++i) finite = finite && std::isfinite(s.d[i]) && std::isfinite(s.o[i]);
+    if (!finite) {  // NaN or infinity (release builds): NaN out, no iterations.
+      w->setConstant(std::numeric_limits<T>::quiet_NaN());
+      if (V != nullptr) V->setConstant(std::numeric_limits<T>::quiet_NaN());
+      return;
     }
+    int exponent = 0;
+    std::frexp(MaxAbsEntry(s), &exponent);
+    if (exponent > kJacobiMinExponent<T> && exponent < kJacobiMaxExponent<T>) exponent = 0;
     if (exponent != 0) {
       for (int i = 0; i < 3; ++i) {
         s.d[i] = std::ldexp(s.d[i], -exponent);
@@ -223,23 +227,24 @@ bool Deflate(const Sym3<T>& c, T mu, Vector3<T>* mu_out, Matrix3<T>* V) {
     n = n12;
   }
   if (!(n > T(0) && n <= std::numeric_limits<T>::max())) return false;
-  v *= T(1) / sqrt(n);
-  // u = v x e_k, with e_k the coordinate axis least aligned with v: |u|^2 = 1 - v_k^2 >= 2/3.
+  // v is not normalized yet (|v|^2 = n): the normalizations below run while C u and C w are formed.
+  // u = v x e_k, with e_k the coordinate axis least aligned with v: |u|^2 = n - v_k^2 >= 2n/3.
   const T ax = abs(v[0]), ay = abs(v[1]), az = abs(v[2]);
   Vector3<T> u;
-  T vk;
+  T nu;
   if (ax <= ay && ax <= az) {
     u = Vector3<T>(T(0), v[2], -v[1]);
-    vk = v[0];
+    nu = v[1] * v[1] + v[2] * v[2];
   } else if (ay <= az) {
     u = Vector3<T>(-v[2], T(0), v[0]);
-    vk = v[1];
+    nu = v[0] * v[0] + v[2] * v[2];
   } else {
     u = Vector3<T>(v[1], -v[0], T(0));
-    vk = v[2];
+    nu = v[0] * v[0] + v[1] * v[1];
   }
-  u *= T(1) / sqrt(T(1) - vk * vk);
-  const Vector3<T> w = Cross(v, u);
+  const Vector3<T> w = Cross(v, u);  // |w|^2 = n * nu.
+  const T rv = T(1) / sqrt(n);
+  const T ru = T(1) / sqrt(nu);
   auto times_c = [&c](const Vector3<T>& x) {
     return Vector3<T>(c.d[0] * x[0] + c.o[2] * x[1] + c.o[1] * x[2],
                       c.o[2] * x[0] + c.d[1] * x[1] + c.o[0] * x[2],
@@ -247,13 +252,15 @@ bool Deflate(const Sym3<T>& c, T mu, Vector3<T>* mu_out, Matrix3<T>* V) {
   };
   const Vector3<T> cu = times_c(u);
   const Vector3<T> cw = times_c(w);
-  const T m00 = u.dot(cu);
-  const T m01 = w.dot(cu);
-  const T m11 = w.dot(cw);
+  const T ru2 = ru * ru;
+  const T m00 = u.dot(cu) * ru2;
+  const T m01 = w.dot(cu) * (ru2 * rv);
+  const T m11 = w.dot(cw) * (ru2 * (rv * rv));
   // The 2x2 [[m00, m01], [m01, m11]]: eigenvalues (m00 + m11 -+ h)/2 with h = sqrt(delta^2 +
   // 4 m01^2); all entries are O(1) here, so the absolute error is O(u).
   const T delta = m11 - m00;
-  const T h = sqrt(delta * delta + T(4) * m01 * m01);
+  const T two_m01 = m01 + m01;
+  const T h = sqrt(delta * delta + two_m01 * two_m01);
   const T mean = (m00 + m11) / T(2);
   const T lo = mean - h / T(2);
   const T hi = mean + h / T(2);
@@ -269,18 +276,22 @@ bool Deflate(const Sym3<T>& c, T mu, Vector3<T>* mu_out, Matrix3<T>* V) {
   // not cancel: (|delta| + h, -2 m01) when delta >= 0, (-2 m01, |delta| + h) otherwise.
   const T x = abs(delta) + h;
   T a = T(1), b = T(0);
-  if (x > T(0)) {
-    const T scale = T(1) / sqrt(T(2) * h * x);
+  const T norm2 = x * x + two_m01 * two_m01;
+  if (norm2 > T(0)) {
+    const T scale = T(1) / sqrt(norm2);
     if (delta >= T(0)) {
       a = x * scale;
-      b = T(-2) * m01 * scale;
+      b = -two_m01 * scale;
     } else {
-      a = T(-2) * m01 * scale;
+      a = -two_m01 * scale;
       b = x * scale;
     }
   }
-  const Vector3<T> e_lo = a * u + b * w;
-  const Vector3<T> e_hi = a * w - b * u;  // e_lo turned by +90 degrees in the (u, w) plane.
+  // Unit u = u * ru, unit w = w * ru * rv.
+  const T au = a * ru, bu = b * ru, aw = a * ru * rv, bw = b * ru * rv;
+  const Vector3<T> e_lo = au * u + bw * w;
+  const Vector3<T> e_hi = aw * w - bu * u;  // e_lo turned by +90 degrees in the (u, w) plane.
+  v *= rv;
   // (v, u, w) is right-handed, hence so are (v, e_lo, e_hi) and its cyclic shift (e_lo, e_hi, v).
   if (iso_is_max) {
     V->col(0) = e_lo;
@@ -307,8 +318,15 @@ bool ClosedForm(const Sym3<T>& a, Mode mode, Vector3<T>* values, Matrix3<T>* V) 
   constexpr T kSqrt3 = T(1.7320508075688772935274463415058723669L);
   constexpr T kMinP2 = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
   constexpr T kMaxP2 = std::numeric_limits<T>::max() / T(64);
-  const T m = (a.d[0] + a.d[1] + a.d[2]) / T(3);
-  const T b0 = a.d[0] - m, b1 = a.d[1] - m, b2 = a.d[2] - m;
+  T m = (a.d[0] + a.d[1] + a.d[2]) / T(3);
+  T b0 = a.d[0] - m, b1 = a.d[1] - m, b2 = a.d[2] - m;
+  // The rounding of m leaves trace(B) = O(u m), which the cubic (written for trace 0) would turn
+  // into an error of O(u m / y) when the spread p is tiny next to m (a near-sphere): correct once.
+  const T correction = (b0 + b1 + b2) / T(3);
+  m += correction;
+  b0 -= correction;
+  b1 -= correction;
+  b2 -= correction;
   const T off2 = a.o[0] * a.o[0] + a.o[1] * a.o[1] + a.o[2] * a.o[2];
   const T p2 = (b0 * b0 + b1 * b1 + b2 * b2 + T(2) * off2) / T(6);
   if (!(p2 >= kMinP2 && p2 <= kMaxP2)) return false;
@@ -322,12 +340,17 @@ bool ClosedForm(const Sym3<T>& a, Mode mode, Vector3<T>* values, Matrix3<T>* V) 
   const T s = std::min(T(1), std::abs(half_det));
   const T x = IsolatedChebyshevRoot(s);
   Vector3<T> mu;
-  if (mode == Mode::kClosedFormValues) {
-    const T y = kSqrt3 * sqrt(std::max(T(0), T(1) - x * x));
+  // y = sin(phi) measures the gap between the two other eigenvalues (it is (hi - lo)/(2 sqrt(3))
+  // in units of p); the closed form gives them with an error of about u/y, so below
+  // kClusterThreshold they come from the deflation instead (error O(u)).
+  constexpr T kClusterThreshold = T(1e-3);
+  const T y = sqrt(std::max(T(0), T(1) - x * x));
+  if (mode == Mode::kClosedFormValues && y >= kClusterThreshold) {
+    const T y3 = kSqrt3 * y;
     if (half_det >= T(0)) {
-      mu = Vector3<T>(-x - y, -x + y, T(2) * x);
+      mu = Vector3<T>(-x - y3, -x + y3, T(2) * x);
     } else {
-      mu = Vector3<T>(T(-2) * x, x - y, x + y);
+      mu = Vector3<T>(T(-2) * x, x - y3, x + y3);
     }
   } else {
     const T iso = half_det >= T(0) ? T(2) * x : T(-2) * x;

@@ -6,7 +6,7 @@
 namespace massprops {
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json;
 
 // ANSI SGR sequences used by the text reporter.
 constexpr const char* kBold = "\x1b[1m";

@@ -32,6 +32,7 @@
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace massprops {
@@ -66,6 +67,7 @@ struct Node {
   std::string attached_to;      // kFrame.
   std::string placement_frame;  // kModel.
   std::string canonical_link;   // kModel.
+  bool is_static = false;       // kModel: <static>true</static> (of the model or its <include>).
   const XMLElement* element = nullptr;
   SourceLocation location;
   int state = 0;  // 0 = unresolved, 1 = resolving, 2 = resolved.
@@ -282,10 +284,12 @@ class Reader {
     return X;
   }
 
-  /// relative_to of a pose element (SDF < 1.7: its "frame" attribute, as libsdformat converts).
+  /// relative_to of a pose element. SDF < 1.7: libsdformat's 1.6->1.7 converter moves the
+  /// "frame" attribute to relative_to, and keeps a relative_to already written (honored too).
   static std::string RelativeTo(const XMLElement* pose, const Version& v) {
     if (pose == nullptr) return "";
-    return v.AtLeast(1, 7) ? Attr(pose, "relative_to") : Attr(pose, "frame");
+    if (!v.AtLeast(1, 7) && pose->Attribute("frame") != nullptr) return Attr(pose, "frame");
+    return Attr(pose, "relative_to");
   }
 
   // ------------------------------------------------------------ graph building
@@ -319,7 +323,7 @@ class Reader {
       } else if (tag == "include") {
         const int m = ReadInclude(c, kWorld, ctx);
         if (m >= 0) top_models_.push_back(m);
-      } else if (tag == "frame" && ctx.version.AtLeast(1, 7)) {
+      } else if (tag == "frame") {
         ReadFrame(c, kWorld, ctx);
       } else if (tag == "joint") {
         Warning(ctx.file, c, "<joint> '" + Attr(c, "name") + "'",
@@ -339,7 +343,7 @@ class Reader {
     std::string name = Attr(model, "name");
     const XMLElement* pose = model->FirstChildElement("pose");
     const Version* pose_version = &ctx.version;
-    std::string placement = ctx.version.AtLeast(1, 8) ? Attr(model, "placement_frame") : "";
+    std::string placement = Attr(model, "placement_frame");
     if (include != nullptr) {
       if (const XMLElement* n = include->FirstChildElement("name")) name = Text(n);
       if (const XMLElement* p = include->FirstChildElement("pose")) {
@@ -369,7 +373,16 @@ class Reader {
     node.X_raw = ParsePose(pose, pose_ctx, "<pose> of <model> '" + name + "'");
     node.relative_to = RelativeTo(pose, *pose_version);
     node.placement_frame = placement;
-    node.canonical_link = ctx.version.AtLeast(1, 7) ? Attr(model, "canonical_link") : "";
+    node.canonical_link = Attr(model, "canonical_link");
+    // <static> of the <include> overrides the model's own; SDF booleans are "true"/"1".
+    const XMLElement* static_element = model->FirstChildElement("static");
+    if (include != nullptr && include->FirstChildElement("static") != nullptr) {
+      static_element = include->FirstChildElement("static");
+    }
+    if (static_element != nullptr) {
+      const std::string value = Text(static_element);
+      node.is_static = value == "true" || value == "1";
+    }
     const int index = AddNode(std::move(node), ctx);
     if (index < 0) return index;
     if (scope != kWorld) nodes_[scope].members.push_back(index);
@@ -382,7 +395,7 @@ class Reader {
         ReadLink(c, index, ctx);
       } else if (tag == "joint") {
         ReadJoint(c, index, ctx);
-      } else if (tag == "frame" && ctx.version.AtLeast(1, 7)) {
+      } else if (tag == "frame") {
         ReadFrame(c, index, ctx);
       } else if (tag == "model") {
         ReadModel(c, index, inner, nullptr);
@@ -925,6 +938,7 @@ void Reader::BuildModel(int top) {
   const std::string prefix = nodes_[top].name + "::";
   model.name = nodes_[top].name;
   model.location = nodes_[top].location;
+  model.is_static = nodes_[top].is_static;
   auto local_name = [&](int i) { return nodes_[i].name.substr(prefix.size()); };
   auto inside = [&](int i) { return nodes_[i].name.rfind(prefix, 0) == 0; };
 
@@ -945,6 +959,10 @@ void Reader::BuildModel(int top) {
     ReadLinkContents(i, top, *X, &link);
     model.links.push_back(std::move(link));
   }
+  // Every frame is resolved, used or not, so that cycles and dangling names are reported as
+  // libsdformat reports them.
+  for (int i = top; i < end; ++i) Resolve(i, 0);
+  if (result_.errors.size() != errors_before) return;
   std::optional<Pose> X_WT = PoseInScope(top, kWorld, 0);
   if (X_WT) frames.X_WM = *X_WT;
   for (int i = top; i < end; ++i) {
@@ -983,12 +1001,11 @@ void Reader::BuildModel(int top) {
     const Eigen::Vector3d axis_E =
         Vector(xyz, Eigen::Vector3d::UnitZ(), ctx, "<axis><xyz> of " + what);
     int expressed_in = i;  // The joint frame.
-    if (n.version.AtLeast(1, 7)) {
-      const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
-      if (!e.empty()) expressed_in = Lookup(e, n.scope);
-    } else if (axis != nullptr) {
-      const XMLElement* flag = axis->FirstChildElement("use_parent_model_frame");
-      const std::string f = Text(flag);
+    const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
+    if (!e.empty()) expressed_in = Lookup(e, n.scope);
+    if (!n.version.AtLeast(1, 7) && axis != nullptr) {
+      // The 1.6->1.7 converter maps use_parent_model_frame=true to expressed_in="__model__".
+      const std::string f = Text(axis->FirstChildElement("use_parent_model_frame"));
       if (n.axis_in_model_frame_1_4 || f == "true" || f == "1" || f == "True" || f == "TRUE") {
         expressed_in = n.scope;
       }
@@ -1009,11 +1026,13 @@ void Reader::BuildModel(int top) {
     joint.axis = axis_C;
     model.joints.push_back(std::move(joint));
   }
-  // Root: the canonical link if it is no joint's child, else the first link that is none.
-  auto is_child = [&](const std::string& name) {
-    return std::any_of(model.joints.begin(), model.joints.end(),
-                       [&](const Joint& j) { return j.child == name; });
-  };
+  // Root: the canonical link if it is no joint's child, else the first link that is none. Joints
+  // to the world do not count (they fix the model in the world; its tree still starts there).
+  std::unordered_set<std::string> children;
+  for (const Joint& j : model.joints) {
+    if (j.parent != "world") children.insert(j.child);
+  }
+  auto is_child = [&](const std::string& name) { return children.count(name) > 0; };
   const int canonical = AttachedLink(top, 0);
   if (canonical >= 0 && inside(canonical) && !is_child(local_name(canonical))) {
     model.root_link = local_name(canonical);

@@ -150,9 +150,16 @@ std::vector<WeldedGroup> FindWeldedGroups(const Model& model) {
   return groups;
 }
 
-MassProperties LinkMassProperties(const Link& link) {
+MassProperties LinkMassProperties(const Link& link, Model::Format format) {
   MassProperties props;
-  if (!link.inertial) return props;
+  if (!link.inertial) {
+    if (format == Model::Format::kSdf) {
+      // SDF specification (link.sdf, inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
+      props.mass = 1;
+      props.I_SScm_F = Eigen::Matrix3d::Identity();
+    }
+    return props;
+  }
   const Inertial& inertial = *link.inertial;
   const Eigen::Matrix3d& R_BBi = inertial.X_BBi.R_AB;
   props.mass = inertial.mass;
@@ -163,8 +170,8 @@ MassProperties LinkMassProperties(const Link& link) {
   return props;
 }
 
-SpatialInertia<double> LinkSpatialInertia(const Link& link) {
-  const MassProperties props = LinkMassProperties(link);
+SpatialInertia<double> LinkSpatialInertia(const Link& link, Model::Format format) {
+  const MassProperties props = LinkMassProperties(link, format);
   CompositeInertia composite;
   composite.mass = props.mass;
   composite.p_RoScm_R = props.p_FoScm_F;
@@ -195,7 +202,7 @@ CompositeInertia CalcCompositeInertia(const Model& model, const WeldedGroup& gro
   std::vector<MassProperties> parts;
   parts.reserve(group.links.size());
   for (std::size_t k = 0; k < group.links.size(); ++k) {
-    const MassProperties props_L = LinkMassProperties(model.links[group.links[k]]);
+    const MassProperties props_L = LinkMassProperties(model.links[group.links[k]], model.format);
     if (props_L.mass == 0 && props_L.I_SScm_F.isZero(0)) continue;
     const Pose& X = group.X_RL[k];
     MassProperties props_R;
@@ -257,7 +264,7 @@ ModelCompositeInertia CalcModelCompositeInertia(const Model& model) {
       result.unreachable_links.push_back(static_cast<int>(i));
       continue;
     }
-    const MassProperties props_L = LinkMassProperties(model.links[i]);
+    const MassProperties props_L = LinkMassProperties(model.links[i], model.format);
     if (props_L.mass == 0 && props_L.I_SScm_F.isZero(0)) continue;
     const Pose& X = X_WL[i];
     MassProperties props_W;

@@ -41,8 +41,8 @@ std::string ReadAll(const std::string& path) {
 }
 
 // Runs `sh -c "cd DIR && [ENV] massprops ARGS [< STDIN]"` and collects its exit code and output.
-RunResult Run(const std::string& args, const std::string& stdin_file = "",
-              const std::string& env = "", const std::string& dir = kCliData) {
+RunResult RunTool(const std::string& args, const std::string& stdin_file = "",
+                  const std::string& env = "", const std::string& dir = kCliData) {
   const std::string err_path =
       ::testing::TempDir() + "massprops_cli_test_stderr_" + std::to_string(getpid()) + ".txt";
   std::string command = "cd " + Quote(dir) + " && " + env + " " + Quote(kTool) + " " + args;
@@ -95,17 +95,17 @@ bool HasFinding(const json& report, const std::string& rule, const std::string& 
 }
 
 TEST(CliTest, VersionPrintsTheProjectVersionAndExitsZero) {
-  const RunResult run = Run("--version");
+  const RunResult run = RunTool("--version");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(run.out, std::string("massprops ") + MASSPROPS_VERSION + "\n");
 }
 
 TEST(CliTest, HelpDescribesTheCheckCommandAndExitsZero) {
-  RunResult run = Run("--help");
+  RunResult run = RunTool("--help");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_TRUE(Contains(run.out, "check")) << run.out;
   EXPECT_TRUE(Contains(run.out, "Exit codes")) << run.out;
-  run = Run("check --help");
+  run = RunTool("check --help");
   EXPECT_EQ(run.exit_code, 0);
   for (const char* option : {"--format", "--fail-on", "--disable", "--severity", "--tolerance",
                              "--config", "--model-path", "--quiet", "--list-rules", "--color"}) {
@@ -114,34 +114,34 @@ TEST(CliTest, HelpDescribesTheCheckCommandAndExitsZero) {
 }
 
 TEST(CliTest, UsageErrorsExitWithTwo) {
-  EXPECT_EQ(Run("").exit_code, 2);  // a subcommand is required
-  EXPECT_EQ(Run("frobnicate").exit_code, 2);
-  EXPECT_EQ(Run("check --format xml clean.urdf").exit_code, 2);
-  EXPECT_EQ(Run("check --fail-on fatal clean.urdf").exit_code, 2);
-  EXPECT_EQ(Run("check --tolerance 2 clean.urdf").exit_code, 2);
-  EXPECT_EQ(Run("check --no-such-option clean.urdf").exit_code, 2);
-  const RunResult unknown_rule = Run("check --disable no-such-rule clean.urdf");
+  EXPECT_EQ(RunTool("").exit_code, 2);  // a subcommand is required
+  EXPECT_EQ(RunTool("frobnicate").exit_code, 2);
+  EXPECT_EQ(RunTool("check --format xml clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --fail-on fatal clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --tolerance 2 clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --no-such-option clean.urdf").exit_code, 2);
+  const RunResult unknown_rule = RunTool("check --disable no-such-rule clean.urdf");
   EXPECT_EQ(unknown_rule.exit_code, 2);
   EXPECT_TRUE(Contains(unknown_rule.err, "no-such-rule")) << unknown_rule.err;
-  EXPECT_EQ(Run("check --severity inertial-missing clean.urdf").exit_code, 2);
-  EXPECT_EQ(Run("check --severity inertial-missing=loud clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --severity inertial-missing clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --severity inertial-missing=loud clean.urdf").exit_code, 2);
   EXPECT_TRUE(unknown_rule.out.empty());
 }
 
 TEST(CliTest, ACleanModelExitsZeroAndReportsNothing) {
-  RunResult run = Run("check clean.urdf");
+  RunResult run = RunTool("check clean.urdf");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_EQ(run.out, "massprops: checked 1 file: 0 errors, 0 warnings, 0 notes\n");
-  run = Run("check --quiet clean.urdf");
+  run = RunTool("check --quiet clean.urdf");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(run.out, "");
-  run = Run("check clean.sdf");
+  run = RunTool("check clean.sdf");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_EQ(run.out, "massprops: checked 1 file: 0 errors, 0 warnings, 0 notes\n");
 }
 
 TEST(CliTest, AnImpossibleInertiaExitsOneWithAFileLineDiagnostic) {
-  const RunResult run = Run("check not_physical.urdf");
+  const RunResult run = RunTool("check not_physical.urdf");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   // The arm's inertia is the second <inertial> of the fixture; the finding points at the
   // <inertial> or at its <inertia>.
@@ -157,7 +157,7 @@ TEST(CliTest, AnImpossibleInertiaExitsOneWithAFileLineDiagnostic) {
 }
 
 TEST(CliTest, JsonOutputParsesAndNamesRuleLinkAndLine) {
-  const RunResult run = Run("check --format json not_physical.urdf");
+  const RunResult run = RunTool("check --format json not_physical.urdf");
   EXPECT_EQ(run.exit_code, 1);
   const json report = json::parse(run.out);
   EXPECT_EQ(report.at("version"), MASSPROPS_VERSION);
@@ -178,40 +178,41 @@ TEST(CliTest, JsonOutputParsesAndNamesRuleLinkAndLine) {
 
 TEST(CliTest, FailOnDecidesWhetherWarningsFailTheRun) {
   // missing_inertial.urdf has one warning (inertial-missing) and nothing else.
-  RunResult run = Run("check missing_inertial.urdf");
+  RunResult run = RunTool("check missing_inertial.urdf");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_TRUE(Contains(run.out, ": warning: ")) << run.out;
   EXPECT_TRUE(Contains(run.out, "[inertial-missing]")) << run.out;
-  EXPECT_EQ(Run("check --fail-on warning missing_inertial.urdf").exit_code, 1);
-  EXPECT_EQ(Run("check --fail-on note missing_inertial.urdf").exit_code, 1);
-  EXPECT_EQ(Run("check --fail-on error missing_inertial.urdf").exit_code, 0);
+  EXPECT_EQ(RunTool("check --fail-on warning missing_inertial.urdf").exit_code, 1);
+  EXPECT_EQ(RunTool("check --fail-on note missing_inertial.urdf").exit_code, 1);
+  EXPECT_EQ(RunTool("check --fail-on error missing_inertial.urdf").exit_code, 0);
 }
 
 TEST(CliTest, RulesCanBeDisabledOrHaveTheirSeverityChanged) {
-  RunResult run = Run("check --fail-on warning --disable inertial-missing missing_inertial.urdf");
+  RunResult run =
+      RunTool("check --fail-on warning --disable inertial-missing missing_inertial.urdf");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_FALSE(Contains(run.out, "[inertial-missing]")) << run.out;
-  EXPECT_EQ(Run("check --severity inertial-missing=error missing_inertial.urdf").exit_code, 1);
-  run = Run("check --fail-on warning --severity inertial-missing=note missing_inertial.urdf");
+  EXPECT_EQ(RunTool("check --severity inertial-missing=error missing_inertial.urdf").exit_code, 1);
+  run = RunTool("check --fail-on warning --severity inertial-missing=note missing_inertial.urdf");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_TRUE(Contains(run.out, ": note: ")) << run.out;
-  EXPECT_EQ(Run("check --fail-on warning --severity inertial-missing=off missing_inertial.urdf")
+  EXPECT_EQ(RunTool("check --fail-on warning --severity inertial-missing=off missing_inertial.urdf")
                 .exit_code,
             0);
 }
 
 TEST(CliTest, ADashReadsTheModelFromStandardInput) {
-  const RunResult run = Run("check -", kCliData + "/not_physical.urdf");
+  const RunResult run = RunTool("check -", kCliData + "/not_physical.urdf");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_TRUE(Contains(run.out, "<stdin>:")) << run.out;
   EXPECT_TRUE(Contains(run.out, "[inertia-not-physical]")) << run.out;
-  EXPECT_EQ(Run("check -", kCliData + "/clean.urdf").exit_code, 0);
+  EXPECT_EQ(RunTool("check -", kCliData + "/clean.urdf").exit_code, 0);
 }
 
 TEST(CliTest, AFolderIsSearchedRecursivelyForModelsOnly) {
   // tree/ holds a.urdf (clean), sub/b.sdf (clean), sub/robot.xml (a <robot>: not physical),
   // launch.xml (root <launch>) and notes.txt; the last two are skipped.
-  const RunResult run = Run("check --format json tree");
+  const RunResult run = RunTool("check --format json tree");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   const json report = json::parse(run.out);
   std::vector<std::string> paths;
@@ -224,7 +225,7 @@ TEST(CliTest, AFolderIsSearchedRecursivelyForModelsOnly) {
 }
 
 TEST(CliTest, AMissingFileExitsTwoAndTheOtherFilesAreStillReported) {
-  RunResult run = Run("check --format json no_such_file.urdf clean.urdf");
+  RunResult run = RunTool("check --format json no_such_file.urdf clean.urdf");
   EXPECT_EQ(run.exit_code, 2);
   const json report = json::parse(run.out);
   ASSERT_EQ(report.at("files").size(), 2u);
@@ -236,7 +237,7 @@ TEST(CliTest, AMissingFileExitsTwoAndTheOtherFilesAreStillReported) {
   EXPECT_EQ(report.at("summary").at("read_errors"), 1);
 
   // A read error outranks findings: exit 2 even with an error finding in the other file.
-  run = Run("check no_such_file.urdf not_physical.urdf");
+  run = RunTool("check no_such_file.urdf not_physical.urdf");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(Contains(run.out, "no_such_file.urdf")) << run.out;
   EXPECT_TRUE(Contains(run.out, "[read-error]")) << run.out;
@@ -244,7 +245,7 @@ TEST(CliTest, AMissingFileExitsTwoAndTheOtherFilesAreStillReported) {
 }
 
 TEST(CliTest, AMalformedFileIsAReadErrorWithALine) {
-  const RunResult run = Run("check malformed.urdf");
+  const RunResult run = RunTool("check malformed.urdf");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(Contains(run.out, "malformed.urdf:")) << run.out;
   EXPECT_TRUE(Contains(run.out, ": error: ")) << run.out;
@@ -252,7 +253,7 @@ TEST(CliTest, AMalformedFileIsAReadErrorWithALine) {
 }
 
 TEST(CliTest, SarifOutputHasTheRequiredFieldsAndRelativeUris) {
-  const RunResult run = Run("check --format sarif not_physical.urdf");
+  const RunResult run = RunTool("check --format sarif not_physical.urdf");
   EXPECT_EQ(run.exit_code, 1);
   const json log = json::parse(run.out);
   EXPECT_EQ(log.at("version"), "2.1.0");
@@ -275,7 +276,7 @@ TEST(CliTest, SarifOutputHasTheRequiredFieldsAndRelativeUris) {
 }
 
 TEST(CliTest, GithubOutputIsWorkflowCommands) {
-  const RunResult run = Run("check --format github not_physical.urdf");
+  const RunResult run = RunTool("check --format github not_physical.urdf");
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.out.rfind("::error file=not_physical.urdf,line=", 0), 0u) << run.out;
   EXPECT_TRUE(Contains(run.out, ",title=inertia-not-physical::")) << run.out;
@@ -283,32 +284,32 @@ TEST(CliTest, GithubOutputIsWorkflowCommands) {
 
 TEST(CliTest, ColourOnlyWhenAskedOrOnATerminal) {
   // The tool's stdout is a pipe here, so auto means no colour.
-  EXPECT_FALSE(Contains(Run("check not_physical.urdf").out, "\x1b["));
-  EXPECT_TRUE(Contains(Run("check --color always not_physical.urdf").out, "\x1b["));
+  EXPECT_FALSE(Contains(RunTool("check not_physical.urdf").out, "\x1b["));
+  EXPECT_TRUE(Contains(RunTool("check --color always not_physical.urdf").out, "\x1b["));
   EXPECT_TRUE(
-      Contains(Run("check --color always not_physical.urdf", "", "NO_COLOR=1").out, "\x1b["));
-  EXPECT_FALSE(Contains(Run("check --color never not_physical.urdf").out, "\x1b["));
+      Contains(RunTool("check --color always not_physical.urdf", "", "NO_COLOR=1").out, "\x1b["));
+  EXPECT_FALSE(Contains(RunTool("check --color never not_physical.urdf").out, "\x1b["));
 }
 
 TEST(CliTest, AConfigFileFoundUpwardAppliesAndTheCommandLineWins) {
   // configured/.massprops.toml says fail-on = "warning"; the model there has one warning.
-  EXPECT_EQ(Run("check configured/missing_inertial.urdf").exit_code, 1);
-  EXPECT_EQ(Run("check --fail-on error configured/missing_inertial.urdf").exit_code, 0);
+  EXPECT_EQ(RunTool("check configured/missing_inertial.urdf").exit_code, 1);
+  EXPECT_EQ(RunTool("check --fail-on error configured/missing_inertial.urdf").exit_code, 0);
   // The same model outside that folder: the default fail level.
-  EXPECT_EQ(Run("check missing_inertial.urdf").exit_code, 0);
+  EXPECT_EQ(RunTool("check missing_inertial.urdf").exit_code, 0);
 }
 
 TEST(CliTest, AnExplicitConfigReplacesTheOneFoundUpward) {
   const RunResult run =
-      Run("check --config disable_missing_inertial.toml configured/missing_inertial.urdf");
+      RunTool("check --config disable_missing_inertial.toml configured/missing_inertial.urdf");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_FALSE(Contains(run.out, "[inertial-missing]")) << run.out;
-  EXPECT_EQ(Run("check --config no_such_config.toml clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --config no_such_config.toml clean.urdf").exit_code, 2);
 }
 
 TEST(CliTest, ABadConfigFileExitsTwoNamingItsLine) {
   // bad_config/.massprops.toml names an unknown rule on line 3.
-  const RunResult run = Run("check bad_config/missing_inertial.urdf");
+  const RunResult run = RunTool("check bad_config/missing_inertial.urdf");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_TRUE(Contains(run.err, ".massprops.toml:3:")) << run.err;
   EXPECT_TRUE(Contains(run.err, "no-such-rule")) << run.err;
@@ -316,24 +317,24 @@ TEST(CliTest, ABadConfigFileExitsTwoNamingItsLine) {
 }
 
 TEST(CliTest, ListRulesNamesEveryRule) {
-  RunResult run = Run("check --list-rules");
+  RunResult run = RunTool("check --list-rules");
   EXPECT_EQ(run.exit_code, 0);
   for (const massprops::RuleInfo& rule : massprops::AllRules()) {
     EXPECT_TRUE(Contains(run.out, rule.id)) << rule.id;
   }
-  run = Run("check --list-rules --format json");
+  run = RunTool("check --list-rules --format json");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(json::parse(run.out).size(), massprops::AllRules().size());
 }
 
 TEST(CliTest, WithoutAFileTheBundledExampleIsCheckedAndNamed) {
-  RunResult run = Run("check");
+  RunResult run = RunTool("check");
   // The example has an impossible inertia (an error), so the run fails.
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_TRUE(Contains(run.err, "two_link_arm.urdf")) << run.err;
   EXPECT_TRUE(Contains(run.out, "two_link_arm.urdf:")) << run.out;
 
-  run = Run("check --format json");
+  run = RunTool("check --format json");
   EXPECT_EQ(run.exit_code, 1);
   const json report = json::parse(run.out);
   ASSERT_EQ(report.at("files").size(), 1u);
@@ -343,7 +344,7 @@ TEST(CliTest, WithoutAFileTheBundledExampleIsCheckedAndNamed) {
   EXPECT_EQ(report["files"][0].at("models"), json::array({"two_link_arm"}));
   // The three defects documented in the example (hand-derived there): izz = 0.009 >
   // ixx + iyy = 0.00854667 on the forearm; kg*mm^2 on the upper arm (radius of gyration
-  // sqrt(11562.5 / 1.5) = 87.8 m for a 0.30 m link); no <inertial> on the camera.
+  // sqrt(tr(I) / 2m) = sqrt(23750 / 3) = 89.0 m for a 0.30 m link); no <inertial> on the camera.
   EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "forearm")) << run.out;
   EXPECT_TRUE(HasFinding(report, "units-suspect", "upper_arm")) << run.out;
   EXPECT_TRUE(HasFinding(report, "inertial-missing", "camera_link")) << run.out;

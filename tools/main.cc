@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -20,6 +21,7 @@
 #include <system_error>
 #include <vector>
 
+#include "commands.h"
 #include "massprops/checks.h"
 #include "massprops/config.h"
 #include "massprops/model.h"
@@ -391,6 +393,11 @@ int main(int argc, char** argv) {
   check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
   check->add_flag("--list-rules", args.list_rules, "List the rules and their default severities");
 
+  // Subcommands defined in other files (tools/commands.h) set `run` when chosen.
+  std::function<int()> run;
+  massprops::cli::AddReportCommands(app, &run);
+  massprops::cli::AddFixCommands(app, &run);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -402,6 +409,7 @@ int main(int argc, char** argv) {
   args.tolerance_given = tolerance->count() > 0;
 
   try {
+    if (run) return run();
     return RunCheck(args, argc > 0 ? argv[0] : nullptr);
   } catch (const UsageError& error) {
     std::cerr << "massprops: error: " << error.message << "\n";

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "massprops/model.h"
+#include "massprops/repair.h"
 
 namespace massprops {
 
@@ -32,6 +33,9 @@ struct Finding {
   /// Named measured values behind the message (e.g. {"mass", 0}, {"principal_min", -0.1}), for
   /// machine-readable output.
   std::vector<std::pair<std::string, double>> values;
+  /// The remedy `massprops fix` would apply (set by AttachRepairs in repair.h; CheckModel leaves
+  /// it empty).
+  std::optional<Repair> repair;
 };
 
 /// What a rule is: its id, default severity, whether it runs by default, and a one-line summary.

@@ -97,6 +97,9 @@ struct Model {
   std::vector<Joint> joints;  ///< In file order.
   std::string root_link;      ///< The link that is no joint's child (URDF: urdfdom's root).
   SourceLocation location;    ///< The <robot>/<model> element.
+  /// SDF <static>true</static> (of the top-level model or its <include>): the model never moves,
+  /// so its links need no mass properties. Always false for URDF.
+  bool is_static = false;
 
   /// Index of the link with that name, or -1.
   int FindLink(const std::string& name) const;

@@ -46,8 +46,8 @@ constexpr T DefaultInertiaValidityTolerance() {
 /// λ1 >= -τ and λ1 + λ2 >= λ3 - τ with τ = relative_tolerance · max(trace, reference_trace).
 /// reference_trace (>= 0, may be 0) lets a caller widen the tolerance when the entries carry
 /// round-off relative to a larger quantity (e.g. an inertia shifted from a distant point).
-/// Entries are scaled by a power of two first (exact), so 1e300 or subnormal inputs neither
-/// overflow nor underflow. Never throws.
+/// Entries outside about 1e-77 .. 1e77 (double) are scaled by a power of two first (exact), so
+/// 1e300 or subnormal inputs neither overflow nor underflow. Never throws.
 template <typename T>
 bool IsPhysicallyValidInertia(const T& xx, const T& yy, const T& zz, const T& xy, const T& xz,
                               const T& yz, const T& relative_tolerance,
@@ -437,20 +437,51 @@ std::ostream& operator<<(std::ostream& out, const RotationalInertia<T>& I) {
 
 namespace internal {
 
+/// The power of two e such that entries of magnitude at most s (> 0, finite), scaled by 2^-e,
+/// can be squared and summed without overflow or underflow: 0 (no scaling, the fast common case)
+/// when s lies within 2^(min_exponent/4) .. 2^(max_exponent/4) (about 1e-77 .. 1e77 for double),
+/// otherwise the exponent of s.
+constexpr long double PowerOfTwo(int n) {
+  long double x = 1;
+  for (; n > 0; --n) x *= 2;
+  for (; n < 0; ++n) x /= 2;
+  return x;
+}
+
+template <typename T>
+int SafeScaleExponent(const T& s) {
+  constexpr T kLow = static_cast<T>(PowerOfTwo(std::numeric_limits<T>::min_exponent / 4));
+  constexpr T kHigh = static_cast<T>(PowerOfTwo(std::numeric_limits<T>::max_exponent / 4));
+  return (s > kLow && s < kHigh) ? 0 : std::ilogb(s);
+}
+
+/// Fills the full symmetric matrix of the six entries scaled by 2^-e (exact; e may be 0).
+template <typename T>
+Matrix3<T> ScaledMatrix(const T& xx, const T& yy, const T& zz, const T& xy, const T& xz,
+                        const T& yz, int e) {
+  Matrix3<T> A;
+  if (e == 0) {
+    A << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  } else {
+    A(0, 0) = std::ldexp(xx, -e), A(1, 1) = std::ldexp(yy, -e), A(2, 2) = std::ldexp(zz, -e);
+    A(1, 0) = A(0, 1) = std::ldexp(xy, -e);
+    A(2, 0) = A(0, 2) = std::ldexp(xz, -e);
+    A(2, 1) = A(1, 2) = std::ldexp(yz, -e);
+  }
+  return A;
+}
+
 template <typename T>
 Vector3<T> ScaledPrincipalMoments(const T& xx, const T& yy, const T& zz, const T& xy, const T& xz,
                                   const T& yz, PrincipalSolver solver) {
   using std::abs;
   const T s = std::max({abs(xx), abs(yy), abs(zz), abs(xy), abs(xz), abs(yz)});
   if (s == T(0)) return Vector3<T>::Zero();
-  const int e = std::ilogb(s);  // s = f·2^e, 1 <= f < 2; scaling by 2^-e is exact.
-  Matrix3<T> A;
-  A(0, 0) = std::ldexp(xx, -e), A(1, 1) = std::ldexp(yy, -e), A(2, 2) = std::ldexp(zz, -e);
-  A(1, 0) = A(0, 1) = std::ldexp(xy, -e);
-  A(2, 0) = A(0, 2) = std::ldexp(xz, -e);
-  A(2, 1) = A(1, 2) = std::ldexp(yz, -e);
-  Vector3<T> lambda = CalcSymmetricEigenvalues<T>(A, solver);
-  for (int k = 0; k < 3; ++k) lambda(k) = std::ldexp(lambda(k), e);
+  const int e = SafeScaleExponent(s);
+  Vector3<T> lambda = CalcSymmetricEigenvalues<T>(ScaledMatrix(xx, yy, zz, xy, xz, yz, e), solver);
+  if (e != 0) {
+    for (int k = 0; k < 3; ++k) lambda(k) = std::ldexp(lambda(k), e);
+  }
   return lambda;
 }
 
@@ -466,13 +497,15 @@ bool IsPhysicallyValidInertia(const T& xx, const T& yy, const T& zz, const T& xy
   if (!(relative_tolerance >= T(0)) || !(reference_trace >= T(0))) return false;
   const T s = std::max({abs(xx), abs(yy), abs(zz), abs(xy), abs(xz), abs(yz)});
   if (s == T(0)) return true;  // Zero inertia: a particle at the point, or nothing.
-  // Scale by a power of two (exact) so that nothing below overflows or underflows.
-  const int e = std::ilogb(s);
-  const T a = std::ldexp(xx, -e), b = std::ldexp(yy, -e), c = std::ldexp(zz, -e);
-  const T p = std::ldexp(xy, -e), q = std::ldexp(xz, -e), r = std::ldexp(yz, -e);
+  // Scale by a power of two (exact) when needed, so that nothing below overflows or underflows.
+  const int e = SafeScaleExponent(s);
+  const Matrix3<T> A = ScaledMatrix(xx, yy, zz, xy, xz, yz, e);
+  const T a = A(0, 0), b = A(1, 1), c = A(2, 2), p = A(1, 0), q = A(2, 0), r = A(2, 1);
   const T trace = a + b + c;
   if (trace < T(0)) return false;  // Some principal moment is negative.
-  const T reference = std::min(std::ldexp(reference_trace, -e), std::numeric_limits<T>::max());
+  const T reference =
+      e == 0 ? reference_trace
+             : std::min(std::ldexp(reference_trace, -e), std::numeric_limits<T>::max());
   const T tau = relative_tolerance * std::max(trace, reference);
   // Diagonal of Σ = ½·tr·1 − I, and its off-diagonal entries −p, −q, −r.
   const T sxx = (b + c - a) / T(2), syy = (a + c - b) / T(2), szz = (a + b - c) / T(2);
@@ -481,8 +514,6 @@ bool IsPhysicallyValidInertia(const T& xx, const T& yy, const T& zz, const T& xy
   if (std::min({sxx, syy, szz}) < -tau / T(2)) return false;
   // Quick accept (Gershgorin): every disc of Σ lies in [0, ∞) so σmin >= 0.
   if (sxx >= abs(p) + abs(q) && syy >= abs(p) + abs(r) && szz >= abs(q) + abs(r)) return true;
-  Matrix3<T> A;
-  A << a, p, q, p, b, r, q, r, c;
   const Vector3<T> lambda = CalcSymmetricEigenvalues<T>(A, PrincipalSolver::kAccurate);
   return lambda(0) >= -tau && lambda(0) + lambda(1) >= lambda(2) - tau;
 }
@@ -603,14 +634,12 @@ std::pair<Vector3<T>, Matrix3<T>> RotationalInertia<T>::CalcPrincipalMomentsAndA
   }
   const T s = std::max({abs(xx_), abs(yy_), abs(zz_), abs(xy_), abs(xz_), abs(yz_)});
   if (s == T(0)) return {Vector3<T>::Zero(), Matrix3<T>::Identity()};
-  const int e = std::ilogb(s);
-  Matrix3<T> A;
-  A(0, 0) = std::ldexp(xx_, -e), A(1, 1) = std::ldexp(yy_, -e), A(2, 2) = std::ldexp(zz_, -e);
-  A(1, 0) = A(0, 1) = std::ldexp(xy_, -e);
-  A(2, 0) = A(0, 2) = std::ldexp(xz_, -e);
-  A(2, 1) = A(1, 2) = std::ldexp(yz_, -e);
-  std::pair<Vector3<T>, Matrix3<T>> result = CalcSymmetricEigensystem<T>(A, solver);
-  for (int k = 0; k < 3; ++k) result.first(k) = std::ldexp(result.first(k), e);
+  const int e = internal::SafeScaleExponent(s);
+  std::pair<Vector3<T>, Matrix3<T>> result =
+      CalcSymmetricEigensystem<T>(internal::ScaledMatrix(xx_, yy_, zz_, xy_, xz_, yz_, e), solver);
+  if (e != 0) {
+    for (int k = 0; k < 3; ++k) result.first(k) = std::ldexp(result.first(k), e);
+  }
   return result;
 }
 

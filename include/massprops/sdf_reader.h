@@ -24,14 +24,17 @@ struct SdfReadOptions {
 /// Files larger than this are refused with a ReadError (bounded memory on hostile input).
 inline constexpr std::size_t kMaxSdfFileBytes = std::size_t{256} << 20;  // 256 MiB
 
-/// Reads the SDF file at `path` (a <world> gives one Model per top-level <model>; a lone <model>
-/// gives one Model). Links of nested models are named "nested::link"; all poses are resolved into
+/// Reads the SDF file at `path` ("-": standard input, also bounded by kMaxSdfFileBytes).
+/// A <world> gives one Model per top-level <model>; a lone <model>
+/// gives one Model. Links of nested models are named "nested::link"; all poses are resolved into
 /// the conventions of model.h (Joint::X_PC from the resolved link poses in the model frame,
 /// Joint::axis in the child link frame, Inertial::X_BBi in the link frame).
 /// An <include> whose URI cannot be resolved (not on the model paths, a Fuel URL, ...) is a
 /// warning naming the include, and the rest of the file is still read (a joint that names one of
 /// its links then becomes an error); an included file that exists but is unreadable or malformed,
 /// and a recursive include, are errors. A file with any error yields no model.
+/// Model::root_link is the model's canonical link when no joint (other than one to "world") has
+/// it as child, else the first such link.
 /// <inertial auto="true"> (SDF 1.11) is recorded as an absent inertial, with a warning.
 /// For a joint whose parent is "world", X_PC is the child link's pose in the world: the model's
 /// pose (its <pose>, or the <include> override) composed with the link's pose in the model. Never

@@ -9,7 +9,9 @@
 /// geometries), this reader reports an error instead: a number is never silently replaced by 0.
 /// It is also stricter on the tree: a link that is the child of two joints, or links that form a
 /// kinematic loop, are errors. It is more lenient in one place: <capsule radius length> geometry,
-/// unknown to urdfdom 3, is read as Geometry::Type::kCapsule.
+/// unknown to urdfdom 3, is read as Geometry::Type::kCapsule. Joint axes are stored as unit
+/// vectors (urdfdom keeps them as written); a missing <axis>, or one without xyz (a warning), is
+/// (1, 0, 0) as the URDF specification says; a zero axis is kept, with a warning.
 
 #include <cstddef>
 #include <string>
@@ -36,10 +38,10 @@ ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name);
 
 /// Outcome of ParseUrdfNumber.
 enum class UrdfNumberStatus {
-  kOk,           ///< A finite number (values below the smallest subnormal round to ±0).
-  kNotANumber,   ///< Empty, trailing characters, "1,5", "abc", hexadecimal, ...
-  kNotFinite,    ///< "nan", "inf", "infinity" in any case, with or without sign.
-  kOutOfRange,   ///< Overflows a double ("1e400").
+  kOk,          ///< A finite number (values below the smallest subnormal round to ±0).
+  kNotANumber,  ///< Empty, trailing characters, "1,5", "abc", hexadecimal, ...
+  kNotFinite,   ///< "nan", "inf", "infinity" in any case, with or without sign.
+  kOutOfRange,  ///< Overflows a double ("1e400").
 };
 
 /// Parses one number with the grammar urdfdom 3 accepts (urdf::strToDouble: C++ stream

@@ -78,14 +78,17 @@ struct CompositeInertia {
 std::vector<WeldedGroup> FindWeldedGroups(const Model& model);
 
 /// The mass properties of a link in its own frame B, from its <inertial>: mass, p_BoBcm_B =
-/// X_BBi.p, I_BBcm_B = R_BBi·I_Bi·R_BBiᵀ. A link without inertial has zero mass and inertia.
+/// X_BBi.p, I_BBcm_B = R_BBi·I_Bi·R_BBiᵀ. A link without inertial has zero mass and inertia in
+/// URDF, and the SDF defaults (mass 1, inertia diag(1, 1, 1) at the link origin) in SDF.
 /// Non-finite numbers propagate. Never throws.
-MassProperties LinkMassProperties(const Link& link);
+MassProperties LinkMassProperties(const Link& link, Model::Format format = Model::Format::kUrdf);
 
-/// The link's spatial inertia about its origin Bo, expressed in its frame B (zero for a link
-/// without inertial). Precondition (checked by the core in debug builds: throws
-/// std::logic_error): the link's inertial is finite and physically valid.
-SpatialInertia<double> LinkSpatialInertia(const Link& link);
+/// The link's spatial inertia about its origin Bo, expressed in its frame B (for a link without
+/// inertial: zero in URDF, the SDF defaults in SDF; see LinkMassProperties). Precondition (checked
+/// by the core in debug builds: throws std::logic_error): the link's inertial is finite and
+/// physically valid.
+SpatialInertia<double> LinkSpatialInertia(const Link& link,
+                                          Model::Format format = Model::Format::kUrdf);
 
 /// Composes bodies whose mass properties are given in one common frame R, in the stable order
 /// (composite center of mass first, then shifts away from each member's center of mass).

@@ -1,0 +1,607 @@
+#include "massprops/mass_report.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "massprops/principal_axes.h"
+
+namespace massprops {
+namespace {
+
+// The tree of the model as welded_groups.cc sees it: each link's parent joint is the first joint
+// in file order that names it as child (self-loops ignored); its parent link is -1 when that
+// joint's parent is not a link of the model (SDF "world").
+struct ModelIndex {
+  std::unordered_map<std::string, int> link;
+  std::unordered_map<std::string, int> joint;
+  std::vector<int> parent_joint;
+  std::vector<int> parent_link;
+  // Children of link p: child_list[child_start[p] .. child_start[p + 1]).
+  std::vector<int> child_start;
+  std::vector<int> child_list;
+
+  int FindLink(const std::string& name) const {
+    const auto it = link.find(name);
+    return it == link.end() ? -1 : it->second;
+  }
+  bool IsFixedChild(const Model& model, int c) const {
+    return parent_joint[c] >= 0 && model.joints[parent_joint[c]].type == Joint::Type::kFixed;
+  }
+};
+
+ModelIndex BuildIndex(const Model& model) {
+  ModelIndex index;
+  const int n = static_cast<int>(model.links.size());
+  index.link.reserve(model.links.size() * 2);
+  for (int i = 0; i < n; ++i) index.link.emplace(model.links[i].name, i);
+  index.joint.reserve(model.joints.size() * 2);
+  index.parent_joint.assign(n, -1);
+  index.parent_link.assign(n, -1);
+  for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
+    const Joint& joint = model.joints[j];
+    index.joint.emplace(joint.name, j);
+    const int child = index.FindLink(joint.child);
+    if (child < 0 || index.parent_joint[child] >= 0) continue;
+    const int parent = index.FindLink(joint.parent);
+    if (parent == child) continue;
+    index.parent_joint[child] = j;
+    index.parent_link[child] = parent;
+  }
+  index.child_start.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    if (index.parent_link[i] >= 0) ++index.child_start[index.parent_link[i] + 1];
+  }
+  for (int i = 0; i < n; ++i) index.child_start[i + 1] += index.child_start[i];
+  index.child_list.resize(index.child_start[n]);
+  std::vector<int> fill(index.child_start.begin(), index.child_start.end() - 1);
+  for (int i = 0; i < n; ++i) {
+    if (index.parent_link[i] >= 0) index.child_list[fill[index.parent_link[i]]++] = i;
+  }
+  return index;
+}
+
+// Poses X_AL of links L in the frame of an anchor link A at the configuration, computed on demand
+// by walking toward A and memoized, so the cost is that of the paths actually asked for.
+class PoseSolver {
+ public:
+  PoseSolver(const Model& model, const ModelIndex& index,
+             const std::unordered_map<int, double>& joint_values, int anchor)
+      : model_(model), index_(index), joint_values_(joint_values), anchor_(anchor) {}
+
+  // X_AL; nullopt when L cannot be reached from A going down the tree.
+  std::optional<Pose> Get(int link) {
+    if (anchor_ < 0 || link < 0) return std::nullopt;
+    if (link == anchor_) return Pose();
+    std::vector<int> path;
+    int cur = link;
+    std::optional<Pose> base;
+    const std::size_t n = model_.links.size();
+    for (;;) {
+      if (cur == anchor_) {
+        base = Pose();
+        break;
+      }
+      const auto it = memo_.find(cur);
+      if (it != memo_.end()) {
+        base = it->second;
+        break;
+      }
+      if (cur < 0 || path.size() > n) break;  // Above the root, or a cycle: unreachable.
+      path.push_back(cur);
+      cur = index_.parent_link[cur];
+    }
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      if (base) {
+        const int j = index_.parent_joint[*it];
+        const auto q = joint_values_.find(j);
+        base = *base * CalcJointPose(model_.joints[j], q == joint_values_.end() ? 0.0 : q->second);
+      }
+      memo_[*it] = base;
+    }
+    return base;
+  }
+
+ private:
+  const Model& model_;
+  const ModelIndex& index_;
+  const std::unordered_map<int, double>& joint_values_;
+  int anchor_;
+  std::unordered_map<int, std::optional<Pose>> memo_;
+};
+
+// The group of links welded to `root` below it (root first, the others in file order), with
+// their poses in root's frame. Follows only fixed joints down the tree.
+WeldedGroup CollectGroupBelow(const Model& model, const ModelIndex& index, int root) {
+  std::vector<std::pair<int, Pose>> members{{root, Pose()}};
+  std::unordered_set<int> seen{root};
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const int p = members[k].first;
+    for (int c_pos = index.child_start[p]; c_pos < index.child_start[p + 1]; ++c_pos) {
+      const int c = index.child_list[c_pos];
+      if (!index.IsFixedChild(model, c) || !seen.insert(c).second) continue;
+      members.emplace_back(c, members[k].second * model.joints[index.parent_joint[c]].X_PC);
+    }
+  }
+  std::sort(members.begin() + 1, members.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  WeldedGroup group;
+  group.root_link = model.links[root].name;
+  for (const auto& [link, X_RL] : members) {
+    group.links.push_back(link);
+    group.X_RL.push_back(X_RL);
+  }
+  group.parent_joint = index.parent_joint[root];
+  return group;
+}
+
+// The body's mass properties given in frame A, re-expressed in frame F (X_FA given).
+BodyMassProperties ReExpress(const BodyMassProperties& body_A, const std::string& frame_F,
+                             const Pose& X_FA) {
+  const Eigen::Matrix3d& R = X_FA.R_AB;
+  Eigen::Matrix3d I_F = R * body_A.inertia_about_com * R.transpose();
+  I_F = (0.5 * (I_F + I_F.transpose())).eval();
+  return MakeBodyMassProperties(frame_F, body_A.mass, X_FA.p_AB + R * body_A.com, I_F);
+}
+
+BodyMassProperties FromComposite(const std::string& frame, const CompositeInertia& c) {
+  return MakeBodyMassProperties(frame, c.mass, c.p_RoScm_R, c.I_SScm_R);
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> CalcEquivalentBox(double mass, const Eigen::Vector3d& moments) {
+  if (!(mass > 0) || !std::isfinite(mass) || !moments.allFinite()) return std::nullopt;
+  const double tolerance = 32 * std::numeric_limits<double>::epsilon() * moments.cwiseAbs().sum();
+  if ((moments.array() < -tolerance).any()) return std::nullopt;
+  Eigen::Vector3d sides;
+  for (int k = 0; k < 3; ++k) {
+    const double excess = moments.sum() - 2 * moments(k);  // I_i + I_j − I_k
+    if (excess < -tolerance) return std::nullopt;
+    sides(k) = std::sqrt(6 * std::max(excess, 0.0) / mass);
+  }
+  return sides;
+}
+
+BodyMassProperties MakeBodyMassProperties(const std::string& frame, double mass,
+                                          const Eigen::Vector3d& p_FoScm_F,
+                                          const Eigen::Matrix3d& I_SScm_F) {
+  BodyMassProperties body;
+  body.frame = frame;
+  body.mass = mass;
+  body.com = p_FoScm_F;
+  body.inertia_about_com = I_SScm_F;
+  if (I_SScm_F.allFinite()) {
+    const auto [moments, axes] = CalcSymmetricEigensystem<double>(I_SScm_F);
+    body.principal_moments = moments;
+    body.principal_axes = axes;
+  } else {
+    body.principal_moments.setConstant(std::numeric_limits<double>::quiet_NaN());
+    body.principal_axes.setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
+  body.equivalent_box = CalcEquivalentBox(mass, body.principal_moments);
+  const double shift = mass * p_FoScm_F.squaredNorm();
+  if (mass > 0 && std::isfinite(shift) && shift > 0 && std::isfinite(I_SScm_F.trace())) {
+    // The floor eps·m·|c|² caps the estimate at all ~15.7 digits of a double (a point mass).
+    const double floor = std::max(std::numeric_limits<double>::min(),
+                                  std::numeric_limits<double>::epsilon() * shift);
+    body.digits_lost = std::max(0.0, std::log10(shift / std::max(I_SScm_F.trace(), floor)));
+  }
+  return body;
+}
+
+Pose CalcJointPose(const Joint& joint, double q) {
+  if (q == 0) return joint.X_PC;
+  Pose X_CCq;  // the child frame at q, in the child frame at 0
+  switch (joint.type) {
+    case Joint::Type::kRevolute:
+    case Joint::Type::kContinuous:
+      X_CCq.R_AB = Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+      break;
+    case Joint::Type::kPrismatic:
+      X_CCq.p_AB = joint.axis * q;
+      break;
+    default:
+      throw std::invalid_argument("joint '" + joint.name + "' of type '" + joint.type_name +
+                                  "' cannot be given a value");
+  }
+  return joint.X_PC * X_CCq;
+}
+
+bool ComputeMassReport(const Model& model, const MassReportOptions& options,
+                       ModelMassReport* report, std::string* error) {
+  *report = ModelMassReport();
+  report->name = model.name;
+  report->file = model.file;
+  if (!options.only.empty() && !options.subtree.empty()) {
+    *error = "--only and --subtree cannot be combined";
+    return false;
+  }
+  const ModelIndex index = BuildIndex(model);
+
+  std::unordered_map<int, double> joint_values;
+  for (const auto& [name, value] : options.joint_values) {
+    const auto it = index.joint.find(name);
+    if (it == index.joint.end()) {
+      *error = "model '" + model.name + "' has no joint named '" + name + "'";
+      return false;
+    }
+    const Joint& joint = model.joints[it->second];
+    if (joint.type == Joint::Type::kFixed) {
+      *error = "joint '" + name + "' is fixed: it has no value to set";
+      return false;
+    }
+    if (joint.type != Joint::Type::kRevolute && joint.type != Joint::Type::kContinuous &&
+        joint.type != Joint::Type::kPrismatic) {
+      *error = "joint '" + name + "' is of type '" + joint.type_name +
+               "': only revolute, continuous and prismatic joints take a value";
+      return false;
+    }
+    if (!std::isfinite(value)) {
+      *error = "the value of joint '" + name + "' is not finite";
+      return false;
+    }
+    joint_values.emplace(it->second, value);
+  }
+  auto find_link = [&](const std::string& name, const char* what, int* out) {
+    *out = index.FindLink(name);
+    if (*out < 0)
+      *error = std::string(what) + ": model '" + model.name + "' has no link '" + name + "'";
+    return *out >= 0;
+  };
+  int frame = -1;
+  if (!options.frame.empty() && !find_link(options.frame, "--frame", &frame)) return false;
+  int subtree = -1;
+  if (!options.subtree.empty() && !find_link(options.subtree, "--subtree", &subtree)) return false;
+  std::vector<int> only;
+  for (const std::string& name : options.only) {
+    int link = -1;
+    if (!find_link(name, "--only", &link)) return false;
+    if (std::find(only.begin(), only.end(), link) == only.end()) only.push_back(link);
+  }
+
+  const int root = index.FindLink(model.root_link);
+  PoseSolver root_poses(model, index, joint_values, root);
+  std::optional<Pose> X_WF;
+  if (frame >= 0) {
+    X_WF = root_poses.Get(frame);
+    if (!X_WF) {
+      *error = "--frame: link '" + options.frame + "' is not connected to the root link '" +
+               model.root_link + "'";
+      return false;
+    }
+  }
+  // With --frame: whether link A's pose is known (else sets *error); in_frame re-expresses.
+  auto express = [&](int link_A) -> bool {
+    if (frame < 0 || link_A == frame) return true;
+    if (!root_poses.Get(link_A)) {
+      *error = "--frame: link '" + model.links[link_A].name +
+               "' is not connected to the root link '" + model.root_link + "'";
+      return false;
+    }
+    return true;
+  };
+  auto in_frame = [&](const BodyMassProperties& body_A, int link_A) {
+    if (frame < 0 || link_A == frame) return body_A;
+    const Pose X_FA = X_WF->Inverse() * *root_poses.Get(link_A);
+    return ReExpress(body_A, options.frame, X_FA);
+  };
+
+  // Which links and groups are reported.
+  std::vector<int> links;
+  std::vector<WeldedGroup> groups;
+  if (!only.empty()) {
+    links = only;
+    std::unordered_set<int> group_roots;
+    for (int link : only) {
+      int top = link;
+      for (std::size_t steps = 0; index.IsFixedChild(model, top) && steps <= model.links.size();
+           ++steps) {
+        const int up = index.parent_link[top];
+        if (up < 0) break;
+        top = up;
+      }
+      if (group_roots.insert(top).second) groups.push_back(CollectGroupBelow(model, index, top));
+    }
+  } else if (subtree >= 0) {
+    links.push_back(subtree);
+    std::unordered_set<int> seen{subtree};
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      const int p = links[k];
+      for (int pos = index.child_start[p]; pos < index.child_start[p + 1]; ++pos) {
+        if (seen.insert(index.child_list[pos]).second) links.push_back(index.child_list[pos]);
+      }
+    }
+    std::sort(links.begin(), links.end());
+    for (int link : links) {
+      if (link == subtree || !index.IsFixedChild(model, link)) {
+        groups.push_back(CollectGroupBelow(model, index, link));
+      }
+    }
+  } else {
+    links.resize(model.links.size());
+    for (std::size_t i = 0; i < links.size(); ++i) links[i] = static_cast<int>(i);
+    groups = FindWeldedGroups(model);
+  }
+
+  for (int link : links) {
+    const MassProperties props = LinkMassProperties(model.links[link], model.format);
+    const BodyMassProperties body =
+        MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
+    if (!express(link)) return false;
+    report->links.push_back({model.links[link].name, in_frame(body, link)});
+  }
+  for (const WeldedGroup& group : groups) {
+    GroupMassReport entry;
+    entry.root_link = group.root_link;
+    for (int link : group.links) entry.links.push_back(model.links[link].name);
+    const BodyMassProperties body =
+        FromComposite(group.root_link, CalcCompositeInertia(model, group));
+    if (!express(group.links.front())) return false;
+    entry.properties = in_frame(body, group.links.front());
+    report->welded_groups.push_back(std::move(entry));
+  }
+  if (!only.empty()) return true;
+
+  // The total: every link of the model (or subtree) at its pose in the anchor's frame.
+  const int anchor = subtree >= 0 ? subtree : root;
+  PoseSolver anchor_poses(model, index, joint_values, anchor);
+  std::vector<MassProperties> parts;
+  parts.reserve(links.size());
+  for (int link : links) {
+    const std::optional<Pose> X_AL = anchor_poses.Get(link);
+    if (!X_AL) {
+      report->unreachable_links.push_back(model.links[link].name);
+      continue;
+    }
+    const MassProperties props_L = LinkMassProperties(model.links[link], model.format);
+    MassProperties props_A;
+    props_A.mass = props_L.mass;
+    props_A.p_FoScm_F = X_AL->p_AB + X_AL->R_AB * props_L.p_FoScm_F;
+    props_A.I_SScm_F = X_AL->R_AB * props_L.I_SScm_F * X_AL->R_AB.transpose();
+    props_A.I_SScm_F = (0.5 * (props_A.I_SScm_F + props_A.I_SScm_F.transpose())).eval();
+    parts.push_back(props_A);
+  }
+  const std::string anchor_name = anchor >= 0 ? model.links[anchor].name : model.root_link;
+  const BodyMassProperties total = FromComposite(anchor_name, ComposeMassProperties(parts));
+  if (anchor >= 0 && !express(anchor)) return false;
+  report->total = anchor >= 0 ? in_frame(total, anchor) : total;
+  return true;
+}
+
+// ------------------------------------------------------------------------------ renderings
+namespace {
+
+nlohmann::json Vec(const Eigen::Vector3d& v) { return {v(0), v(1), v(2)}; }
+nlohmann::json Mat(const Eigen::Matrix3d& m) {
+  return {Vec(m.row(0).transpose()), Vec(m.row(1).transpose()), Vec(m.row(2).transpose())};
+}
+
+void AddBody(const BodyMassProperties& body, nlohmann::json* out) {
+  nlohmann::json& j = *out;
+  j["frame"] = body.frame;
+  j["mass"] = body.mass;
+  j["com"] = Vec(body.com);
+  j["inertia_about_com"] = Mat(body.inertia_about_com);
+  j["principal_moments"] = Vec(body.principal_moments);
+  j["principal_axes"] = Mat(body.principal_axes);
+  j["equivalent_box"] = body.equivalent_box ? Vec(*body.equivalent_box) : nlohmann::json();
+  j["digits_lost"] = body.digits_lost;
+}
+
+void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
+               const std::vector<MassReportError>& errors) {
+  nlohmann::json root;
+  root["models"] = nlohmann::json::array();
+  for (const ModelMassReport& report : reports) {
+    nlohmann::json model;
+    model["name"] = report.name;
+    model["file"] = report.file;
+    model["links"] = nlohmann::json::array();
+    for (const LinkMassReport& link : report.links) {
+      nlohmann::json j;
+      j["name"] = link.name;
+      AddBody(link.properties, &j);
+      model["links"].push_back(std::move(j));
+    }
+    model["welded_groups"] = nlohmann::json::array();
+    for (const GroupMassReport& group : report.welded_groups) {
+      nlohmann::json j;
+      j["root_link"] = group.root_link;
+      j["links"] = group.links;
+      AddBody(group.properties, &j);
+      model["welded_groups"].push_back(std::move(j));
+    }
+    if (report.total) {
+      nlohmann::json j;
+      AddBody(*report.total, &j);
+      j["unreachable_links"] = report.unreachable_links;
+      model["total"] = std::move(j);
+    } else {
+      model["total"] = nullptr;
+    }
+    root["models"].push_back(std::move(model));
+  }
+  root["errors"] = nlohmann::json::array();
+  for (const MassReportError& e : errors) {
+    root["errors"].push_back({{"file", e.file}, {"line", e.line}, {"message", e.message}});
+  }
+  // nlohmann::json prints the shortest decimal that reads back to the same double.
+  out << root.dump(2) << "\n";
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+std::string Number(double value, int digits) {
+  if (value == 0) value = 0;  // no "-0"
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+  return buffer;
+}
+
+void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports) {
+  out << "file,model,kind,name,frame,mass,com_x,com_y,com_z,ixx,iyy,izz,ixy,ixz,iyz,"
+         "principal_moment_1,principal_moment_2,principal_moment_3,"
+         "axis_1_x,axis_1_y,axis_1_z,axis_2_x,axis_2_y,axis_2_z,axis_3_x,axis_3_y,axis_3_z,"
+         "box_1,box_2,box_3,digits_lost,links\n";
+  constexpr int kDigits = std::numeric_limits<double>::max_digits10;
+  auto row = [&](const ModelMassReport& report, const char* kind, const std::string& name,
+                 const BodyMassProperties& b, const std::vector<std::string>& members) {
+    out << CsvField(report.file) << ',' << CsvField(report.name) << ',' << kind << ','
+        << CsvField(name) << ',' << CsvField(b.frame) << ',' << Number(b.mass, kDigits);
+    for (int i = 0; i < 3; ++i) out << ',' << Number(b.com(i), kDigits);
+    const Eigen::Matrix3d& I = b.inertia_about_com;
+    for (double v : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) {
+      out << ',' << Number(v, kDigits);
+    }
+    for (int i = 0; i < 3; ++i) out << ',' << Number(b.principal_moments(i), kDigits);
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 3; ++i) out << ',' << Number(b.principal_axes(i, k), kDigits);
+    }
+    for (int k = 0; k < 3; ++k) {
+      out << ',';
+      if (b.equivalent_box) out << Number((*b.equivalent_box)(k), kDigits);
+    }
+    out << ',' << Number(b.digits_lost, 4) << ',';
+    std::string joined;
+    for (std::size_t i = 0; i < members.size(); ++i) joined += (i ? ";" : "") + members[i];
+    out << CsvField(joined) << '\n';
+  };
+  for (const ModelMassReport& report : reports) {
+    for (const LinkMassReport& link : report.links) {
+      row(report, "link", link.name, link.properties, {link.name});
+    }
+    for (const GroupMassReport& group : report.welded_groups) {
+      row(report, "welded_group", group.root_link, group.properties, group.links);
+    }
+    if (report.total) row(report, "total", report.name, *report.total, {});
+  }
+}
+
+// Prints rows as columns: the first `text_columns` left-aligned, the others right-aligned.
+void WriteTable(std::ostream& out, const std::vector<std::vector<std::string>>& rows,
+                std::size_t text_columns) {
+  std::vector<std::size_t> width;
+  for (const auto& row : rows) {
+    if (width.size() < row.size()) width.resize(row.size(), 0);
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  }
+  for (const auto& row : rows) {
+    std::string line = " ";
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const std::string pad(width[c] - row[c].size(), ' ');
+      line += ' ';
+      line += c < text_columns ? row[c] + pad : pad + row[c];
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << line << '\n';
+  }
+}
+
+void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, double threshold) {
+  constexpr int kDigits = 6;
+  for (const ModelMassReport& report : reports) {
+    out << "model '" << report.name << "' (" << report.file << ")\n";
+    struct Entry {
+      std::string kind, name;
+      const BodyMassProperties* body;
+    };
+    std::vector<Entry> entries;
+    for (const auto& link : report.links) entries.push_back({"link", link.name, &link.properties});
+    for (const auto& group : report.welded_groups) {
+      entries.push_back({"group", group.root_link, &group.properties});
+    }
+    if (report.total) entries.push_back({"total", report.name, &*report.total});
+
+    std::vector<std::vector<std::string>> a{{"kind", "name", "frame", "mass", "com_x", "com_y",
+                                             "com_z", "ixx", "iyy", "izz", "ixy", "ixz", "iyz"}};
+    std::vector<std::vector<std::string>> b{
+        {"kind", "name", "I1", "I2", "I3", "axis1", "axis2", "axis3", "box_1", "box_2", "box_3"}};
+    auto axis = [&](const Eigen::Matrix3d& R, int k) {
+      return "[" + Number(R(0, k), 4) + " " + Number(R(1, k), 4) + " " + Number(R(2, k), 4) + "]";
+    };
+    std::vector<std::string> notes;
+    for (const Entry& e : entries) {
+      const BodyMassProperties& p = *e.body;
+      const Eigen::Matrix3d& I = p.inertia_about_com;
+      a.push_back({e.kind, e.name, p.frame, Number(p.mass, kDigits), Number(p.com(0), kDigits),
+                   Number(p.com(1), kDigits), Number(p.com(2), kDigits), Number(I(0, 0), kDigits),
+                   Number(I(1, 1), kDigits), Number(I(2, 2), kDigits), Number(I(0, 1), kDigits),
+                   Number(I(0, 2), kDigits), Number(I(1, 2), kDigits)});
+      std::vector<std::string> row{e.kind,
+                                   e.name,
+                                   Number(p.principal_moments(0), kDigits),
+                                   Number(p.principal_moments(1), kDigits),
+                                   Number(p.principal_moments(2), kDigits),
+                                   axis(p.principal_axes, 0),
+                                   axis(p.principal_axes, 1),
+                                   axis(p.principal_axes, 2)};
+      for (int k = 0; k < 3; ++k) {
+        row.push_back(p.equivalent_box ? Number((*p.equivalent_box)(k), kDigits) : "-");
+      }
+      b.push_back(std::move(row));
+      if (!p.equivalent_box && p.mass > 0) {
+        notes.push_back(e.kind + " '" + e.name +
+                        "': no equivalent box: the principal moments violate the triangle "
+                        "inequality (or are not finite)");
+      }
+      if (p.digits_lost > threshold) {
+        notes.push_back(e.kind + " '" + e.name + "': about " + Number(p.digits_lost, 3) +
+                        " significant digits lost to cancellation by the shift between the "
+                        "origin of frame '" +
+                        p.frame + "' and the center of mass (m|c|^2 = " +
+                        Number(p.mass * p.com.squaredNorm(), 3) + " against trace " +
+                        Number(I.trace(), 3) + ")");
+      }
+    }
+    out << " mass, center of mass, inertia about the center of mass (in the named frame):\n";
+    WriteTable(out, a, 3);
+    out << " principal moments (ascending), principal axes (in the frame), equivalent box sides "
+           "(along the axes):\n";
+    WriteTable(out, b, 2);
+    if (!report.unreachable_links.empty()) {
+      std::string list;
+      for (const std::string& name : report.unreachable_links) list += " " + name;
+      notes.push_back("left out of the total (not connected to the root link):" + list);
+    }
+    for (const std::string& note : notes) out << " note: " << note << "\n";
+  }
+}
+
+}  // namespace
+
+void WriteMassReport(std::ostream& out, MassReportFormat format,
+                     const std::vector<ModelMassReport>& reports,
+                     const std::vector<MassReportError>& errors, double digits_lost_threshold) {
+  switch (format) {
+    case MassReportFormat::kJson:
+      WriteJson(out, reports, errors);
+      break;
+    case MassReportFormat::kCsv:
+      WriteCsv(out, reports);
+      break;
+    case MassReportFormat::kText:
+      WriteText(out, reports, digits_lost_threshold);
+      break;
+  }
+}
+
+}  // namespace massprops

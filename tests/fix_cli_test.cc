@@ -1,0 +1,255 @@
+// End-to-end tests of `massprops fix` (the built tool, MASSPROPS_TOOL_PATH).
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <utime.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "massprops/xml_patch.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTool = MASSPROPS_TOOL_PATH;
+const std::string kFixDir = std::string(MASSPROPS_TESTDATA_DIR) + "/fix";
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void WriteFile(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+struct ToolRun {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs the tool with `args` (shell words), capturing stdout and stderr.
+ToolRun RunTool(const std::string& args, const fs::path& scratch) {
+  const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+  const std::string command =
+      "'" + kTool + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  ToolRun run;
+  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = ReadFile(out);
+  run.err = ReadFile(err);
+  return run;
+}
+
+class FixCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "massprops-fix-XXXXXX").string();
+    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::permissions(dir_ / "ro", fs::perms::owner_all, ec);
+    fs::remove_all(dir_, ec);
+  }
+  fs::path dir_;
+};
+
+// Line numbers (1-based) inside <inertial> ... </inertial>, found by a plain text scan.
+std::vector<bool> InertialLines(const std::string& text) {
+  std::vector<bool> inside;
+  bool open = false;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    const bool opens = line.find("<inertial") != std::string::npos;
+    const bool closes = line.find("</inertial>") != std::string::npos;
+    inside.push_back(open || opens || closes);
+    if (opens) open = true;
+    if (closes) open = false;
+  }
+  return inside;
+}
+
+TEST_F(FixCliTest, CadExportIsPatchedExactlyAsTheGoldenFile) {
+  // Golden file reviewed by hand: upper_arm mass 2000 → 2 (grams); forearm products negated;
+  // wrist 0.251 − 1·0.5² = 0.0010000000000000009 in double; cover gets m = 1000·0.1·0.1·0.02 and
+  // Ixx = m(0.1² + 0.02²)/12, Izz = m(0.1² + 0.1²)/12 (solid box), digits checked with Python.
+  const ToolRun run = RunTool("fix '" + kFixDir + "/cad_export.urdf'", dir_);
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(run.out, ReadFile(kFixDir + "/golden/cad_export.urdf"));
+}
+
+TEST_F(FixCliTest, CadExportDiffTouchesOnlyInertialLines) {
+  const std::string before = ReadFile(kFixDir + "/cad_export.urdf");
+  const std::string after = ReadFile(kFixDir + "/golden/cad_export.urdf");
+  const massprops::LineChanges changes = massprops::DiffLines(before, after);
+  const std::vector<bool> old_inertial = InertialLines(before);
+  const std::vector<bool> new_inertial = InertialLines(after);
+  EXPECT_EQ(changes.removed.size(), 3u);  // a <mass> and two <inertia> lines
+  for (int line : changes.removed) EXPECT_TRUE(old_inertial.at(line - 1)) << "line " << line;
+  for (int line : changes.added) EXPECT_TRUE(new_inertial.at(line - 1)) << "line " << line;
+}
+
+TEST_F(FixCliTest, FixingTheFixedFileChangesNothing) {
+  const std::string golden = kFixDir + "/golden/cad_export.urdf";
+  const ToolRun run = RunTool("fix --diff '" + golden + "'", dir_);
+  EXPECT_EQ(run.code, 0);
+  EXPECT_EQ(run.out, "");
+  const ToolRun again = RunTool("fix '" + golden + "'", dir_);
+  EXPECT_EQ(again.out, ReadFile(golden));
+}
+
+TEST_F(FixCliTest, TheFixedFilePassesCheck) {
+  const ToolRun run = RunTool("check '" + kFixDir + "/golden/cad_export.urdf'", dir_);
+  EXPECT_EQ(run.code, 0) << run.out;
+  EXPECT_NE(run.out.find("0 errors, 0 warnings"), std::string::npos) << run.out;
+}
+
+TEST_F(FixCliTest, DiffHasUnifiedHeadersAndHunks) {
+  const ToolRun run = RunTool("fix --diff '" + kFixDir + "/cad_export.urdf'", dir_);
+  EXPECT_EQ(run.code, 0);
+  EXPECT_EQ(run.out.rfind("--- a/" + kFixDir + "/cad_export.urdf\n+++ b/", 0), 0u) << run.out;
+  EXPECT_NE(run.out.find("-      <mass value=\"2000\"/>\n+      <mass value=\"2\"/>\n"),
+            std::string::npos);
+}
+
+TEST_F(FixCliTest, DryRunExplainsEachRepairAndWritesNothing) {
+  const fs::path copy = dir_ / "robot.urdf";
+  fs::copy_file(kFixDir + "/cad_export.urdf", copy);
+  const ToolRun run = RunTool("fix --dry-run '" + copy.string() + "'", dir_);
+  EXPECT_EQ(run.code, 0);
+  EXPECT_NE(run.out.find("link 'upper_arm' [units-suspect → rescale-units]"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("mass value (line 21): 2000 → 2"), std::string::npos);
+  EXPECT_NE(run.out.find("why: "), std::string::npos);
+  EXPECT_EQ(ReadFile(copy), ReadFile(kFixDir + "/cad_export.urdf"));
+}
+
+TEST_F(FixCliTest, InPlaceReplacesTheFileAndKeepsABackup) {
+  const fs::path copy = dir_ / "robot.urdf";
+  fs::copy_file(kFixDir + "/cad_export.urdf", copy);
+  const ToolRun run = RunTool("fix --in-place --backup .orig '" + copy.string() + "'", dir_);
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(ReadFile(copy), ReadFile(kFixDir + "/golden/cad_export.urdf"));
+  EXPECT_EQ(ReadFile(dir_ / "robot.urdf.orig"), ReadFile(kFixDir + "/cad_export.urdf"));
+  // No temporary file is left behind.
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_)) ++files;
+  EXPECT_EQ(files, 4);  // robot.urdf, robot.urdf.orig, stdout.txt, stderr.txt
+}
+
+TEST_F(FixCliTest, AFileThatNeedsNoChangeIsNeverRewritten) {
+  const fs::path copy = dir_ / "clean.urdf";
+  fs::copy_file(kFixDir + "/golden/cad_export.urdf", copy);
+  struct utimbuf old_times {};
+  old_times.actime = old_times.modtime = 1000000000;  // 2001-09-09
+  ASSERT_EQ(utime(copy.c_str(), &old_times), 0);
+  const ToolRun run = RunTool("fix --in-place --backup .orig '" + copy.string() + "'", dir_);
+  EXPECT_EQ(run.code, 0);
+  struct stat st {};
+  ASSERT_EQ(stat(copy.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mtime, 1000000000);
+  EXPECT_FALSE(fs::exists(dir_ / "clean.urdf.orig"));
+}
+
+TEST_F(FixCliTest, OutputIntoAMissingFolderFailsAndLeavesTheInputAlone) {
+  const fs::path copy = dir_ / "robot.urdf";
+  fs::copy_file(kFixDir + "/cad_export.urdf", copy);
+  const ToolRun run =
+      RunTool("fix -o '" + (dir_ / "no/such/dir/out.urdf").string() + "' '" + copy.string() + "'",
+              dir_);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_EQ(ReadFile(copy), ReadFile(kFixDir + "/cad_export.urdf"));
+  EXPECT_FALSE(fs::exists(dir_ / "no"));
+}
+
+TEST_F(FixCliTest, InPlaceInAReadOnlyFolderFailsAndLeavesTheOriginalUntouched) {
+  if (geteuid() == 0) GTEST_SKIP() << "root can write into a read-only folder";
+  const fs::path ro = dir_ / "ro";
+  fs::create_directory(ro);
+  fs::copy_file(kFixDir + "/cad_export.urdf", ro / "robot.urdf");
+  fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
+  const ToolRun run = RunTool("fix --in-place '" + (ro / "robot.urdf").string() + "'", dir_);
+  EXPECT_EQ(run.code, 2);
+  EXPECT_EQ(ReadFile(ro / "robot.urdf"), ReadFile(kFixDir + "/cad_export.urdf"));
+}
+
+TEST_F(FixCliTest, OutputFileGetsTheCorrectedText) {
+  const fs::path out = dir_ / "fixed.urdf";
+  const ToolRun run =
+      RunTool("fix -o '" + out.string() + "' '" + kFixDir + "/cad_export.urdf'", dir_);
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(ReadFile(out), ReadFile(kFixDir + "/golden/cad_export.urdf"));
+}
+
+TEST_F(FixCliTest, SdfElementTextsAreRepaired) {
+  const ToolRun run = RunTool("fix '" + kFixDir + "/invalid_inertia.sdf'", dir_);
+  EXPECT_EQ(run.code, 0) << run.err;
+  // Balance-free projection, hand-derived in repair_test: 0.1 + 0.2/3 (plus the 1e-9 floor).
+  EXPECT_NE(run.out.find("<ixx>0.166666667</ixx>"), std::string::npos) << run.out;
+  WriteFile(dir_ / "fixed.sdf", run.out);
+  EXPECT_EQ(RunTool("check '" + (dir_ / "fixed.sdf").string() + "'", dir_).code, 0);
+}
+
+TEST_F(FixCliTest, BalanceRepairWritesTheMeanMoment) {
+  const ToolRun run = RunTool("fix --repair balance '" + kFixDir + "/invalid_inertia.sdf'", dir_);
+  EXPECT_EQ(run.code, 0);
+  // (0.1 + 0.2 + 0.5) / 3 in double.
+  EXPECT_NE(run.out.find("<izz>" + massprops::FormatShortest(0.8 / 3) + "</izz>"),
+            std::string::npos);
+}
+
+TEST_F(FixCliTest, FromGeometryReplacesTheInertialOfTheNamedLink) {
+  // upper_arm: solid cylinder r 0.05, l 0.4 about its
+  // center: Ixx = m(3r² + l²)/12 (m = 2000 as written).
+  const ToolRun run =
+      RunTool("fix '" + kFixDir + "/cad_export.urdf' --from-geometry upper_arm", dir_);
+  EXPECT_EQ(run.code, 0) << run.err;
+  const std::size_t link = run.out.find("<link name=\"upper_arm\">");
+  ASSERT_NE(link, std::string::npos);
+  const std::size_t ixx = run.out.find("ixx=\"", link);
+  ASSERT_NE(ixx, std::string::npos);
+  // The mass kept is the 2000 written (--from-geometry comes before the units repair).
+  EXPECT_NEAR(std::strtod(run.out.c_str() + ixx + 5, nullptr), 2000 * (3 * 0.0025 + 0.16) / 12,
+              1e-12);
+}
+
+TEST_F(FixCliTest, ErrorsWithoutARepairGiveExitCodeOne) {
+  // A negative mass on a link without geometry: nothing to compute a mass from.
+  const fs::path file = dir_ / "neg.urdf";
+  WriteFile(file,
+            "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"-2\"/><inertia "
+            "ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial></link>"
+            "</robot>\n");
+  const ToolRun run = RunTool("fix '" + file.string() + "'", dir_);
+  EXPECT_EQ(run.code, 1);
+  EXPECT_NE(run.err.find("[mass-not-positive] (no repair)"), std::string::npos) << run.err;
+}
+
+TEST_F(FixCliTest, UnreadableInputAndBadOptionsGiveExitCodeTwo) {
+  const fs::path file = dir_ / "broken.urdf";
+  WriteFile(file, "<robot name=\"r\"><link name=\"a\">");
+  EXPECT_EQ(RunTool("fix '" + file.string() + "'", dir_).code, 2);
+  EXPECT_EQ(RunTool("fix '" + (dir_ / "missing.urdf").string() + "'", dir_).code, 2);
+  EXPECT_EQ(RunTool("fix --backup .b '" + kFixDir + "/cad_export.urdf'", dir_).code, 2);
+  EXPECT_EQ(RunTool("fix --repair nearest '" + kFixDir + "/cad_export.urdf'", dir_).code, 2);
+}
+
+}  // namespace

@@ -1,0 +1,149 @@
+// Tests of include/massprops/merge_fixed.h on testdata/report/welded.urdf (hand-derived values of
+// its composites are in tests/mass_report_test.cc; repeated here where used).
+#include "massprops/merge_fixed.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "massprops/model_reader.h"
+#include "massprops/welded_groups.h"
+
+namespace massprops {
+namespace {
+
+const double kPi = 3.14159265358979323846;
+
+std::string FixturePath(const std::string& name) {
+  return std::string(MASSPROPS_TESTDATA_DIR) + "/report/" + name;
+}
+
+std::string ReadText(const std::string& path) {
+  std::string text;
+  EXPECT_FALSE(ReadInputFile(path, kMaxModelFileBytes, &text).has_value());
+  return text;
+}
+
+Model ReadMerged(const std::string& fixture) {
+  const MergeFixedResult merged = MergeFixedJoints(ReadText(FixturePath(fixture)), fixture);
+  EXPECT_TRUE(merged.errors.empty()) << merged.errors.front().ToString();
+  const ReadResult read = ReadModelString(merged.text, "merged.urdf");
+  EXPECT_TRUE(read.ok()) << (read.errors.empty() ? "" : read.errors.front().ToString()) << "\n"
+                         << merged.text;
+  return read.models.empty() ? Model() : read.models.front();
+}
+
+void ExpectNear(const Eigen::MatrixXd& actual, const Eigen::MatrixXd& expected, double tol) {
+  const double scale = std::max(expected.cwiseAbs().maxCoeff(), 1e-300);
+  EXPECT_LE((actual - expected).cwiseAbs().maxCoeff(), tol * scale) << "actual\n"
+                                                                    << actual << "\nexpected\n"
+                                                                    << expected;
+}
+
+TEST(MergeFixedTest, EveryWeldedGroupBecomesOneLinkAndMovingJointsAreReparented) {
+  const Model model = ReadMerged("welded.urdf");
+  ASSERT_EQ(model.links.size(), 2u);
+  EXPECT_EQ(model.links[0].name, "base");
+  EXPECT_EQ(model.links[1].name, "arm");
+  ASSERT_EQ(model.joints.size(), 1u);
+  const Joint& shoulder = model.joints[0];
+  EXPECT_EQ(shoulder.name, "shoulder");
+  EXPECT_EQ(shoulder.parent, "base");
+  // Hand-derived: the shoulder sat at (0,0,2) of the cylinder, whose frame is at base (1,0,0)
+  // turned +90° about y (z → x): the joint frame is at base (3,0,0), turned the same way.
+  ExpectNear(shoulder.X_PC.p_AB, Eigen::Vector3d(3, 0, 0), 1e-15);
+  ExpectNear(shoulder.X_PC.R_AB,
+             Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix(), 1e-15);
+  EXPECT_EQ(shoulder.axis, Eigen::Vector3d(0, 0, 1));
+}
+
+TEST(MergeFixedTest, RootLinkCarriesTheHandComputedCompositeInertial) {
+  const Model model = ReadMerged("welded.urdf");
+  ASSERT_TRUE(model.links[0].inertial.has_value());
+  const Inertial& inertial = *model.links[0].inertial;
+  // Group base (see tests/mass_report_test.cc): m = 12, C = (1/3, 1/3, 1/6), and about C the
+  // diagonal 1.275 + 30/36 + 180/648 + 20/9, ...; written with 17 digits, read back exactly.
+  EXPECT_EQ(inertial.mass, 12);
+  ExpectNear(inertial.X_BBi.p_AB, Eigen::Vector3d(1.0 / 3, 1.0 / 3, 1.0 / 6), 1e-15);
+  EXPECT_TRUE(inertial.X_BBi.R_AB.isIdentity(0));
+  EXPECT_NEAR(inertial.ixx, 0.625 + 0.25 + 0.4 + 30.0 / 36 + 180.0 / 648 + 20.0 / 9, 1e-14);
+  EXPECT_NEAR(inertial.iyy, 2.125 + 19.0 / 24 + 0.4 + 30.0 / 36 + 3636.0 / 648 + 8.0 / 9, 1e-14);
+  EXPECT_NEAR(inertial.izz, 2.5 + 19.0 / 24 + 0.4 + 48.0 / 36 + 3744.0 / 648 + 20.0 / 9, 1e-14);
+  EXPECT_NEAR(inertial.ixy, -24.0 / 36 + 720.0 / 648 + 8.0 / 9, 1e-14);
+  EXPECT_NEAR(inertial.ixz, -12.0 / 36 + 360.0 / 648 + 4.0 / 9, 1e-14);
+  EXPECT_NEAR(inertial.iyz, -12.0 / 36 - 72.0 / 648 - 8.0 / 9, 1e-14);
+}
+
+TEST(MergeFixedTest, WholeModelCompositeIsUnchangedByMerging) {
+  const ReadResult original = ReadModelFile(FixturePath("welded.urdf"));
+  ASSERT_TRUE(original.ok());
+  const CompositeInertia before = CalcModelCompositeInertia(original.models[0]).inertia;
+  const CompositeInertia after = CalcModelCompositeInertia(ReadMerged("welded.urdf")).inertia;
+  EXPECT_NEAR(after.mass, before.mass, 1e-15 * before.mass);
+  ExpectNear(after.p_RoScm_R, before.p_RoScm_R, 1e-14);
+  ExpectNear(after.I_SScm_R, before.I_SScm_R, 1e-13);
+}
+
+TEST(MergeFixedTest, VisualsAndCollisionsMoveIntoTheRootWithComposedOrigins) {
+  const Model model = ReadMerged("welded.urdf");
+  // base kept its box visual + collision and received the cylinder's visual + collision and the
+  // sphere's collision; arm received arm_box's collision: 6 geometries, as before.
+  ASSERT_EQ(model.links[0].geometries.size(), 5u);
+  ASSERT_EQ(model.links[1].geometries.size(), 1u);
+  // The cylinder geometry: origin (0,0,1) of a frame at (1,0,0) turned +90° about y → (2,0,0).
+  const Geometry& cylinder = model.links[0].geometries[2];
+  EXPECT_EQ(cylinder.type, Geometry::Type::kCylinder);
+  ExpectNear(cylinder.X_BG.p_AB, Eigen::Vector3d(2, 0, 0), 1e-15);
+  ExpectNear(cylinder.X_BG.R_AB,
+             Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix(), 1e-15);
+  // arm_box: at (1,0,0) of arm, turned 30° about z.
+  const Geometry& box = model.links[1].geometries[0];
+  ExpectNear(box.X_BG.p_AB, Eigen::Vector3d(1, 0, 0), 1e-15);
+  ExpectNear(box.X_BG.R_AB, Eigen::AngleAxisd(kPi / 6, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
+             1e-15);
+}
+
+TEST(MergeFixedTest, AModelWithoutFixedJointsKeepsItsLinksAndInertials) {
+  const MergeFixedResult merged =
+      MergeFixedJoints(ReadText(FixturePath("far_tiny.urdf")), "far_tiny.urdf");
+  ASSERT_TRUE(merged.errors.empty());
+  EXPECT_EQ(merged.merged_links, 0);
+  EXPECT_EQ(merged.groups_merged, 0);
+  const ReadResult read = ReadModelString(merged.text, "x.urdf");
+  ASSERT_TRUE(read.ok());
+  ASSERT_EQ(read.models[0].links.size(), 2u);
+  EXPECT_EQ(read.models[0].links[1].inertial->X_BBi.p_AB, Eigen::Vector3d(1000, 0, 0));
+  EXPECT_EQ(read.models[0].links[1].inertial->ixx, 1e-12);
+}
+
+TEST(MergeFixedTest, SdfInputIsAClearNotSupportedError) {
+  const MergeFixedResult merged = MergeFixedJoints(ReadText(FixturePath("box.sdf")), "box.sdf");
+  ASSERT_EQ(merged.errors.size(), 1u);
+  EXPECT_NE(merged.errors[0].message.find("does not support SDF"), std::string::npos);
+  EXPECT_TRUE(merged.text.empty());
+}
+
+TEST(MergeFixedTest, RollPitchYawRoundTripsThroughTheUrdfConvention) {
+  // URDF: R = Rz(yaw)·Ry(pitch)·Rx(roll) (ROS REP 103 / urdfdom's Rotation::setFromRPY).
+  const Eigen::Vector3d rpy(0.3, -0.2, 2.5);
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(rpy(2), Eigen::Vector3d::UnitZ()) *
+                             Eigen::AngleAxisd(rpy(1), Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(rpy(0), Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+  ExpectNear(RotationToRollPitchYaw(R), rpy, 1e-15);
+  // Gimbal lock (pitch 90°): the rotation, not the angles, must come back.
+  const Eigen::Matrix3d locked = (Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) *
+                                  Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()) *
+                                  Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX()))
+                                     .toRotationMatrix();
+  const Eigen::Vector3d a = RotationToRollPitchYaw(locked);
+  const Eigen::Matrix3d back = (Eigen::AngleAxisd(a(2), Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(a(1), Eigen::Vector3d::UnitY()) *
+                                Eigen::AngleAxisd(a(0), Eigen::Vector3d::UnitX()))
+                                   .toRotationMatrix();
+  ExpectNear(back, locked, 1e-12);
+}
+
+}  // namespace
+}  // namespace massprops

@@ -1,0 +1,149 @@
+// End-to-end tests of `massprops report` and `massprops merge-fixed` (the built tool at
+// MASSPROPS_TOOL_PATH) on testdata/report/. Expected numbers are hand-derived in
+// tests/mass_report_test.cc; exit codes are the contract of docs/report.md.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct ToolRun {
+  int exit_code = -1;
+  std::string output;
+};
+
+// Runs the tool with `args` (shell words), capturing stdout (and stderr when `with_stderr`).
+ToolRun RunTool(const std::string& args, bool with_stderr = false) {
+  const std::string command = std::string("'") + MASSPROPS_TOOL_PATH + "' " + args +
+                              (with_stderr ? " 2>&1" : " 2>/dev/null");
+  ToolRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return run;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::string Fixture(const std::string& name) {
+  return "'" + std::string(MASSPROPS_TESTDATA_DIR) + "/report/" + name + "'";
+}
+
+TEST(ReportCliTest, JsonReportOfTheTwoLinkArmAtNinetyDegreesHasTheHandComputedCom) {
+  const ToolRun run =
+      RunTool("report --format json --joint joint1=1.5707963267948966 " + Fixture("arm.urdf"));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  const nlohmann::json& total = json["models"][0]["total"];
+  // Hand-derived (mass_report_test.cc): C = (0, 2.5/4.5, 0.5/4.5), m = 4.5.
+  EXPECT_NEAR(total["mass"].get<double>(), 4.5, 1e-15);
+  EXPECT_NEAR(total["com"][0].get<double>(), 0, 1e-15);
+  EXPECT_NEAR(total["com"][1].get<double>(), 2.5 / 4.5, 1e-15);
+  EXPECT_NEAR(total["com"][2].get<double>(), 0.5 / 4.5, 1e-15);
+  EXPECT_EQ(total["frame"], "base");
+  EXPECT_TRUE(json["errors"].empty());
+}
+
+TEST(ReportCliTest, FrameOptionNamesTheFrameOfEveryEntry) {
+  const ToolRun run = RunTool("report --format json --frame link2 " + Fixture("arm.urdf"));
+  ASSERT_EQ(run.exit_code, 0);
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  for (const auto& link : json["models"][0]["links"]) EXPECT_EQ(link["frame"], "link2");
+  for (const auto& group : json["models"][0]["welded_groups"]) EXPECT_EQ(group["frame"], "link2");
+  EXPECT_EQ(json["models"][0]["total"]["frame"], "link2");
+  // link2's frame is at base (1,0,0) at q = 0, not turned: the base link's com (0,0,0) is at
+  // (−1, 0, 0) in it.
+  EXPECT_NEAR(json["models"][0]["links"][0]["com"][0].get<double>(), -1, 1e-15);
+}
+
+TEST(ReportCliTest, UnknownJointIsAUsageErrorWithExitTwo) {
+  const ToolRun run = RunTool("report --joint elbow=1 " + Fixture("arm.urdf"), true);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find("no joint named 'elbow'"), std::string::npos) << run.output;
+  EXPECT_EQ(RunTool("report --joint joint1=abc " + Fixture("arm.urdf")).exit_code, 2);
+  EXPECT_EQ(RunTool("report --joint tip_fixed=1 " + Fixture("arm.urdf")).exit_code, 2);
+  EXPECT_EQ(RunTool("report --format xml " + Fixture("arm.urdf")).exit_code, 2);
+}
+
+TEST(ReportCliTest, AnUnreadableFileGivesExitTwoAndTheOtherFilesAreStillReported) {
+  const ToolRun run =
+      RunTool("report --format json " + Fixture("missing.urdf") + " " + Fixture("welded.urdf"));
+  EXPECT_EQ(run.exit_code, 2);
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  ASSERT_EQ(json["models"].size(), 1u);
+  EXPECT_EQ(json["models"][0]["name"], "welded");
+  ASSERT_EQ(json["errors"].size(), 1u);
+  EXPECT_NE(json["errors"][0]["file"].get<std::string>().find("missing.urdf"), std::string::npos);
+}
+
+TEST(ReportCliTest, CsvHasAHeaderAndOneRowPerBody) {
+  const ToolRun run = RunTool("report --format csv " + Fixture("welded.urdf"));
+  ASSERT_EQ(run.exit_code, 0);
+  std::istringstream in(run.output);
+  std::string line;
+  int rows = -1;  // the header
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 6 + 2 + 1);  // 6 links, 2 welded groups, 1 total
+  EXPECT_EQ(run.output.rfind("file,model,kind,name,frame,mass,", 0), 0u);
+}
+
+TEST(ReportCliTest, TextReportSaysHowManyDigitsTheFarTinyBodyLost) {
+  const ToolRun run = RunTool("report " + Fixture("far_tiny.urdf"));
+  ASSERT_EQ(run.exit_code, 0);
+  // log10(0.001·1000² / 3e-12) = 14.52 (mass_report_test.cc).
+  EXPECT_NE(run.output.find("about 14.5 significant digits lost"), std::string::npos) << run.output;
+}
+
+TEST(ReportCliTest, OnlyAndSubtreeRestrictTheReport) {
+  ToolRun run = RunTool("report --format json " + Fixture("welded.urdf") + " --only arm_box");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  nlohmann::json json = nlohmann::json::parse(run.output);
+  EXPECT_EQ(json["models"][0]["links"].size(), 1u);
+  EXPECT_EQ(json["models"][0]["welded_groups"].size(), 1u);
+  EXPECT_TRUE(json["models"][0]["total"].is_null());
+  run = RunTool("report --format json --subtree arm " + Fixture("welded.urdf"));
+  ASSERT_EQ(run.exit_code, 0);
+  json = nlohmann::json::parse(run.output);
+  EXPECT_EQ(json["models"][0]["links"].size(), 2u);
+  // Group arm: m = 4, com (0.875, 0, 0) in the arm frame (mass_report_test.cc).
+  EXPECT_EQ(json["models"][0]["total"]["frame"], "arm");
+  EXPECT_NEAR(json["models"][0]["total"]["com"][0].get<double>(), 0.875, 1e-15);
+  EXPECT_EQ(RunTool("report --subtree nowhere " + Fixture("welded.urdf")).exit_code, 2);
+}
+
+TEST(ReportCliTest, MergeFixedWritesAModelWithOneLinkPerWeldedGroup) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() /
+                                    ("massprops_merge_" + std::to_string(getpid()) + ".urdf");
+  const ToolRun run =
+      RunTool("merge-fixed " + Fixture("welded.urdf") + " -o '" + out.string() + "'");
+  ASSERT_EQ(run.exit_code, 0);
+  // The merged file's report: two links, each its own group; the total is unchanged
+  // (m = 16, C = (1, 1/4, −3/32), mass_report_test.cc).
+  const ToolRun report = RunTool("report --format json '" + out.string() + "'");
+  std::filesystem::remove(out);
+  ASSERT_EQ(report.exit_code, 0);
+  const nlohmann::json json = nlohmann::json::parse(report.output);
+  EXPECT_EQ(json["models"][0]["links"].size(), 2u);
+  const nlohmann::json& total = json["models"][0]["total"];
+  EXPECT_NEAR(total["mass"].get<double>(), 16, 1e-14);
+  EXPECT_NEAR(total["com"][0].get<double>(), 1, 1e-14);
+  EXPECT_NEAR(total["com"][1].get<double>(), 0.25, 1e-14);
+  EXPECT_NEAR(total["com"][2].get<double>(), -3.0 / 32, 1e-14);
+}
+
+TEST(ReportCliTest, MergeFixedRefusesSdfWithExitTwo) {
+  const ToolRun run = RunTool("merge-fixed " + Fixture("box.sdf") + " -o -", true);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find("does not support SDF"), std::string::npos) << run.output;
+}
+
+}  // namespace

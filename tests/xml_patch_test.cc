@@ -1,0 +1,228 @@
+#include "massprops/xml_patch.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "massprops/repair.h"
+
+namespace massprops {
+namespace {
+
+// A repair of link `link` (start tag at `link_line`) that sets one number.
+Repair OneChange(const std::string& link, int link_line, const std::string& element,
+                 const std::string& attribute, int line, double value) {
+  Repair r;
+  r.link = link;
+  r.link_line = link_line;
+  r.changes.push_back({element, attribute, line, 0, {0}, {value}});
+  return r;
+}
+
+TEST(FormatShortestTest, WritesTheShortestTextThatReadsBack) {
+  // Shortest round-trip forms (std::to_chars, C++17 [charconv.to.chars]).
+  EXPECT_EQ(FormatShortest(0.1), "0.1");
+  EXPECT_EQ(FormatShortest(2), "2");
+  EXPECT_EQ(FormatShortest(1e-6), "1e-06");
+  EXPECT_EQ(FormatShortest(-0.0045), "-0.0045");
+  EXPECT_EQ(FormatShortest(-0.0), "0");
+  EXPECT_EQ(FormatShortest(1.0 / 3), "0.3333333333333333");
+}
+
+TEST(FormatShortestTest, RandomDoublesRoundTrip) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> exponent(-30, 30);
+  for (int i = 0; i < 10000; ++i) {
+    const double x = std::ldexp(mantissa(rng), exponent(rng));
+    EXPECT_EQ(std::strtod(FormatShortest(x).c_str(), nullptr), x) << FormatShortest(x);
+  }
+}
+
+TEST(PatchModelTextTest, OnlyTheChangedAttributeValueIsRewritten) {
+  // Comments, single quotes, odd spacing and attribute order are kept byte for byte.
+  const std::string before =
+      "<robot name='r'>  <!-- keep <mass value=\"9\"/> -->\n"
+      "  <link   name = 'arm' >\n"
+      "    <inertial>\n"
+      "      <mass   value = '1.000' />\n"
+      "      <inertia izz='0.5'  ixx=\"0.1\" iyy='0.2' ixy='0' ixz='0' iyz='0'/>\n"
+      "    </inertial>\n"
+      "  </link>\n"
+      "</robot>\n";
+  Repair r = OneChange("arm", 2, "inertia", "izz", 5, 0.25);
+  r.changes.push_back({"mass", "value", 4, 0, {1}, {2}});
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {r});
+  ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
+  EXPECT_EQ(result.applied, 1);
+  const std::string expected =
+      "<robot name='r'>  <!-- keep <mass value=\"9\"/> -->\n"
+      "  <link   name = 'arm' >\n"
+      "    <inertial>\n"
+      "      <mass   value = '2' />\n"
+      "      <inertia izz='0.25'  ixx=\"0.1\" iyy='0.2' ixy='0' ixz='0' iyz='0'/>\n"
+      "    </inertial>\n"
+      "  </link>\n"
+      "</robot>\n";
+  EXPECT_EQ(result.text, expected);
+}
+
+TEST(PatchModelTextTest, FindsTheRightLinkWhenSeveralShareALine) {
+  const std::string before =
+      "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>"
+      "<link name=\"b\"><inertial><mass value=\"1\"/></inertial></link></robot>";
+  const PatchResult result =
+      PatchModelText(before, Model::Format::kUrdf, {OneChange("b", 1, "mass", "value", 1, 3)});
+  EXPECT_EQ(result.text,
+            "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>"
+            "<link name=\"b\"><inertial><mass value=\"3\"/></inertial></link></robot>");
+}
+
+TEST(PatchModelTextTest, ReplacesOnlyTheXyzOfAnOriginAndKeepsRpy) {
+  const std::string before =
+      "<robot name=\"r\">\n<link name=\"a\">\n<inertial>\n"
+      "<origin rpy=\"0 0 1\" xyz=\"0  0   0\"/>\n<mass value=\"1\"/>\n</inertial>\n</link>\n"
+      "</robot>\n";
+  Repair r;
+  r.link = "a";
+  r.link_line = 2;
+  r.changes.push_back({"origin", "xyz", 4, 0, {0, 0, 0}, {0.5, 0, -0.25}});
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {r});
+  // Each number is replaced in place; the separators ("  ", "   ") are kept.
+  EXPECT_EQ(result.text,
+            "<robot name=\"r\">\n<link name=\"a\">\n<inertial>\n"
+            "<origin rpy=\"0 0 1\" xyz=\"0.5  0   -0.25\"/>\n<mass value=\"1\"/>\n</inertial>\n"
+            "</link>\n</robot>\n");
+}
+
+TEST(PatchModelTextTest, RewritesSdfElementTextKeepingItsSpacing) {
+  const std::string before =
+      "<sdf version=\"1.7\"><model name=\"m\">\n"
+      "  <link name=\"arm\">\n"
+      "    <inertial>\n"
+      "      <pose>0 0 0.1 0 0 0</pose>\n"
+      "      <mass> 2.0 </mass>\n"
+      "      <inertia>\n"
+      "        <ixx>0.1</ixx>\n"
+      "        <iyy>0.2</iyy>\n"
+      "        <izz>0.5</izz>\n"
+      "      </inertia>\n"
+      "    </inertial>\n"
+      "  </link>\n"
+      "</model></sdf>\n";
+  Repair r = OneChange("m::arm", 2, "inertia", "izz", 6, 0.25);
+  r.changes.push_back({"mass", "", 5, 0, {2}, {1.5}});
+  r.changes.push_back({"pose", "", 4, 0, {0, 0, 0.1}, {0, 0, 0.2}});
+  r.changes.push_back({"inertia", "ixy", 6, 0, {0}, {-0.01}});  // absent: inserted after <izz>
+  const PatchResult result = PatchModelText(before, Model::Format::kSdf, {r});
+  ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
+  EXPECT_EQ(result.text,
+            "<sdf version=\"1.7\"><model name=\"m\">\n"
+            "  <link name=\"arm\">\n"
+            "    <inertial>\n"
+            "      <pose>0 0 0.2 0 0 0</pose>\n"
+            "      <mass> 1.5 </mass>\n"
+            "      <inertia>\n"
+            "        <ixx>0.1</ixx>\n"
+            "        <iyy>0.2</iyy>\n"
+            "        <izz>0.25</izz>\n"
+            "        <ixy>-0.01</ixy>\n"
+            "      </inertia>\n"
+            "    </inertial>\n"
+            "  </link>\n"
+            "</model></sdf>\n");
+}
+
+TEST(PatchModelTextTest, InsertsAnInertialIndentedLikeItsSiblings) {
+  const std::string before =
+      "<robot name=\"r\">\r\n"
+      "\t<link name=\"cover\">\r\n"
+      "\t\t<collision><geometry><box size=\"0.1 0.1 0.02\"/></geometry></collision>\r\n"
+      "\t</link>\r\n"
+      "</robot>\r\n";
+  Repair r;
+  r.link = "cover";
+  r.link_line = 2;
+  r.inserts_inertial = true;
+  r.after.mass = 0.2;
+  r.after.X_BBi.p_AB = Eigen::Vector3d(0, 0, 0.1);
+  r.after.ixx = r.after.iyy = 0.001;
+  r.after.izz = 0.002;
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {r});
+  ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
+  EXPECT_EQ(result.text,
+            "<robot name=\"r\">\r\n"
+            "\t<link name=\"cover\">\r\n"
+            "\t\t<inertial>\r\n"
+            "\t\t\t<origin xyz=\"0 0 0.1\" rpy=\"0 0 0\"/>\r\n"
+            "\t\t\t<mass value=\"0.2\"/>\r\n"
+            "\t\t\t<inertia ixx=\"0.001\" ixy=\"0\" ixz=\"0\" iyy=\"0.001\" iyz=\"0\" "
+            "izz=\"0.002\"/>\r\n"
+            "\t\t</inertial>\r\n"
+            "\t\t<collision><geometry><box size=\"0.1 0.1 0.02\"/></geometry></collision>\r\n"
+            "\t</link>\r\n"
+            "</robot>\r\n");
+}
+
+TEST(PatchModelTextTest, AMissingElementSkipsTheWholeRepair) {
+  const std::string before =
+      "<robot name=\"r\">\n<link name=\"a\">\n<inertial>\n<mass value=\"1\"/>\n</inertial>\n"
+      "</link>\n</robot>\n";
+  Repair r = OneChange("a", 2, "mass", "value", 4, 2);
+  r.changes.push_back({"inertia", "ixx", 5, 0, {0}, {1}});  // there is no <inertia>
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {r});
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.applied, 0);
+  EXPECT_EQ(result.text, before);
+}
+
+TEST(PatchModelTextTest, AWrongLineIsRefused) {
+  const std::string before = "<robot name=\"r\">\n<link name=\"a\"/>\n</robot>\n";
+  const PatchResult result =
+      PatchModelText(before, Model::Format::kUrdf, {OneChange("a", 1, "mass", "value", 4, 2)});
+  EXPECT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.text, before);
+}
+
+TEST(UnifiedDiffTest, EqualTextsHaveNoDiff) { EXPECT_EQ(UnifiedDiff("a\nb\n", "a\nb\n", "f"), ""); }
+
+TEST(UnifiedDiffTest, OneChangedLineWithThreeLinesOfContext) {
+  // Unified format (GNU diffutils manual, "Detailed Description of Unified Format"): hunk header
+  // "@@ -start,count +start,count @@", three lines of context before and after.
+  const std::string before = "1\n2\n3\n4\n5\n6\n7\n8\n9\n";
+  const std::string after = "1\n2\n3\n4\nfive\n6\n7\n8\n9\n";
+  EXPECT_EQ(UnifiedDiff(before, after, "robot.urdf"),
+            "--- a/robot.urdf\n+++ b/robot.urdf\n"
+            "@@ -2,7 +2,7 @@\n 2\n 3\n 4\n-5\n+five\n 6\n 7\n 8\n");
+}
+
+TEST(UnifiedDiffTest, DistantChangesGetSeparateHunksAndInsertionsCountRight) {
+  std::string before, after;
+  for (int i = 1; i <= 20; ++i) {
+    before += std::to_string(i) + "\n";
+    after += (i == 2 ? std::string("two") : std::to_string(i)) + "\n";
+    if (i == 17) after += "17.5\n";
+  }
+  EXPECT_EQ(UnifiedDiff(before, after, "f"),
+            "--- a/f\n+++ b/f\n"
+            "@@ -1,5 +1,5 @@\n 1\n-2\n+two\n 3\n 4\n 5\n"
+            "@@ -15,6 +15,7 @@\n 15\n 16\n 17\n+17.5\n 18\n 19\n 20\n");
+}
+
+TEST(UnifiedDiffTest, MarksALastLineWithoutNewline) {
+  EXPECT_EQ(UnifiedDiff("a\nb", "a\nc", "f"),
+            "--- a/f\n+++ b/f\n@@ -1,2 +1,2 @@\n a\n-b\n\\ No newline at end of file\n+c\n"
+            "\\ No newline at end of file\n");
+}
+
+TEST(DiffLinesTest, ReportsRemovedAndAddedLineNumbers) {
+  const LineChanges changes = DiffLines("a\nb\nc\nd\n", "a\nB\nc\nx\nd\n");
+  EXPECT_EQ(changes.removed, std::vector<int>({2}));
+  EXPECT_EQ(changes.added, std::vector<int>({2, 4}));
+}
+
+}  // namespace
+}  // namespace massprops

@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""Writes a synthetic serial chain of N links, for the reading benchmarks.
+
+Usage: gen_chain.py N OUT [--sdf]
+
+Each link has an <inertial> (a 1.5 kg box 0.04 x 0.04 x 0.1 m about its center, which is 0.05 m
+up the link's z axis) and a matching collision box; link k-1 and link k are joined by a revolute
+joint about y, 0.1 m apart. URDF by default; --sdf writes the same chain as SDF 1.9.
+bench/read_bench.cc builds byte-identical URDF text in C++ (MakeChainUrdf), so its numbers hold
+for the files this script writes.
+"""
+import sys
+
+# Box inertia about its center: m/12 (b^2 + c^2) etc. with m = 1.5, sides 0.04, 0.04, 0.1.
+IXX = "0.00145"
+IZZ = "0.0004"
+
+
+def urdf_chain(n):
+    out = ['<?xml version="1.0"?>\n<robot name="chain">\n']
+    for k in range(n):
+        out.append(
+            f'  <link name="link{k}">\n'
+            f'    <inertial>\n'
+            f'      <origin xyz="0 0 0.05" rpy="0 0 0"/>\n'
+            f'      <mass value="1.5"/>\n'
+            f'      <inertia ixx="{IXX}" ixy="0" ixz="0" iyy="{IXX}" iyz="0" izz="{IZZ}"/>\n'
+            f'    </inertial>\n'
+            f'    <collision>\n'
+            f'      <origin xyz="0 0 0.05" rpy="0 0 0"/>\n'
+            f'      <geometry><box size="0.04 0.04 0.1"/></geometry>\n'
+            f'    </collision>\n'
+            f'  </link>\n')
+        if k > 0:
+            out.append(
+                f'  <joint name="joint{k}" type="revolute">\n'
+                f'    <origin xyz="0 0 0.1" rpy="0 0 0"/>\n'
+                f'    <parent link="link{k - 1}"/>\n'
+                f'    <child link="link{k}"/>\n'
+                f'    <axis xyz="0 1 0"/>\n'
+                f'    <limit lower="-1.57" upper="1.57" effort="10" velocity="1"/>\n'
+                f'  </joint>\n')
+    out.append('</robot>\n')
+    return ''.join(out)
+
+
+def sdf_chain(n):
+    out = ['<?xml version="1.0"?>\n<sdf version="1.9">\n  <model name="chain">\n']
+    for k in range(n):
+        out.append(
+            f'    <link name="link{k}">\n'
+            f'      <pose>0 0 {0.1 * k:.12g} 0 0 0</pose>\n'
+            f'      <inertial>\n'
+            f'        <pose>0 0 0.05 0 0 0</pose>\n'
+            f'        <mass>1.5</mass>\n'
+            f'        <inertia><ixx>{IXX}</ixx><ixy>0</ixy><ixz>0</ixz>'
+            f'<iyy>{IXX}</iyy><iyz>0</iyz><izz>{IZZ}</izz></inertia>\n'
+            f'      </inertial>\n'
+            f'      <collision name="box">\n'
+            f'        <pose>0 0 0.05 0 0 0</pose>\n'
+            f'        <geometry><box><size>0.04 0.04 0.1</size></box></geometry>\n'
+            f'      </collision>\n'
+            f'    </link>\n')
+        if k > 0:
+            out.append(
+                f'    <joint name="joint{k}" type="revolute">\n'
+                f'      <parent>link{k - 1}</parent>\n'
+                f'      <child>link{k}</child>\n'
+                f'      <axis><xyz>0 1 0</xyz>'
+                f'<limit><lower>-1.57</lower><upper>1.57</upper></limit></axis>\n'
+                f'    </joint>\n')
+    out.append('  </model>\n</sdf>\n')
+    return ''.join(out)
+
+
+def main(argv):
+    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != '--sdf'):
+        sys.stderr.write(__doc__)
+        return 2
+    n = int(argv[1])
+    if n < 1:
+        sys.stderr.write('N must be at least 1\n')
+        return 2
+    text = sdf_chain(n) if len(argv) == 4 else urdf_chain(n)
+    with open(argv[2], 'w', encoding='utf-8', newline='\n') as f:
+        f.write(text)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))

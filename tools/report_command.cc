@@ -1,0 +1,196 @@
+// `massprops report` and `massprops merge-fixed` (see docs/report.md). Exit codes:
+//   0  every file was reported (or merged);
+//   2  a file could not be read or parsed, an option names a joint or link a model does not have,
+//      or the command line is wrong (the other files are still reported).
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "commands.h"
+#include "massprops/mass_report.h"
+#include "massprops/merge_fixed.h"
+#include "massprops/model_reader.h"
+
+namespace massprops::cli {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitError = 2;
+
+struct ReportArgs {
+  std::vector<std::string> files;
+  std::string format = "text";
+  std::vector<std::string> joints;
+  std::string frame;
+  std::vector<std::string> only;
+  std::string subtree;
+  std::vector<std::string> model_paths;
+};
+
+struct MergeArgs {
+  std::string input;
+  std::string output;
+};
+
+// Parses "NAME=VALUE" with a finite VALUE; false on anything else.
+bool ParseJointValue(const std::string& spec, std::string* name, double* value) {
+  const std::size_t eq = spec.rfind('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size()) return false;
+  *name = spec.substr(0, eq);
+  const std::string text = spec.substr(eq + 1);
+  char* end = nullptr;
+  *value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(*value);
+}
+
+int RunReport(const ReportArgs& args) {
+  MassReportOptions options;
+  for (const std::string& spec : args.joints) {
+    std::string name;
+    double value = 0;
+    if (!ParseJointValue(spec, &name, &value)) {
+      std::cerr << "massprops: error: --joint expects NAME=VALUE with a finite number, got '"
+                << spec << "'\n";
+      return kExitError;
+    }
+    options.joint_values[name] = value;
+  }
+  options.frame = args.frame;
+  options.only = args.only;
+  options.subtree = args.subtree;
+  if (!options.only.empty() && !options.subtree.empty()) {
+    std::cerr << "massprops: error: --only and --subtree cannot be combined\n";
+    return kExitError;
+  }
+  const MassReportFormat format = args.format == "json"  ? MassReportFormat::kJson
+                                  : args.format == "csv" ? MassReportFormat::kCsv
+                                                         : MassReportFormat::kText;
+  ReadOptions read_options;
+  read_options.sdf.model_paths = args.model_paths;
+  std::vector<ModelMassReport> reports;
+  std::vector<MassReportError> errors;
+  for (const std::string& file : args.files) {
+    const ReadResult read = ReadModelFile(file, read_options);
+    for (const ReadError& e : read.errors) {
+      errors.push_back({e.location.file, e.location.line,
+                        e.element.empty() ? e.message : e.element + ": " + e.message});
+    }
+    for (const Model& model : read.models) {
+      ModelMassReport report;
+      std::string error;
+      if (ComputeMassReport(model, options, &report, &error)) {
+        reports.push_back(std::move(report));
+      } else {
+        errors.push_back({file == "-" ? "<stdin>" : file, 0, error});
+      }
+    }
+  }
+  if (format != MassReportFormat::kJson) {
+    for (const MassReportError& e : errors) {
+      std::cerr << e.file << (e.line > 0 ? ":" + std::to_string(e.line) : "")
+                << ": error: " << e.message << "\n";
+    }
+  }
+  WriteMassReport(std::cout, format, reports, errors, options.digits_lost_threshold);
+  std::cout.flush();
+  return errors.empty() ? kExitOk : kExitError;
+}
+
+int RunMerge(const MergeArgs& args) {
+  std::string text;
+  if (const auto error = ReadInputFile(args.input, kMaxModelFileBytes, &text)) {
+    std::cerr << error->ToString() << "\n";
+    return kExitError;
+  }
+  const MergeFixedResult merged =
+      MergeFixedJoints(text, args.input == "-" ? "<stdin>" : args.input);
+  if (!merged.errors.empty()) {
+    for (const ReadError& e : merged.errors) std::cerr << e.ToString() << "\n";
+    return kExitError;
+  }
+  if (args.output == "-") {
+    std::cout << merged.text;
+    std::cout.flush();
+  } else {
+    // Written to a temporary file beside the output, renamed over it only when complete.
+    namespace fs = std::filesystem;
+    const fs::path out_path(args.output);
+    const fs::path tmp_path = out_path.string() + ".massprops-tmp";
+    {
+      std::ofstream out(tmp_path, std::ios::binary | std::ios::trunc);
+      out << merged.text;
+      out.close();
+      if (!out) {
+        std::cerr << "massprops: error: cannot write " << tmp_path.string() << "\n";
+        std::error_code ec;
+        fs::remove(tmp_path, ec);
+        return kExitError;
+      }
+    }
+    std::error_code ec;
+    fs::rename(tmp_path, out_path, ec);
+    if (ec) {
+      std::cerr << "massprops: error: cannot write " << args.output << ": " << ec.message() << "\n";
+      fs::remove(tmp_path, ec);
+      return kExitError;
+    }
+  }
+  std::cerr << "massprops: merged " << merged.merged_links << " link(s) into "
+            << merged.groups_merged << " welded group root(s)\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+void AddReportCommands(CLI::App& app, std::function<int()>* run) {
+  auto report_args = std::make_shared<ReportArgs>();
+  CLI::App* report = app.add_subcommand(
+      "report",
+      "Report mass, center of mass, inertia about the center of mass, principal moments and axes "
+      "and the equivalent box of every link, welded group and the whole model.");
+  report->add_option("FILE", report_args->files, "URDF or SDF files (detected by content), '-'")
+      ->required();
+  report->add_option("--format", report_args->format, "Output format")
+      ->check(CLI::IsMember({"text", "json", "csv"}))
+      ->capture_default_str();
+  report
+      ->add_option("--joint", report_args->joints,
+                   "Joint value, radians or meters (repeatable; other joints at 0)")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
+  report
+      ->add_option("--frame", report_args->frame,
+                   "Express everything in this link's frame (at the joint values)")
+      ->type_name("LINK");
+  report->add_option("--only", report_args->only, "Report only these links and their welded groups")
+      ->type_name("LINK");
+  report
+      ->add_option("--subtree", report_args->subtree,
+                   "Report only this link and its descendants (total in its frame)")
+      ->type_name("LINK");
+  report
+      ->add_option("--model-path", report_args->model_paths,
+                   "Folder searched for SDF model:// URIs (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  report->callback(
+      [run, report_args] { *run = [report_args] { return RunReport(*report_args); }; });
+
+  auto merge_args = std::make_shared<MergeArgs>();
+  CLI::App* merge = app.add_subcommand(
+      "merge-fixed",
+      "Write the model with every welded group (links joined by fixed joints) merged into one "
+      "link carrying the composite inertial (URDF).");
+  merge->add_option("IN", merge_args->input, "URDF file, or '-' for standard input")->required();
+  merge->add_option("-o,--output", merge_args->output, "Output file, or '-' for standard output")
+      ->required();
+  merge->callback([run, merge_args] { *run = [merge_args] { return RunMerge(*merge_args); }; });
+}
+
+}  // namespace massprops::cli
