@@ -203,18 +203,16 @@ MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
     }
   }
 
-  // 2. Degenerate triangles; the directed edges of the others.
-  std::vector<std::int32_t> edge_lo, edge_hi;
-  std::vector<char> edge_forward;
-  edge_lo.reserve(3 * mesh.triangles.size());
-  edge_hi.reserve(3 * mesh.triangles.size());
-  edge_forward.reserve(3 * mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
+  // 2. Degenerate triangles (those with a repeated vertex take no part in the topology).
+  std::vector<char> has_edges(mesh.triangles.size(), 0);
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     const std::int32_t r[3] = {representative[t[0]], representative[t[1]], representative[t[2]]};
     if (r[0] == r[1] || r[1] == r[2] || r[2] == r[0]) {
       ++d.degenerate_triangles;
       continue;
     }
+    has_edges[i] = 1;
     const Eigen::Vector3d& a = mesh.vertices[r[0]];
     const Eigen::Vector3d& b = mesh.vertices[r[1]];
     const Eigen::Vector3d& c = mesh.vertices[r[2]];
@@ -222,26 +220,29 @@ MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
         std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
     const double twice_area = (b - a).cross(c - a).norm();
     if (twice_area <= 2e-12 * longest2) ++d.degenerate_triangles;
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t from = r[k], to = r[(k + 1) % 3];
-      edge_lo.push_back(std::min(from, to));
-      edge_hi.push_back(std::max(from, to));
-      edge_forward.push_back(from < to ? 1 : 0);
-    }
   }
 
-  // 3. Bucket the edges by their smaller vertex (counting sort: linear), then sort each small
-  // bucket (its size is the vertex's degree) by the larger vertex and count the uses.
-  const std::size_t num_edges = edge_lo.size();
+  // 3. Bucket the directed edges by their smaller vertex (counting sort: linear; the edges are
+  // generated twice from the triangles rather than stored), then sort each small bucket (its
+  // size is the vertex's degree) by the larger vertex and count the uses.
+  auto for_each_edge = [&](auto&& visit) {
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      if (!has_edges[i]) continue;
+      const auto& t = mesh.triangles[i];
+      const std::int32_t r[3] = {representative[t[0]], representative[t[1]], representative[t[2]]};
+      for (int k = 0; k < 3; ++k) visit(r[k], r[(k + 1) % 3]);
+    }
+  };
   std::vector<std::int64_t> start(mesh.vertices.size() + 1, 0);
-  for (std::size_t e = 0; e < num_edges; ++e) ++start[edge_lo[e] + 1];
+  for_each_edge([&](std::int32_t from, std::int32_t to) { ++start[std::min(from, to) + 1]; });
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
-  std::vector<std::int64_t> bucket(num_edges);  // (hi << 1) | forward
+  std::vector<std::int64_t> bucket(static_cast<std::size_t>(start.back()));  // hi << 1 | forward
   {
     std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t e = 0; e < num_edges; ++e) {
-      bucket[fill[edge_lo[e]]++] = (static_cast<std::int64_t>(edge_hi[e]) << 1) | edge_forward[e];
-    }
+    for_each_edge([&](std::int32_t from, std::int32_t to) {
+      bucket[fill[std::min(from, to)]++] =
+          (static_cast<std::int64_t>(std::max(from, to)) << 1) | (from < to ? 1 : 0);
+    });
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
     const auto begin = bucket.begin() + start[v], end = bucket.begin() + start[v + 1];

@@ -126,8 +126,8 @@ std::optional<Eigen::Matrix3d> UnitInertiaOf(const Geometry& g) {
   }
 }
 
-std::optional<GeometryMassProperties> FromGeometries(const Link& link, bool collision,
-                                                     double density, double mass) {
+std::optional<PrimitiveMassProperties> FromGeometries(const Link& link, bool collision,
+                                                      double density, double mass) {
   std::vector<MassProperties> parts;
   Eigen::Matrix3d G_first_B = Eigen::Matrix3d::Zero();  // unit inertia of the first part, in B
   double volume = 0;
@@ -156,7 +156,7 @@ std::optional<GeometryMassProperties> FromGeometries(const Link& link, bool coll
   } else {
     composite = ComposeMassProperties(parts);
   }
-  GeometryMassProperties result;
+  PrimitiveMassProperties result;
   result.volume = volume;
   result.mass = mass > 0 ? mass : density * volume;
   result.p_BoBcm_B = composite.p_RoScm_R;
@@ -191,9 +191,9 @@ class Planner {
 
   std::optional<Repair> PlanLink(const Link& link, const std::set<std::string>& rules) {
     Plan plan;
-    const bool named = std::find(options_.from_geometry_links.begin(),
-                                 options_.from_geometry_links.end(),
-                                 link.name) != options_.from_geometry_links.end();
+    const bool named =
+        std::find(options_.from_geometry_links.begin(), options_.from_geometry_links.end(),
+                  link.name) != options_.from_geometry_links.end();
     if (options_.from_geometry_all || named) {
       if (FromGeometry(link, /*keep_mass=*/true, rules.empty() ? "" : *rules.begin(), &plan)) {
         return Finish(link, plan);
@@ -248,8 +248,8 @@ class Planner {
   bool FromGeometry(const Link& link, bool keep_mass, const std::string& rule, Plan* plan) {
     const double mass = link.inertial ? link.inertial->mass : 0;
     const bool use_mass = keep_mass && std::isfinite(mass) && mass > 0;
-    std::optional<GeometryMassProperties> g =
-        CalcGeometryMassProperties(link, options_.density, use_mass ? mass : 0);
+    std::optional<PrimitiveMassProperties> g =
+        CalcPrimitiveMassProperties(link, options_.density, use_mass ? mass : 0);
     if (!g) return false;
     Inertial work = link.inertial ? *link.inertial : Inertial{};
     const Eigen::Matrix3d R = RotationOf(link);
@@ -257,7 +257,7 @@ class Planner {
     work.X_BBi.p_AB = g->p_BoBcm_B;
     SetMatrix(R.transpose() * g->I_BBcm_B * R, &work);
     plan->work = work;
-    plan->rule = rule.empty() ? "from-geometry" : rule;
+    plan->rule = rule.empty() ? "--from-geometry" : rule;
     plan->inserts_inertial = !link.inertial.has_value();
     const std::string what = g->from_collision ? "collision" : "visual";
     if (use_mass) {
@@ -267,11 +267,10 @@ class Planner {
                            " kg");
     } else {
       plan->methods.push_back("from-geometry-density");
-      std::string reason =
-          rule == "massless-moving-body"
-              ? "the link moves but its body has no mass"
-              : !link.inertial ? "the link has " + what + " geometry but no <inertial>"
-                               : "the mass " + Num(mass) + " is not a positive number";
+      std::string reason = rule == "massless-moving-body"
+                               ? "the link moves but its body has no mass"
+                           : !link.inertial ? "the link has " + what + " geometry but no <inertial>"
+                                            : "the mass " + Num(mass) + " is not a positive number";
       plan->whys.push_back(reason + ": mass = density " + Num(options_.density) +
                            " kg/m³ × volume " + Num(g->volume) + " m³ = " + Num(g->mass) +
                            " kg, with the inertia and center of mass of its primitive " + what +
@@ -363,8 +362,8 @@ class Planner {
     // Where the link has primitive geometry, negate only when that lands closer to the
     // geometry's inertia (with the link's mass, in the inertial frame) than the projection does.
     if (w.mass > 0) {
-      if (std::optional<GeometryMassProperties> g =
-              CalcGeometryMassProperties(link, options_.density, w.mass)) {
+      if (std::optional<PrimitiveMassProperties> g =
+              CalcPrimitiveMassProperties(link, options_.density, w.mass)) {
         const Eigen::Matrix3d& R = w.X_BBi.R_AB;
         const Eigen::Matrix3d I_geometry = R.transpose() * g->I_BBcm_B * R;
         const Eigen::Matrix3d projected = RepairInertia(I, options_.method, options_.tolerance);
@@ -383,9 +382,8 @@ class Planner {
     const Eigen::Matrix3d repaired = RepairInertia(I, options_.method, options_.tolerance);
     SetMatrix(repaired, &w);
     const double change = I.norm() > 0 ? (repaired - I).norm() / I.norm() : 1;
-    const Eigen::Vector3d before =
-        internal::ScaledPrincipalMoments(I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1),
-                                         PrincipalSolver::kAccurate);
+    const Eigen::Vector3d before = internal::ScaledPrincipalMoments(
+        I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1), PrincipalSolver::kAccurate);
     const Eigen::Vector3d after = internal::ScaledPrincipalMoments(
         repaired(0, 0), repaired(1, 1), repaired(2, 2), repaired(1, 0), repaired(2, 0),
         repaired(2, 1), PrincipalSolver::kAccurate);
@@ -464,8 +462,8 @@ class Planner {
 
 }  // namespace
 
-std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Link& link, double density,
-                                                                 double mass) {
+std::optional<PrimitiveMassProperties> CalcPrimitiveMassProperties(const Link& link, double density,
+                                                                   double mass) {
   if (!(density > 0) || !std::isfinite(density)) return std::nullopt;
   bool has_collision = false;
   for (const Geometry& g : link.geometries) has_collision |= g.is_collision;
@@ -574,10 +572,10 @@ std::string DescribeRepair(const Repair& repair) {
   std::string text = "link '" + repair.link + "' [" + repair.rule + " → " + repair.method + "]";
   if (repair.inserts_inertial) {
     const Inertial& a = repair.after;
-    text += ": new <inertial>: mass " + Num(a.mass) + ", center of mass (" +
-            Num(a.X_BBi.p_AB.x()) + ", " + Num(a.X_BBi.p_AB.y()) + ", " + Num(a.X_BBi.p_AB.z()) +
-            "), ixx " + Num(a.ixx) + ", ixy " + Num(a.ixy) + ", ixz " + Num(a.ixz) + ", iyy " +
-            Num(a.iyy) + ", iyz " + Num(a.iyz) + ", izz " + Num(a.izz);
+    text += ": new <inertial>: mass " + Num(a.mass) + ", center of mass (" + Num(a.X_BBi.p_AB.x()) +
+            ", " + Num(a.X_BBi.p_AB.y()) + ", " + Num(a.X_BBi.p_AB.z()) + "), ixx " + Num(a.ixx) +
+            ", ixy " + Num(a.ixy) + ", ixz " + Num(a.ixz) + ", iyy " + Num(a.iyy) + ", iyz " +
+            Num(a.iyz) + ", izz " + Num(a.izz);
   }
   for (const FieldChange& c : repair.changes) {
     auto join = [](const std::vector<double>& v) {

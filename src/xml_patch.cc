@@ -123,8 +123,7 @@ std::optional<Span> FirstChild(std::string_view t, const Span& parent, std::stri
 }
 
 // The value range of attribute `name` in the start tag of `s`.
-std::optional<std::pair<std::size_t, std::size_t>> AttributeValue(std::string_view t,
-                                                                  const Span& s,
+std::optional<std::pair<std::size_t, std::size_t>> AttributeValue(std::string_view t, const Span& s,
                                                                   std::string_view name) {
   std::size_t i = s.open_begin + 1 + s.name.size();
   const std::size_t end = s.open_end - 1;
@@ -170,8 +169,8 @@ class Patcher {
     edits_.clear();
     error_.clear();
     const std::optional<Span> link = FindLink(r.link, r.link_line);
-    if (!link) return {{}, Fail("the <link> element was not found at line " +
-                                std::to_string(r.link_line))};
+    if (!link)
+      return {{}, Fail("the <link> element was not found at line " + std::to_string(r.link_line))};
     if (r.inserts_inertial) {
       InsertInertial(*link, r.after);
       return {edits_, error_};
@@ -384,9 +383,9 @@ class Patcher {
     const std::string nl = Newline(last.open_begin);
     const std::string separator =
         StartsLine(last.open_begin) ? nl + Indent(last.open_begin) : std::string(" ");
-    edits_.push_back({last.close_end, 0,
-                      separator + "<" + name + ">" + FormatShortest(values[0]) + "</" + name +
-                          ">"});
+    edits_.push_back(
+        {last.close_end, 0,
+         separator + "<" + name + ">" + FormatShortest(values[0]) + "</" + name + ">"});
   }
 
   std::string_view t_;

@@ -97,7 +97,8 @@ void Count(const ReadResult& read, int* errors, int* warnings, bool fixed = fals
   }
 }
 
-TEST(CorpusFixTest, FixingEveryCorpusFileWithErrorsTouchesOnlyInertialLinesAndLeavesNoFixableError) {
+TEST(CorpusFixTest,
+     FixingEveryCorpusFileWithErrorsTouchesOnlyInertialLinesAndLeavesNoFixableError) {
   const std::vector<Entry> entries = ReadManifest();
   if (entries.empty()) GTEST_SKIP() << "no corpus at " << kCorpus;
   std::string pattern = (fs::temp_directory_path() / "massprops-corpus-fix-XXXXXX").string();
@@ -127,7 +128,8 @@ TEST(CorpusFixTest, FixingEveryCorpusFileWithErrorsTouchesOnlyInertialLinesAndLe
     ++counts.fixed;
     ++fixed_files;
     counts.links_repaired += fixed.repairs;
-    const fs::path out = out_dir / (std::to_string(fixed_files) + fs::path(entry.file).extension().string());
+    const fs::path out =
+        out_dir / (std::to_string(fixed_files) + fs::path(entry.file).extension().string());
     std::ofstream(out, std::ios::binary) << fixed.text;
 
     // Only inertial lines change.
@@ -159,8 +161,9 @@ TEST(CorpusFixTest, FixingEveryCorpusFileWithErrorsTouchesOnlyInertialLinesAndLe
   }
   EXPECT_GT(fixed_files, 0);
 
-  std::printf("| source | files | fixed | links repaired | errors before → after | "
-              "warnings before → after |\n| --- | --- | --- | --- | --- | --- |\n");
+  std::printf(
+      "| source | files | fixed | links repaired | errors before → after | "
+      "warnings before → after |\n| --- | --- | --- | --- | --- | --- |\n");
   Counts total;
   for (const auto& [source, c] : table) {
     std::printf("| %s | %d | %d | %d | %d → %d | %d → %d |\n", source.c_str(), c.files, c.fixed,
@@ -175,8 +178,8 @@ TEST(CorpusFixTest, FixingEveryCorpusFileWithErrorsTouchesOnlyInertialLinesAndLe
     total.warnings_after += c.warnings_after;
   }
   std::printf("| **total** | %d | %d | %d | %d → %d | %d → %d |\n", total.files, total.fixed,
-              total.links_repaired, total.errors_before, total.errors_after,
-              total.warnings_before, total.warnings_after);
+              total.links_repaired, total.errors_before, total.errors_after, total.warnings_before,
+              total.warnings_after);
   for (const auto& [rule, n] : remaining_errors) {
     std::printf("errors left in fixed files: %s %d\n", rule.c_str(), n);
   }

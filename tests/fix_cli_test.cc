@@ -1,10 +1,9 @@
 // End-to-end tests of `massprops fix` (the built tool, MASSPROPS_TOOL_PATH).
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <utime.h>
-
-#include <gtest/gtest.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -171,9 +170,8 @@ TEST_F(FixCliTest, AFileThatNeedsNoChangeIsNeverRewritten) {
 TEST_F(FixCliTest, OutputIntoAMissingFolderFailsAndLeavesTheInputAlone) {
   const fs::path copy = dir_ / "robot.urdf";
   fs::copy_file(kFixDir + "/cad_export.urdf", copy);
-  const ToolRun run =
-      RunTool("fix -o '" + (dir_ / "no/such/dir/out.urdf").string() + "' '" + copy.string() + "'",
-              dir_);
+  const ToolRun run = RunTool(
+      "fix -o '" + (dir_ / "no/such/dir/out.urdf").string() + "' '" + copy.string() + "'", dir_);
   EXPECT_EQ(run.code, 2);
   EXPECT_EQ(ReadFile(copy), ReadFile(kFixDir + "/cad_export.urdf"));
   EXPECT_FALSE(fs::exists(dir_ / "no"));

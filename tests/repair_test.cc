@@ -2,14 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <random>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "massprops/checks.h"
 #include "massprops/rotational_inertia.h"
@@ -119,7 +118,9 @@ TEST(RepairInertiaTest, RandomInvalidInertiasAreRepairedToValidOnesNoFartherThan
     ++invalid_inputs;
     // Strictly valid: beyond the core's round-off tolerance, not just within 1e-6.
     ASSERT_TRUE(Valid(P, internal::DefaultInertiaValidityTolerance<double>()))
-        << "trial " << trial << "\n" << I << "\n→\n" << P;
+        << "trial " << trial << "\n"
+        << I << "\n→\n"
+        << P;
     ASSERT_TRUE(Valid(B, 0)) << "trial " << trial;
     // Nearest: no farther (Frobenius) than the balanced inertia, which is also valid; the slack
     // covers the 1e-9 floor.
@@ -146,30 +147,32 @@ TEST(RepairInertiaTest, RandomValidInertiasAreReturnedUnchanged) {
   }
 }
 
-TEST(GeometryMassPropertiesTest, BoxMassComesFromDensityAndVolume) {
+TEST(PrimitiveMassPropertiesTest, BoxMassComesFromDensityAndVolume) {
   // Solid box 0.1 x 0.2 x 0.3 m of water: m = 1000·0.006 = 6 kg, Ixx = m(b² + c²)/12 = 0.065.
-  const Model model = Read(ArmUrdf("", "<collision><geometry><box size=\"0.1 0.2 0.3\"/>"
-                                       "</geometry></collision>\n"));
-  const auto g = CalcGeometryMassProperties(model.links[1], 1000);
+  const Model model = Read(ArmUrdf("",
+                                   "<collision><geometry><box size=\"0.1 0.2 0.3\"/>"
+                                   "</geometry></collision>\n"));
+  const auto g = CalcPrimitiveMassProperties(model.links[1], 1000);
   ASSERT_TRUE(g);
   EXPECT_NEAR(g->mass, 6, 1e-12);
   EXPECT_NEAR(g->I_BBcm_B(0, 0), 0.065, 1e-15);
   EXPECT_NEAR(g->I_BBcm_B(1, 1), 6 * (0.01 + 0.09) / 12, 1e-15);
   EXPECT_NEAR(g->I_BBcm_B(2, 2), 6 * (0.01 + 0.04) / 12, 1e-15);
   // Keeping a given mass of 2 kg: Ixx = 2(0.04 + 0.09)/12.
-  const auto kept = CalcGeometryMassProperties(model.links[1], 1000, 2);
+  const auto kept = CalcPrimitiveMassProperties(model.links[1], 1000, 2);
   ASSERT_TRUE(kept);
   EXPECT_NEAR(kept->I_BBcm_B(0, 0), 2 * 0.13 / 12, 1e-15);
 }
 
-TEST(GeometryMassPropertiesTest, TwoSpheresComposeWithTheParallelAxisTheorem) {
+TEST(PrimitiveMassPropertiesTest, TwoSpheresComposeWithTheParallelAxisTheorem) {
   // Two spheres r = 0.1 at x = ±0.2: each m = 1000·4/3·π·0.001; Ixx = 2·(2/5)m r²,
   // Iyy = Izz = 2·((2/5)m r² + m·0.2²) (parallel-axis theorem).
-  const Model model = Read(ArmUrdf(
-      "", "<collision><origin xyz=\"0.2 0 0\"/><geometry><sphere radius=\"0.1\"/></geometry>"
-          "</collision><collision><origin xyz=\"-0.2 0 0\"/><geometry><sphere radius=\"0.1\"/>"
-          "</geometry></collision>\n"));
-  const auto g = CalcGeometryMassProperties(model.links[1], 1000);
+  const Model model = Read(
+      ArmUrdf("",
+              "<collision><origin xyz=\"0.2 0 0\"/><geometry><sphere radius=\"0.1\"/></geometry>"
+              "</collision><collision><origin xyz=\"-0.2 0 0\"/><geometry><sphere radius=\"0.1\"/>"
+              "</geometry></collision>\n"));
+  const auto g = CalcPrimitiveMassProperties(model.links[1], 1000);
   ASSERT_TRUE(g);
   const double m = 1000 * 4.0 / 3.0 * kPi * 0.001;
   EXPECT_NEAR(g->mass, 2 * m, 1e-12);
@@ -178,10 +181,10 @@ TEST(GeometryMassPropertiesTest, TwoSpheresComposeWithTheParallelAxisTheorem) {
   EXPECT_NEAR(g->I_BBcm_B(1, 1), 2 * (0.4 * m * 0.01 + m * 0.04), 1e-12);
 }
 
-TEST(GeometryMassPropertiesTest, MeshGeometryHasNoPrimitiveMassProperties) {
+TEST(PrimitiveMassPropertiesTest, MeshGeometryHasNoPrimitiveMassProperties) {
   const Model model = Read(
       ArmUrdf("", "<collision><geometry><mesh filename=\"arm.stl\"/></geometry></collision>\n"));
-  EXPECT_FALSE(CalcGeometryMassProperties(model.links[1], 1000));
+  EXPECT_FALSE(CalcPrimitiveMassProperties(model.links[1], 1000));
 }
 
 TEST(PlanRepairsTest, InvalidInertiaIsProjectedAndTheFindingResolved) {
@@ -223,10 +226,10 @@ TEST(PlanRepairsTest, BalanceOptionSetsMomentsToTheirMean) {
 TEST(PlanRepairsTest, ProductsWithTheWrongSignAreNegated) {
   // docs/rules.md products-sign-suspect example: products 0.0045 are invalid, -0.0045 valid. With
   // no geometry there is nothing to compare with: the negation is taken.
-  const Model model = Read(ArmUrdf(
-      "<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0.0045\" ixz=\"0.0045\" "
-      "iyy=\"0.01\" iyz=\"0.0045\" izz=\"0.01\"/></inertial>\n",
-      ""));
+  const Model model = Read(
+      ArmUrdf("<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0.0045\" ixz=\"0.0045\" "
+              "iyy=\"0.01\" iyz=\"0.0045\" izz=\"0.01\"/></inertial>\n",
+              ""));
   const std::optional<Repair> r = RepairOf(Plan(model), "arm");
   ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->rule, "products-sign-suspect");
@@ -241,11 +244,11 @@ TEST(PlanRepairsTest, MassInGramsIsDividedByAThousandWhenUnambiguous) {
   // docs/rules.md units-suspect example: cylinder r 0.05, l 0.4 with m = 2000 "kg" and the
   // inertia of a 2 kg cylinder ((3r² + l²)/12·2 = 0.0279167): only the grams reading lands in
   // the plausible band, so no --fix-units is needed.
-  const Model model = Read(ArmUrdf(
-      "<inertial><origin xyz=\"0 0 0.2\"/><mass value=\"2000\"/><inertia ixx=\"0.0279167\" "
-      "ixy=\"0\" ixz=\"0\" iyy=\"0.0279167\" iyz=\"0\" izz=\"0.0025\"/></inertial>\n",
-      "<collision><origin xyz=\"0 0 0.2\"/><geometry><cylinder radius=\"0.05\" "
-      "length=\"0.4\"/></geometry></collision>\n"));
+  const Model model = Read(
+      ArmUrdf("<inertial><origin xyz=\"0 0 0.2\"/><mass value=\"2000\"/><inertia ixx=\"0.0279167\" "
+              "ixy=\"0\" ixz=\"0\" iyy=\"0.0279167\" iyz=\"0\" izz=\"0.0025\"/></inertial>\n",
+              "<collision><origin xyz=\"0 0 0.2\"/><geometry><cylinder radius=\"0.05\" "
+              "length=\"0.4\"/></geometry></collision>\n"));
   const std::optional<Repair> r = RepairOf(Plan(model), "arm");
   ASSERT_TRUE(r.has_value());
   EXPECT_EQ(r->method, "rescale-units");
@@ -253,6 +256,25 @@ TEST(PlanRepairsTest, MassInGramsIsDividedByAThousandWhenUnambiguous) {
   EXPECT_EQ(r->after.ixx, 0.0279167);
   ASSERT_EQ(r->changes.size(), 1u);
   EXPECT_EQ(r->changes[0].element, "mass");
+}
+
+TEST(PlanRepairsTest, AmbiguousUnitsAreRescaledOnlyWithFixUnits) {
+  // Cube 0.2 m (half-diagonal e = 0.1·sqrt(3) = 0.1732), m = 1, Ixx = Iyy = Izz = 450:
+  // k = sqrt(1350/2) = 25.98 = 150·e. Both kg·mm² (k/e → 0.15) and kg·cm² (k/e → 1.5) land in the
+  // plausible band [0.1, 2], so only --fix-units rescales, taking the one nearest k/e = 0.5:
+  // |ln(1.5/0.5)| = 1.10 < |ln(0.15/0.5)| = 1.20, i.e. kg·cm² (× 1e-4 → 0.045).
+  const Model model = Read(
+      ArmUrdf("<inertial><mass value=\"1\"/><inertia ixx=\"450\" ixy=\"0\" ixz=\"0\" iyy=\"450\" "
+              "iyz=\"0\" izz=\"450\"/></inertial>\n",
+              "<collision><geometry><box size=\"0.2 0.2 0.2\"/></geometry></collision>\n"));
+  EXPECT_FALSE(RepairOf(Plan(model), "arm").has_value());
+  RepairOptions options;
+  options.fix_units = true;
+  const std::optional<Repair> r = RepairOf(Plan(model, options), "arm");
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->method, "rescale-units");
+  EXPECT_NEAR(r->after.ixx, 0.045, 1e-15);
+  EXPECT_EQ(r->after.mass, 1);
 }
 
 TEST(PlanRepairsTest, InertiaAboutTheLinkOriginIsShiftedToTheCenterOfMass) {
@@ -290,10 +312,10 @@ TEST(PlanRepairsTest, NegativeMassIsReplacedByDensityTimesVolume) {
 TEST(PlanRepairsTest, MissingInertialIsInsertedFromTheCollisionBox) {
   // Box 0.1 x 0.1 x 0.02 of water at (0, 0, 0.1): m = 0.2 kg, Ixx = m(0.01 + 0.0004)/12, center
   // of mass at the box center.
-  const Model model = Read(
-      ArmUrdf("<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" "
-              "iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>\n",
-              ""));
+  const Model model =
+      Read(ArmUrdf("<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" "
+                   "iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>\n",
+                   ""));
   // `arm` has an inertial here; build the missing-inertial case with a welded cover link.
   const std::string urdf =
       "<robot name=\"r\">\n"
@@ -316,15 +338,33 @@ TEST(PlanRepairsTest, MissingInertialIsInsertedFromTheCollisionBox) {
   EXPECT_FALSE(RepairOf(Plan(model), "arm").has_value());  // a valid link needs nothing
 }
 
+TEST(PlanRepairsTest, MasslessMovingLinkWithACollisionSphereGetsItsMassFromTheDensity) {
+  // Sphere r = 0.1 of water: m = 1000·4/3·π·0.001 = 4.18879 kg, I = 2/5·m·r² (solid sphere).
+  const Model model =
+      Read(ArmUrdf("", "<collision><geometry><sphere radius=\"0.1\"/></geometry></collision>\n"));
+  std::vector<Finding> findings = CheckModel(model);
+  const std::vector<Repair> repairs = PlanRepairs(model, findings);
+  const std::optional<Repair> r = RepairOf(repairs, "arm");
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->rule, "massless-moving-body");
+  EXPECT_TRUE(r->inserts_inertial);
+  const double m = 1000 * 4.0 / 3.0 * kPi * 0.001;
+  EXPECT_NEAR(r->after.mass, m, 1e-12);
+  EXPECT_NEAR(r->after.izz, 0.4 * m * 0.01, 1e-14);
+  for (const Finding& f : CheckModel(ApplyRepairs(model, repairs))) {
+    EXPECT_NE(f.rule, "massless-moving-body") << f.message;
+  }
+}
+
 TEST(PlanRepairsTest, FromGeometryWritesTheInertiaInTheRotatedInertialFrame) {
   // Box 0.1 x 0.2 x 0.3, mass kept at 6 kg: in the link frame diag(0.065, 0.05, 0.025). The
   // inertial frame is turned 90° about z (x_Bi = y_B, y_Bi = -x_B), so R_BBiᵀ·I·R_BBi =
   // diag(0.05, 0.065, 0.025) (hand-derived).
-  const Model model = Read(ArmUrdf(
-      "<inertial><origin xyz=\"0 0 0\" rpy=\"0 0 1.5707963267948966\"/><mass value=\"6\"/>"
-      "<inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/>"
-      "</inertial>\n",
-      "<collision><geometry><box size=\"0.1 0.2 0.3\"/></geometry></collision>\n"));
+  const Model model = Read(
+      ArmUrdf("<inertial><origin xyz=\"0 0 0\" rpy=\"0 0 1.5707963267948966\"/><mass value=\"6\"/>"
+              "<inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/>"
+              "</inertial>\n",
+              "<collision><geometry><box size=\"0.1 0.2 0.3\"/></geometry></collision>\n"));
   RepairOptions options;
   options.from_geometry_links = {"arm"};
   const std::optional<Repair> r = RepairOf(Plan(model, options), "arm");

@@ -11,7 +11,7 @@ import sys
 import time
 
 here = os.path.dirname(os.path.abspath(__file__))
-tool = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "build", "massprops")
+tool = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(here, "..", "build", "massprops")
 corpus = sys.argv[2] if len(sys.argv) > 2 else os.path.join(here, "..", "..", "shared", "corpus")
 
 with open(os.path.join(corpus, "MANIFEST.tsv"), newline="") as f:

@@ -1,5 +1,5 @@
-// `massprops fix` (see docs/fix.md): repairs the mass properties that have a known remedy and writes
-// the file back with only those numbers changed. Exit codes:
+// `massprops fix` (see docs/fix.md): repairs the mass properties that have a known remedy and
+// writes the file back with only those numbers changed. Exit codes:
 //   0  the output has no error-severity finding left (changes made, or none needed);
 //   1  the output still has errors that no repair exists for (they are listed on stderr);
 //   2  the file could not be read or parsed, the command line is wrong, or the output could not
@@ -86,8 +86,8 @@ std::optional<std::string> WriteAtomically(const fs::path& path, const std::stri
     return message;
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string message = "cannot rename " + tmp + " to " + path.string() + ": " +
-                                strerror(errno);
+    const std::string message =
+        "cannot rename " + tmp + " to " + path.string() + ": " + strerror(errno);
     ::unlink(tmp.c_str());
     return message;
   }
@@ -221,7 +221,10 @@ int RunFix(const FixArgs& args) {
         }
       }
     } else if (!args.output.empty() && args.output != "-") {
-      if (auto error = WriteAtomically(args.output, patched.text, std::nullopt)) {
+      std::error_code ec;
+      if (!changed && args.file != "-" && fs::equivalent(args.output, args.file, ec)) {
+        // -o FILE naming the input itself: a file that needs no change is not rewritten.
+      } else if (auto error = WriteAtomically(args.output, patched.text, std::nullopt)) {
         std::cerr << "massprops: error: " << *error << "\n";
         return kExitError;
       }

@@ -63,8 +63,9 @@ std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshReso
 /// <unit meter="..."> is honoured (assimp 5.2 puts it into the root node's transform; the DAE
 /// <up_axis> is ignored: URDF and SDF take mesh coordinates as they are written). Only assimp's
 /// aiProcess_Triangulate and aiProcess_JoinIdenticalVertices are applied (nothing that changes the
-/// geometry); points and lines are dropped. Returns false and sets *error (if not null) when the
-/// file cannot be read or parsed, or holds no triangle.
+/// geometry); points and lines are dropped. Assimp holds coordinates as 32-bit floats, so
+/// vertices carry a relative rounding of up to 6e-8. Returns false and sets *error (if not null)
+/// when the file cannot be read or parsed, or holds no triangle.
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error);
 
 /// Mesh files loaded once per run, and their mass properties per (file, scale). Thread-safe.

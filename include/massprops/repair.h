@@ -8,11 +8,10 @@
 /// Bi (URDF <inertial><origin rpy>, SDF <inertial><pose>): an inertia computed in the link frame B
 /// is re-expressed as R_BBiᵀ·I_B·R_BBi before it is written.
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "massprops/model.h"
 
@@ -85,7 +84,7 @@ struct Repair {
   /// The numbers that change, with their element and line (empty when inserts_inertial).
   std::vector<FieldChange> changes;
   int link_line = 0;  ///< Line of the <link> start tag (where an inserted <inertial> goes).
-  std::string why;  ///< One or two sentences: what was wrong and what the new numbers are.
+  std::string why;    ///< One or two sentences: what was wrong and what the new numbers are.
   /// ‖I_after − I_before‖_F / ‖I_before‖_F of the inertia matrices in the link frame (for a mass
   /// change with an unchanged inertia: |Δm| / |m|); 1 when there was nothing before.
   double relative_change = 0;
@@ -98,15 +97,15 @@ struct Repair {
 /// counted twice. `mass` > 0 scales the result to that mass; otherwise mass = density·volume.
 /// Returns the mass properties in the link frame B, or nullopt when the chosen geometries are
 /// not all primitives, there are none, or the volume is zero or not finite. Never throws.
-struct GeometryMassProperties {
+struct PrimitiveMassProperties {
   double mass = 0;
   double volume = 0;
   Eigen::Vector3d p_BoBcm_B = Eigen::Vector3d::Zero();
   Eigen::Matrix3d I_BBcm_B = Eigen::Matrix3d::Zero();
   bool from_collision = true;
 };
-std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Link& link, double density,
-                                                                 double mass = 0);
+std::optional<PrimitiveMassProperties> CalcPrimitiveMassProperties(const Link& link, double density,
+                                                                   double mass = 0);
 
 /// The nearest valid inertia to I (symmetric, finite; products negated as in URDF), by `method`.
 /// A valid I (at `tolerance` relative to the trace) is returned unchanged. Never throws; a

@@ -27,9 +27,9 @@ struct PatchError {
 };
 
 struct PatchResult {
-  std::string text;               ///< The patched text (the original where nothing applied).
-  std::vector<PatchError> errors; ///< Repairs skipped as a whole (none of their edits applied).
-  int applied = 0;                ///< Number of repairs written.
+  std::string text;                ///< The patched text (the original where nothing applied).
+  std::vector<PatchError> errors;  ///< Repairs skipped as a whole (none of their edits applied).
+  int applied = 0;                 ///< Number of repairs written.
 };
 
 /// Writes the repairs into `original` (the text the model was read from). Each link is found by
