@@ -1,5 +1,7 @@
 #include "massprops/checks.h"
 
+#include "massprops/geometry_checks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
@@ -492,6 +494,8 @@ class Checker {
   }
 
   void CheckGroup(const WeldedGroup& group) {
+    // A static SDF model never moves: missing or zero mass properties are what it should have.
+    if (model_.is_static) return;
     const Link& root = model_.links[group.links.front()];
     const CompositeInertia composite = CalcCompositeInertia(model_, group);
     bool all_massless = true;
@@ -642,7 +646,14 @@ const std::vector<RuleInfo>& AllRules() {
       {kInertiaNearBoundary, Severity::kNote, true,
        "The inertia is physically valid only within the tolerance."},
   };
-  return kRules;
+  // The geometry rules (geometry_checks.h) run only with --geometry; listed here so that every
+  // rule id is known to the tool, the configuration file and SARIF.
+  static const std::vector<RuleInfo> kAll = [] {
+    std::vector<RuleInfo> all = kRules;
+    all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
+    return all;
+  }();
+  return kAll;
 }
 
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {

@@ -339,7 +339,13 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
     const BodyMassProperties body =
         MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
     if (!express(link)) return false;
-    report->links.push_back({model.links[link].name, in_frame(body, link)});
+    LinkMassReport entry;
+    entry.name = model.links[link].name;
+    entry.properties = in_frame(body, link);
+    if (options.geometry != nullptr) {
+      entry.geometry = CompareLinkWithGeometry(model.links[link], *options.geometry);
+    }
+    report->links.push_back(std::move(entry));
   }
   for (const WeldedGroup& group : groups) {
     GroupMassReport entry;
@@ -379,6 +385,80 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
   return true;
 }
 
+// ------------------------------------------------------------------------------ geometry
+std::optional<double> CalcPrincipalAxisAngle(const Eigen::Vector3d& moments_A,
+                                             const Eigen::Matrix3d& axes_A,
+                                             const Eigen::Vector3d& moments_B,
+                                             const Eigen::Matrix3d& axes_B, double rel_gap) {
+  // Which adjacent pairs (0-1, 1-2) of ascending moments count as equal.
+  auto equal_pairs = [rel_gap](const Eigen::Vector3d& m, bool eq[2]) {
+    const double scale = std::max({std::abs(m(0)), std::abs(m(1)), std::abs(m(2))});
+    eq[0] = !(std::abs(m(1) - m(0)) > rel_gap * scale);
+    eq[1] = !(std::abs(m(2) - m(1)) > rel_gap * scale);
+  };
+  bool eq_A[2], eq_B[2];
+  equal_pairs(moments_A, eq_A);
+  equal_pairs(moments_B, eq_B);
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  if (!eq_A[0] && !eq_A[1] && !eq_B[0] && !eq_B[1]) {
+    // R = A^T B maps B's axes into A's; flipping two axes of B keeps it a rotation. The rotation
+    // angle θ satisfies trace(R) = 1 + 2 cos θ.
+    const Eigen::Matrix3d R = axes_A.transpose() * axes_B;
+    double best = 180;
+    const double signs[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    for (const auto& d : signs) {
+      const double trace = d[0] * R(0, 0) + d[1] * R(1, 1) + d[2] * R(2, 2);
+      const double c = std::clamp((trace - 1) / 2, -1.0, 1.0);
+      best = std::min(best, std::acos(c) * kDegrees);
+    }
+    return best;
+  }
+  // Exactly one equal pair in each, the same pair: the remaining distinct axis is defined.
+  if (eq_A[0] != eq_A[1] && eq_B[0] == eq_A[0] && eq_B[1] == eq_A[1]) {
+    const int k = eq_A[0] ? 2 : 0;
+    const double c = std::min(1.0, std::abs(axes_A.col(k).dot(axes_B.col(k))));
+    return std::acos(c) * kDegrees;
+  }
+  return std::nullopt;
+}
+
+LinkGeometryComparison CompareLinkWithGeometry(const Link& link,
+                                               const MeshResolveOptions& options) {
+  LinkGeometryComparison result;
+  const double mass = link.inertial ? link.inertial->mass : 0;
+  if (!(mass > 0) || !std::isfinite(mass)) {
+    result.error = "the link declares no positive mass to give its geometry";
+    return result;
+  }
+  std::string error;
+  const std::optional<LinkGeometryInertia> implied =
+      CalcLinkGeometryInertia(link, mass, options, &error);
+  if (!implied) {
+    result.error = error.empty() ? "the link's geometry gives no inertia" : error;
+    return result;
+  }
+  result.from_collision = implied->from_collision;
+  result.geometry = MakeBodyMassProperties(link.name, mass, implied->p_BoBcm_B,
+                                           implied->I_BBcm_B.CopyToFullMatrix3());
+  // The declared inertia, about its center of mass, expressed in B: R_BBi I_Bi R_BBi^T.
+  const Inertial& in = *link.inertial;
+  Eigen::Matrix3d I_Bi;
+  I_Bi << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  const Eigen::Matrix3d& R = in.X_BBi.R_AB;
+  const BodyMassProperties declared =
+      MakeBodyMassProperties(link.name, mass, in.X_BBi.p_AB, R * I_Bi * R.transpose());
+  result.declared_moments = declared.principal_moments;
+  for (int k = 0; k < 3; ++k) {
+    const double g = result.geometry.principal_moments(k);
+    result.moment_rel_diff(k) =
+        g != 0 ? (declared.principal_moments(k) - g) / g : std::numeric_limits<double>::quiet_NaN();
+  }
+  result.axis_angle_deg =
+      CalcPrincipalAxisAngle(declared.principal_moments, declared.principal_axes,
+                             result.geometry.principal_moments, result.geometry.principal_axes);
+  return result;
+}
+
 // ------------------------------------------------------------------------------ renderings
 namespace {
 
@@ -412,6 +492,25 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
       nlohmann::json j;
       j["name"] = link.name;
       AddBody(link.properties, &j);
+      if (link.geometry) {
+        const LinkGeometryComparison& g = *link.geometry;
+        if (!g.error.empty()) {
+          j["geometry"] = {{"error", g.error}};
+        } else {
+          nlohmann::json rel = nlohmann::json::array();
+          for (int k = 0; k < 3; ++k) {
+            const double v = g.moment_rel_diff(k);
+            rel.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json());
+          }
+          j["geometry"] = {{"source", g.from_collision ? "collision" : "visual"},
+                           {"com", Vec(g.geometry.com)},
+                           {"inertia_about_com", Mat(g.geometry.inertia_about_com)},
+                           {"principal_moments", Vec(g.geometry.principal_moments)},
+                           {"moment_rel_diff", std::move(rel)},
+                           {"axis_angle_deg", g.axis_angle_deg ? nlohmann::json(*g.axis_angle_deg)
+                                                               : nlohmann::json()}};
+        }
+      }
       model["links"].push_back(std::move(j));
     }
     model["welded_groups"] = nlohmann::json::array();
@@ -581,6 +680,30 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
       std::string list;
       for (const std::string& name : report.unreachable_links) list += " " + name;
       notes.push_back("left out of the total (not connected to the root link):" + list);
+    }
+    std::vector<std::vector<std::string>> g{{"link", "source", "I1_geometry", "I2_geometry",
+                                             "I3_geometry", "rel_diff_1", "rel_diff_2",
+                                             "rel_diff_3", "axis_angle_deg"}};
+    for (const auto& link : report.links) {
+      if (!link.geometry) continue;
+      const LinkGeometryComparison& c = *link.geometry;
+      if (!c.error.empty()) {
+        notes.push_back("link '" + link.name + "': no geometry inertia: " + c.error);
+        continue;
+      }
+      std::vector<std::string> row{link.name, c.from_collision ? "collision" : "visual"};
+      for (int k = 0; k < 3; ++k) row.push_back(Number(c.geometry.principal_moments(k), kDigits));
+      for (int k = 0; k < 3; ++k) {
+        row.push_back(std::isfinite(c.moment_rel_diff(k)) ? Number(c.moment_rel_diff(k), 3)
+                                                          : "n/a");
+      }
+      row.push_back(c.axis_angle_deg ? Number(*c.axis_angle_deg, 3) : "n/a");
+      g.push_back(std::move(row));
+    }
+    if (g.size() > 1) {
+      out << " inertia implied by the geometry for the declared mass (link frame), relative "
+             "difference of the declared principal moments, angle between principal axes:\n";
+      WriteTable(out, g, 2);
     }
     for (const std::string& note : notes) out << " note: " << note << "\n";
   }

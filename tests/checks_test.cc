@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "massprops/sdf_reader.h"
 #include "massprops/urdf_reader.h"
 
 namespace massprops {
@@ -68,11 +69,37 @@ INSTANTIATE_TEST_SUITE_P(EveryRuleWithAFixture, RuleFixtureTest,
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
-  EXPECT_EQ(ids.size(), 12u);
+  // 12 rules of CheckModel + 2 geometry rules (geometry_checks.h), off unless --geometry.
+  EXPECT_EQ(ids.size(), 14u);
+  EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);
   EXPECT_EQ(ToString(Severity::kNote), std::string("note"));
   EXPECT_EQ(ParseSeverity("warning"), Severity::kWarning);
   EXPECT_FALSE(ParseSeverity("fatal").has_value());
+}
+
+// SDF spec (model.sdf): a static model "is immovable", so a wall with collision geometry and no
+// <inertial>, or a massless moving link inside it, is what the file should say: nothing is reported.
+// The same model without <static> gets inertial-missing for its links.
+TEST(ChecksTest, StaticSdfModelsNeedNoMassProperties) {
+  const std::string body =
+      "<link name='base'><collision name='c'><geometry><box><size>1 1 1</size></box></geometry>"
+      "</collision></link>\n"
+      "<link name='door'><inertial><mass>0</mass></inertial><collision name='c'><geometry><box>"
+      "<size>1 1 0.1</size></box></geometry></collision></link>\n"
+      "<joint name='hinge' type='revolute'><parent>base</parent><child>door</child>"
+      "<axis><xyz>0 0 1</xyz></axis></joint>\n";
+  const ReadResult fixed = ReadSdfString(
+      "<sdf version='1.7'><model name='wall'><static>true</static>\n" + body + "</model></sdf>",
+      "static.sdf");
+  ASSERT_TRUE(fixed.ok()) << fixed.errors.front().ToString();
+  EXPECT_TRUE(CheckModel(fixed.models[0]).empty()) << Dump(CheckModel(fixed.models[0]));
+  const ReadResult moving = ReadSdfString(
+      "<sdf version='1.7'><model name='wall'>\n" + body + "</model></sdf>", "moving.sdf");
+  ASSERT_TRUE(moving.ok()) << moving.errors.front().ToString();
+  const std::vector<Finding> findings = CheckModel(moving.models[0]);
+  EXPECT_EQ(Select(findings, "inertial-missing").size(), 1u) << Dump(findings);
+  EXPECT_EQ(Select(findings, "massless-moving-body").size(), 1u) << Dump(findings);
 }
 
 // A clean arm: valid inertias, a massless tool0, a zero-mass flange with an inertial of zeros and

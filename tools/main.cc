@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "geometry_cli.h"
 #include "massprops/checks.h"
 #include "massprops/config.h"
 #include "massprops/model.h"
@@ -297,6 +298,8 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
       result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
       result.models.push_back(model.name);
       std::vector<Finding> findings = massprops::CheckModel(model, settings[i].options);
+      massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
+                                          &findings);
       result.findings.insert(result.findings.end(), findings.begin(), findings.end());
     }
     if (!result.errors.empty()) read_failed = true;
@@ -392,6 +395,7 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
   check->add_flag("--list-rules", args.list_rules, "List the rules and their default severities");
+  massprops::cli::AddGeometryCheckOptions(check);
 
   // Subcommands defined in other files (tools/commands.h) set `run` when chosen.
   std::function<int()> run;

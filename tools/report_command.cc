@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "massprops/mass_report.h"
 #include "massprops/merge_fixed.h"
+#include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
 
 namespace massprops::cli {
@@ -31,6 +32,8 @@ struct ReportArgs {
   std::vector<std::string> only;
   std::string subtree;
   std::vector<std::string> model_paths;
+  bool geometry = false;
+  std::vector<std::string> package_paths;
 };
 
 struct MergeArgs {
@@ -75,12 +78,20 @@ int RunReport(const ReportArgs& args) {
   read_options.sdf.model_paths = args.model_paths;
   std::vector<ModelMassReport> reports;
   std::vector<MassReportError> errors;
+  MeshCache mesh_cache;
   for (const std::string& file : args.files) {
     const ReadResult read = ReadModelFile(file, read_options);
     for (const ReadError& e : read.errors) {
       errors.push_back({e.location.file, e.location.line,
                         e.element.empty() ? e.message : e.element + ": " + e.message});
     }
+    // One mesh cache per run; relative mesh paths are relative to this file.
+    MeshResolveOptions geometry;
+    geometry.package_paths = args.package_paths;
+    geometry.model_paths = args.model_paths;
+    geometry.model_file = file;
+    geometry.cache = &mesh_cache;
+    options.geometry = args.geometry ? &geometry : nullptr;
     for (const Model& model : read.models) {
       ModelMassReport report;
       std::string error;
@@ -177,6 +188,15 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
   report
       ->add_option("--model-path", report_args->model_paths,
                    "Folder searched for SDF model:// URIs (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  report->add_flag("--geometry", report_args->geometry,
+                   "Also give, per link, the inertia its geometry (collision, else visual; "
+                   "meshes read) implies for its declared mass, and how the declared one differs");
+  report
+      ->add_option("--package-path", report_args->package_paths,
+                   "Folder searched for package:// mesh URIs before ROS_PACKAGE_PATH and "
+                   "AMENT_PREFIX_PATH (repeatable)")
       ->type_name("DIR")
       ->allow_extra_args(false);
   report->callback(

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "massprops/mesh_loader.h"
 #include "massprops/model.h"
 #include "massprops/welded_groups.h"
 
@@ -36,6 +37,10 @@ struct MassReportOptions {
   /// A body whose estimated digits lost (BodyMassProperties::digits_lost) exceed this many gets
   /// a note in the text output.
   double digits_lost_threshold = 6;
+  /// When not null (`report --geometry`): every reported link also gets the inertia its geometry
+  /// implies for its declared mass (LinkMassReport::geometry), meshes resolved and cached as
+  /// these options say. Not owned; must outlive ComputeMassReport.
+  const MeshResolveOptions* geometry = nullptr;
 };
 
 /// The mass properties of one body (a link, a welded group, or a whole model or subtree),
@@ -61,10 +66,50 @@ struct BodyMassProperties {
   double digits_lost = 0;
 };
 
+/// A link's declared central inertia beside the one its geometry implies for the same mass,
+/// everything in the link's own frame B (whatever MassReportOptions::frame says).
+struct LinkGeometryComparison {
+  /// Why there is no comparison (a mesh not found or unreadable, no geometry, no positive
+  /// declared mass); the fields below are then unset. Empty on success.
+  std::string error;
+  bool from_collision = true;  ///< false when the visual geometries were used.
+  /// The geometry-implied body: center of mass p_BoBcm_B, inertia about it expressed in B,
+  /// principal moments (ascending) and axes.
+  BodyMassProperties geometry;
+  /// The declared central inertia's principal moments (ascending).
+  Eigen::Vector3d declared_moments = Eigen::Vector3d::Zero();
+  /// Per principal moment k (both sorted ascending): (declared_k − geometry_k) / geometry_k;
+  /// NaN where geometry_k is 0.
+  Eigen::Vector3d moment_rel_diff = Eigen::Vector3d::Zero();
+  /// The angle (degrees, in [0, 90] per axis, [0, 180] for frames) between the declared and the
+  /// geometry-implied principal axes; nullopt when the axes are not defined (see
+  /// CalcPrincipalAxisAngle).
+  std::optional<double> axis_angle_deg;
+};
+
+/// The angle in degrees between two sets of principal axes, given by the principal moments
+/// (ascending) and the axes (columns, right-handed) of two inertias A and B. Moments closer than
+/// `rel_gap` × the largest moment count as equal. When every moment of both is distinct: the
+/// smallest rotation angle taking A's axes to B's, over the four sign choices of the axes that
+/// keep them right-handed. When both have exactly one pair of equal moments and the distinct one
+/// has the same rank: the angle between the two distinct axes (0..90). Otherwise nullopt (a
+/// sphere-like inertia has no axes). Never throws.
+std::optional<double> CalcPrincipalAxisAngle(const Eigen::Vector3d& moments_A,
+                                             const Eigen::Matrix3d& axes_A,
+                                             const Eigen::Vector3d& moments_B,
+                                             const Eigen::Matrix3d& axes_B, double rel_gap = 1e-3);
+
+/// Compares `link`'s declared central inertia (re-expressed in the link frame B) with the one
+/// CalcLinkGeometryInertia gives for the declared mass. Failures are values (error set). Cost:
+/// that of CalcLinkGeometryInertia (meshes loaded once per options.cache).
+LinkGeometryComparison CompareLinkWithGeometry(const Link& link, const MeshResolveOptions& options);
+
 /// One link's entry.
 struct LinkMassReport {
   std::string name;
   BodyMassProperties properties;
+  /// With MassReportOptions::geometry only.
+  std::optional<LinkGeometryComparison> geometry;
 };
 
 /// One welded group's entry.

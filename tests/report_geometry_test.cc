@@ -1,0 +1,191 @@
+// `massprops report --geometry`: the inertia a link's geometry implies beside the declared one.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "massprops/mass_report.h"
+#include "massprops/mesh_loader.h"
+#include "massprops/model_reader.h"
+
+namespace massprops {
+namespace {
+
+const std::string kBoxes = std::string(MASSPROPS_TESTDATA_DIR) + "/geometry/boxes.urdf";
+
+struct ToolRun {
+  int exit_code = -1;
+  std::string output;
+};
+
+ToolRun RunTool(const std::string& args) {
+  const std::string command = std::string("'") + MASSPROPS_TOOL_PATH + "' " + args + " 2>/dev/null";
+  ToolRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return run;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+const nlohmann::json& LinkNamed(const nlohmann::json& model, const std::string& name) {
+  for (const nlohmann::json& link : model["links"]) {
+    if (link["name"] == name) return link;
+  }
+  static const nlohmann::json none;
+  ADD_FAILURE() << "no link " << name;
+  return none;
+}
+
+ModelMassReport ReportBoxes(MeshCache* cache) {
+  const ReadResult read = ReadModelFile(kBoxes);
+  EXPECT_TRUE(read.errors.empty());
+  MeshResolveOptions resolve;
+  resolve.model_file = kBoxes;
+  resolve.use_environment = false;
+  resolve.cache = cache;
+  MassReportOptions options;
+  options.geometry = &resolve;
+  ModelMassReport report;
+  std::string error;
+  EXPECT_TRUE(ComputeMassReport(read.models.at(0), options, &report, &error)) << error;
+  return report;
+}
+
+const LinkMassReport& Find(const ModelMassReport& report, const std::string& name) {
+  for (const LinkMassReport& link : report.links) {
+    if (link.name == name) return link;
+  }
+  throw std::runtime_error("no link " + name);
+}
+
+TEST(ReportGeometryTest, BoxDeclaredWithItsOwnFormulaHasZeroDifferenceAndZeroAxisAngle) {
+  MeshCache cache;
+  const ModelMassReport report = ReportBoxes(&cache);
+  const LinkMassReport& link = Find(report, "box_exact");
+  ASSERT_TRUE(link.geometry);
+  ASSERT_TRUE(link.geometry->error.empty()) << link.geometry->error;
+  EXPECT_TRUE(link.geometry->from_collision);
+  // Textbook box formula m(b²+c²)/12 etc. with m = 2, sides 0.1, 0.2, 0.3, ascending.
+  EXPECT_NEAR(link.geometry->geometry.principal_moments(0), 2 * (0.01 + 0.04) / 12, 1e-15);
+  EXPECT_NEAR(link.geometry->geometry.principal_moments(1), 2 * (0.01 + 0.09) / 12, 1e-15);
+  EXPECT_NEAR(link.geometry->geometry.principal_moments(2), 2 * (0.04 + 0.09) / 12, 1e-15);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(link.geometry->moment_rel_diff(k), 0, 1e-12);
+  ASSERT_TRUE(link.geometry->axis_angle_deg);
+  EXPECT_NEAR(*link.geometry->axis_angle_deg, 0, 1e-6);
+}
+
+TEST(ReportGeometryTest, DeclaredTenTimesTheBoxGivesRelativeDifferenceNine) {
+  MeshCache cache;
+  const ModelMassReport report = ReportBoxes(&cache);
+  const LinkMassReport& link = Find(report, "box_ten_times");
+  ASSERT_TRUE(link.geometry && link.geometry->error.empty());
+  // Hand-derived: (10 g − g) / g = 9 for every moment.
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(link.geometry->moment_rel_diff(k), 9, 1e-12);
+}
+
+TEST(ReportGeometryTest, BoxTurnedNinetyDegreesAboutZHasAxesNinetyDegreesApart) {
+  MeshCache cache;
+  const ModelMassReport report = ReportBoxes(&cache);
+  const LinkMassReport& link = Find(report, "box_turned");
+  ASSERT_TRUE(link.geometry && link.geometry->error.empty());
+  // Same principal moments (a rotation does not change them), axes turned by 90° about z.
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(link.geometry->moment_rel_diff(k), 0, 1e-12);
+  ASSERT_TRUE(link.geometry->axis_angle_deg);
+  EXPECT_NEAR(*link.geometry->axis_angle_deg, 90, 1e-6);
+}
+
+TEST(ReportGeometryTest, StlBoxMeshWithCornerAtOriginMatchesTheBoxAtItsCenter) {
+  MeshCache cache;
+  const ModelMassReport report = ReportBoxes(&cache);
+  const LinkMassReport& link = Find(report, "mesh_box");
+  ASSERT_TRUE(link.geometry);
+  ASSERT_TRUE(link.geometry->error.empty()) << link.geometry->error;
+  // Hand-derived: the box [0,0.1]x[0,0.2]x[0,0.3] has its center at (0.05, 0.1, 0.15). STL
+  // vertices are 32-bit floats (relative rounding ~6e-8), hence the 1e-6 tolerances.
+  EXPECT_NEAR(link.geometry->geometry.com(0), 0.05, 1e-7);
+  EXPECT_NEAR(link.geometry->geometry.com(1), 0.1, 1e-7);
+  EXPECT_NEAR(link.geometry->geometry.com(2), 0.15, 1e-7);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(link.geometry->moment_rel_diff(k), 0, 1e-6);
+}
+
+TEST(ReportGeometryTest, MissingMeshIsAnErrorOfThatLinkOnly) {
+  MeshCache cache;
+  const ModelMassReport report = ReportBoxes(&cache);
+  const LinkMassReport& link = Find(report, "missing_mesh");
+  ASSERT_TRUE(link.geometry);
+  EXPECT_NE(link.geometry->error.find("no_such_mesh.stl"), std::string::npos)
+      << link.geometry->error;
+}
+
+TEST(ReportGeometryTest, SphereLikeInertiaHasNoAxisAngle) {
+  // A sphere's moments are all equal: its principal axes are not defined.
+  const Eigen::Vector3d equal(1, 1, 1);
+  const Eigen::Vector3d distinct(1, 2, 3);
+  EXPECT_FALSE(CalcPrincipalAxisAngle(equal, Eigen::Matrix3d::Identity(), distinct,
+                                      Eigen::Matrix3d::Identity()));
+}
+
+TEST(ReportGeometryTest, CylinderLikeInertiasCompareTheirSymmetryAxes) {
+  // Two inertias with I1 = I2 < I3: only the third axis is defined. Hand-derived: B's third
+  // axis is A's z turned by 30° about x, so the angle is 30°.
+  const Eigen::Vector3d moments(1, 1, 2);
+  const double a = 30 * 3.14159265358979323846 / 180;
+  Eigen::Matrix3d R_B;
+  R_B << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+  const std::optional<double> angle =
+      CalcPrincipalAxisAngle(moments, Eigen::Matrix3d::Identity(), moments, R_B);
+  ASSERT_TRUE(angle);
+  EXPECT_NEAR(*angle, 30, 1e-9);
+}
+
+TEST(ReportGeometryTest, JsonHasGeometryPerLinkAndAnErrorObjectForTheMissingMeshWithExitZero) {
+  const ToolRun run = RunTool("report --geometry --format json '" + kBoxes + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  const nlohmann::json& model = json["models"][0];
+  const nlohmann::json& exact = LinkNamed(model, "box_exact")["geometry"];
+  EXPECT_EQ(exact["source"], "collision");
+  // Box formula (see the fixture's comment): I3 = 0.26/12.
+  EXPECT_NEAR(exact["principal_moments"][2].get<double>(), 0.26 / 12, 1e-15);
+  EXPECT_NEAR(exact["moment_rel_diff"][0].get<double>(), 0, 1e-12);
+  EXPECT_NEAR(exact["axis_angle_deg"].get<double>(), 0, 1e-6);
+  EXPECT_EQ(exact["inertia_about_com"].size(), 3u);
+  EXPECT_EQ(exact["com"].size(), 3u);
+  const nlohmann::json& missing = LinkNamed(model, "missing_mesh")["geometry"];
+  ASSERT_TRUE(missing.contains("error"));
+  EXPECT_NE(missing["error"].get<std::string>().find("no_such_mesh.stl"), std::string::npos);
+}
+
+TEST(ReportGeometryTest, WithoutTheFlagTheJsonHasNoGeometry) {
+  const ToolRun run = RunTool("report --format json '" + kBoxes + "'");
+  ASSERT_EQ(run.exit_code, 0);
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  EXPECT_FALSE(LinkNamed(json["models"][0], "box_exact").contains("geometry"));
+}
+
+TEST(ReportGeometryTest, CorpusDoublePendulumLink1AgreesWithItsMeshWithinOnePercent) {
+  // ../shared/corpus/example-robot-data: the meshes are package://example-robot-data/...,
+  // found with --package-path at the corpus (docs/meshes.md); docs/meshes.md's table gives
+  // link1 a relative difference of 0.01 % (declared and mesh moments 3.55e-05, 3.88e-4, 4.09e-4).
+  const std::string corpus = MASSPROPS_CORPUS_DIR;
+  const std::string file =
+      corpus + "/example-robot-data/robots/double_pendulum_description/urdf/double_pendulum.urdf";
+  const ToolRun run =
+      RunTool("report --geometry --format json --package-path '" + corpus + "' '" + file + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  const nlohmann::json& link1 = LinkNamed(json["models"][0], "link1")["geometry"];
+  ASSERT_FALSE(link1.contains("error")) << link1.dump();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_LT(std::abs(link1["moment_rel_diff"][k].get<double>()), 0.01) << k;
+  }
+}
+
+}  // namespace
+}  // namespace massprops

@@ -1,0 +1,24 @@
+#pragma once
+// `massprops check --geometry`: the options and the glue that runs the geometry rules
+// (include/massprops/geometry_checks.h) inside the check command. Defined in
+// tools/geometry_check_command.cc; main.cc calls these in four places.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "massprops/checks.h"
+#include "massprops/model.h"
+
+namespace massprops::cli {
+
+/// Adds --geometry, --geometry-factor X and --package-path DIR to the check subcommand.
+void AddGeometryCheckOptions(CLI::App* check);
+
+/// Appends the geometry findings of `model` when --geometry was given (one mesh cache per run),
+/// honouring `options.overrides` for the geometry rules. `model_paths` are searched for
+/// model:// mesh URIs.
+void AddGeometryFindings(const Model& model, const CheckOptions& options,
+                         const std::vector<std::string>& model_paths,
+                         std::vector<Finding>* findings);
+
+}  // namespace massprops::cli
