@@ -308,7 +308,15 @@ bool UrdfParser::ParseGeometryHolder(const XMLElement* e, const std::string& lin
       return false;
     }
     geometry->uri = filename;
-    ok &= Vector3(shape, "scale", where, &geometry->scale);
+    if (!Vector3(shape, "scale", where, &geometry->scale)) {
+      // A mesh's scale changes no inertial number: urdfdom logs it and drops the element; we keep
+      // reading the model and say so (the mesh keeps scale 1).
+      ReadError error = std::move(result_.errors.back());
+      result_.errors.pop_back();
+      error.message += " (urdfdom drops this element; massprops reads the mesh with scale 1)";
+      result_.warnings.push_back(std::move(error));
+      geometry->scale = Eigen::Vector3d::Ones();
+    }
   } else {
     Error(shape, where.ToString(),
           std::string("unknown geometry type <") + type +
@@ -319,9 +327,10 @@ bool UrdfParser::ParseGeometryHolder(const XMLElement* e, const std::string& lin
     if (const XMLElement* material = e->FirstChildElement("material")) {
       const char* name = material->Attribute("name");
       if (name == nullptr) {
-        Error(material, Where{"material", "link", &link, holder, index}.ToString(),
-              "missing required attribute 'name'");
-        ok = false;
+        // No inertial number depends on a material: a warning (urdfdom logs an error and drops
+        // the <visual>), and the model is still checked.
+        Warning(material, Where{"material", "link", &link, holder, index}.ToString(),
+                "missing required attribute 'name' (urdfdom drops this <visual>)");
       } else if (material->FirstChildElement("color") == nullptr &&
                  material->FirstChildElement("texture") == nullptr &&
                  material_names_.count(name) == 0) {

@@ -88,6 +88,8 @@ const char* const kGimbalFiles[] = {
     "unitree_ros/robots/g1_description/g1_29dof_rev_1_0_with_inspire_hand_FTP.urdf",
     "unitree_ros/robots/g1_description/inspire_hand/FTP_left_hand.urdf",
     "unitree_ros/robots/h2_plus/H2_Plus.urdf",
+    // The same inspire FTP hand, read since <material> without a name became a warning.
+    "unitree_ros/robots/h1_2_description/h1_2_with_FTP_hand.urdf",
 };
 
 bool IsKnownException(const Difference& d) {
