@@ -4,7 +4,8 @@
 //   Massprops massprops::ReadUrdfString: parse + model + line numbers + all checks urdfdom makes;
 //   MasspropsFile  massprops::ReadUrdfFile on the same text written to a temporary file.
 // The text is MakeChainUrdf(n), byte-identical to `tools/gen_chain.py n OUT`.
-// Results and commands: bench/RESULTS-read.md.
+//   ReadAndCheck   ReadUrdfString + CheckModel: what `massprops check` costs per file.
+// Results and commands: README.md, section "Benchmarks".
 
 #include <benchmark/benchmark.h>
 #include <tinyxml2.h>
@@ -16,7 +17,9 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "massprops/checks.h"
 #include "massprops/urdf_reader.h"
 
 namespace {
@@ -129,6 +132,20 @@ void BM_MasspropsFile(benchmark::State& state) {
   Report(state, n);
 }
 
+// What `massprops check` does per file: read, then every rule (welded groups, composites,
+// principal moments). Issue 4's budget: at most 1.3x urdfdom's parse alone (BM_Urdfdom).
+void BM_ReadAndCheck(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const std::string& xml = Chain(n);
+  for (auto _ : state) {
+    massprops::ReadResult result = massprops::ReadUrdfString(xml, "chain.urdf");
+    if (!result.ok()) state.SkipWithError("massprops failed");
+    const std::vector<massprops::Finding> findings = massprops::CheckModel(result.models[0]);
+    benchmark::DoNotOptimize(findings.data());
+  }
+  Report(state, n);
+}
+
 void Sizes(benchmark::internal::Benchmark* b) {
   for (int n : {10, 100, 1000, 10000, 100000}) b->Arg(n);
   b->Unit(benchmark::kMillisecond);
@@ -138,6 +155,7 @@ BENCHMARK(BM_Urdfdom)->Apply(Sizes);
 BENCHMARK(BM_Tinyxml2)->Apply(Sizes);
 BENCHMARK(BM_Massprops)->Apply(Sizes);
 BENCHMARK(BM_MasspropsFile)->Apply(Sizes);
+BENCHMARK(BM_ReadAndCheck)->Apply(Sizes);
 
 }  // namespace
 

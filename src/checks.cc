@@ -1,7 +1,5 @@
 #include "massprops/checks.h"
 
-#include "massprops/geometry_checks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
@@ -11,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/geometry_checks.h"
 #include "massprops/principal_axes.h"
 #include "massprops/rotational_inertia.h"
 #include "massprops/welded_groups.h"
@@ -18,7 +17,7 @@
 namespace massprops {
 namespace {
 
-// Rule ids (stable; documented in docs/rules.md).
+// Rule ids (stable; documented in README.md (Rules)).
 constexpr const char* kMassNotPositive = "mass-not-positive";
 constexpr const char* kInertiaNotFinite = "inertia-not-finite";
 constexpr const char* kInertiaNotPhysical = "inertia-not-physical";

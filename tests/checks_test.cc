@@ -42,7 +42,7 @@ std::string Dump(const std::vector<Finding>& findings) {
 }
 
 // Every rule has a fixture testdata/check/<rule>.urdf that triggers it and
-// testdata/check/<rule>-ok.urdf that barely does not (numbers explained in docs/rules.md).
+// testdata/check/<rule>-ok.urdf that barely does not (numbers explained in README.md (Rules)).
 class RuleFixtureTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RuleFixtureTest, TriggersOnItsFixtureAndNotOnTheBarelyValidOne) {
@@ -79,8 +79,8 @@ TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
 }
 
 // SDF spec (model.sdf): a static model "is immovable", so a wall with collision geometry and no
-// <inertial>, or a massless moving link inside it, is what the file should say: nothing is reported.
-// The same model without <static> gets inertial-missing for its links.
+// <inertial>, or a massless moving link inside it, is what the file should say: nothing is
+// reported. The same model without <static> gets inertial-missing for its links.
 TEST(ChecksTest, StaticSdfModelsNeedNoMassProperties) {
   const std::string body =
       "<link name='base'><collision name='c'><geometry><box><size>1 1 1</size></box></geometry>"

@@ -59,7 +59,7 @@ std::optional<Repair> RepairOf(const std::vector<Repair>& repairs, const std::st
 }
 
 TEST(RepairInertiaTest, ValidInertiaIsReturnedUnchanged) {
-  // A thin disk diag(1, 1, 2) lies on the boundary and is valid (docs/rules.md).
+  // A thin disk diag(1, 1, 2) lies on the boundary and is valid (README.md (Rules)).
   const Eigen::Matrix3d disk = Eigen::Vector3d(1, 1, 2).asDiagonal();
   EXPECT_EQ(RepairInertia(disk, InertiaRepairMethod::kProject), disk);
   EXPECT_EQ(RepairInertia(disk, InertiaRepairMethod::kBalance), disk);
@@ -224,8 +224,8 @@ TEST(PlanRepairsTest, BalanceOptionSetsMomentsToTheirMean) {
 }
 
 TEST(PlanRepairsTest, ProductsWithTheWrongSignAreNegated) {
-  // docs/rules.md products-sign-suspect example: products 0.0045 are invalid, -0.0045 valid. With
-  // no geometry there is nothing to compare with: the negation is taken.
+  // README.md (Rules) products-sign-suspect example: products 0.0045 are invalid, -0.0045 valid.
+  // With no geometry there is nothing to compare with: the negation is taken.
   const Model model = Read(
       ArmUrdf("<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0.0045\" ixz=\"0.0045\" "
               "iyy=\"0.01\" iyz=\"0.0045\" izz=\"0.01\"/></inertial>\n",
@@ -241,7 +241,7 @@ TEST(PlanRepairsTest, ProductsWithTheWrongSignAreNegated) {
 }
 
 TEST(PlanRepairsTest, MassInGramsIsDividedByAThousandWhenUnambiguous) {
-  // docs/rules.md units-suspect example: cylinder r 0.05, l 0.4 with m = 2000 "kg" and the
+  // README.md (Rules) units-suspect example: cylinder r 0.05, l 0.4 with m = 2000 "kg" and the
   // inertia of a 2 kg cylinder ((3r² + l²)/12·2 = 0.0279167): only the grams reading lands in
   // the plausible band, so no --fix-units is needed.
   const Model model = Read(
@@ -278,8 +278,8 @@ TEST(PlanRepairsTest, AmbiguousUnitsAreRescaledOnlyWithFixUnits) {
 }
 
 TEST(PlanRepairsTest, InertiaAboutTheLinkOriginIsShiftedToTheCenterOfMass) {
-  // docs/rules.md inertia-about-origin-suspect example: 0.251 − 1·0.5² = 0.001 (a solid sphere's
-  // 2/5·m·r² for r = 0.05).
+  // README.md (Rules) inertia-about-origin-suspect example: 0.251 − 1·0.5² = 0.001 (a solid
+  // sphere's 2/5·m·r² for r = 0.05).
   const Model model = Read(ArmUrdf(
       "<inertial><origin xyz=\"0.5 0 0\"/><mass value=\"1\"/><inertia ixx=\"0.001\" ixy=\"0\" "
       "ixz=\"0\" iyy=\"0.251\" iyz=\"0\" izz=\"0.251\"/></inertial>\n",

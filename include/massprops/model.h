@@ -5,12 +5,11 @@
 /// element with the SourceLocation it was read from. Numbers are stored as written in the file
 /// (no silent fix-ups), so a check can quote them and a fix can rewrite them.
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 namespace massprops {
 
@@ -54,17 +53,18 @@ struct Geometry {
   Type type = Type::kOther;
   Eigen::Vector3d size = Eigen::Vector3d::Zero();  ///< kBox: full lengths along x, y, z.
   double radius = 0;                               ///< kCylinder, kSphere, kCapsule.
-  double length = 0;  ///< kCylinder, kCapsule: along the geometry's z axis (capsule: cylinder part).
+  double length =
+      0;  ///< kCylinder, kCapsule: along the geometry's z axis (capsule: cylinder part).
   Eigen::Vector3d radii = Eigen::Vector3d::Zero();  ///< kEllipsoid: semi-axes along x, y, z.
-  std::string uri;                                   ///< kMesh: the filename/uri, as written.
-  Eigen::Vector3d scale = Eigen::Vector3d::Ones();   ///< kMesh.
+  std::string uri;                                  ///< kMesh: the filename/uri, as written.
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();  ///< kMesh.
   Pose X_BG;
   bool is_collision = true;  ///< false for <visual>.
   SourceLocation location;   ///< The <collision>/<visual> element.
 };
 
 struct Link {
-  std::string name;  ///< SDF: scoped name of a nested model's link ("inner::link").
+  std::string name;                  ///< SDF: scoped name of a nested model's link ("inner::link").
   std::optional<Inertial> inertial;  ///< Absent when the file has no <inertial> (massless link).
   std::vector<Geometry> geometries;  ///< Collisions and visuals, in file order.
   /// Rule ids disabled for this link by a `<!-- massprops: ignore rule-id [rule-id...] -->`
@@ -74,8 +74,18 @@ struct Link {
 };
 
 struct Joint {
-  enum class Type { kFixed, kRevolute, kContinuous, kPrismatic, kFloating, kPlanar, kBall,
-                    kUniversal, kScrew, kOther };
+  enum class Type {
+    kFixed,
+    kRevolute,
+    kContinuous,
+    kPrismatic,
+    kFloating,
+    kPlanar,
+    kBall,
+    kUniversal,
+    kScrew,
+    kOther
+  };
   std::string name;
   Type type = Type::kOther;
   std::string type_name;  ///< As written in the file ("revolute", "fixed", ...).
@@ -85,7 +95,7 @@ struct Joint {
   /// URDF: the joint <origin>. SDF: computed from the resolved link poses.
   Pose X_PC;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  ///< Unit axis, expressed in the child frame C.
-  SourceLocation location;  ///< The <joint> element.
+  SourceLocation location;                          ///< The <joint> element.
 };
 
 struct Model {

@@ -16,7 +16,7 @@
 /// squares are safe (shifted entries below about 1e-146 or above 1e153 in double) go to a cyclic
 /// Jacobi iteration, after an exact scaling by a power of two, with a bounded number of sweeps.
 ///
-/// Measured in double (bench/RESULTS-principal-axes.md, same inputs for every solver): kAccurate
+/// Measured in double (README.md (Benchmarks), same inputs for every solver): kAccurate
 /// eigenvalues within about 1.1 eps of the trace on rotated inertias, thin rods and near-spheres,
 /// axes orthonormal to about 5 eps; kFast values within about 60 eps of the trace; with vectors,
 /// both solvers run the same code. kAccurate is about 3.6-4.2x faster than Eigen 3.4's

@@ -1,5 +1,5 @@
-// Uses the installed library: a solid cube of mass 2 kg and side 0.3 m has Ixx = m·L²/6 = 0.03 kg·m²
-// (textbook: I = m(b² + c²)/12 for a box), and its principal moments are all equal to that.
+// Uses the installed library: a solid cube of mass 2 kg and side 0.3 m has Ixx = m·L²/6 = 0.03
+// kg·m² (textbook: I = m(b² + c²)/12 for a box), and its principal moments are all equal to that.
 #include <cmath>
 #include <iostream>
 
