@@ -218,8 +218,10 @@ bool UrdfParser::Vector3(const XMLElement* e, const char* attribute, const Where
 bool UrdfParser::Origin(const XMLElement* e, const Where& where, Pose* pose) {
   Eigen::Vector3d xyz = Eigen::Vector3d::Zero();
   Eigen::Vector3d rpy = Eigen::Vector3d::Zero();
-  const bool ok = Vector3(e, "xyz", where, &xyz) & Vector3(e, "rpy", where, &rpy);
-  if (!ok) return false;
+  // Both attributes are read, so that both are reported when both are wrong.
+  const bool xyz_ok = Vector3(e, "xyz", where, &xyz);
+  const bool rpy_ok = Vector3(e, "rpy", where, &rpy);
+  if (!xyz_ok || !rpy_ok) return false;
   pose->p_AB = xyz;
   pose->R_AB = e->Attribute("rpy") != nullptr ? RotationFromRpy(rpy.x(), rpy.y(), rpy.z())
                                               : Eigen::Matrix3d::Identity();

@@ -2,16 +2,19 @@
 #include "massprops/geometry_checks.h"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "massprops/model_reader.h"
+#include "tool_runner.h"
 
 namespace massprops {
 namespace {
+
+using massprops::test_support::RunTool;
+using massprops::test_support::ToolRun;
 
 const std::string kBoxes = std::string(MASSPROPS_TESTDATA_DIR) + "/geometry/boxes.urdf";
 
@@ -101,40 +104,22 @@ TEST(GeometryChecksTest, WithoutGeometryEnabledThereAreNoFindings) {
   EXPECT_TRUE(Check(GeometryCheckOptions(), &cache).empty());
 }
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-ToolRun RunTool(const std::string& args) {
-  const std::string command = std::string("'") + MASSPROPS_TOOL_PATH + "' " + args + " 2>&1";
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
-
 TEST(GeometryChecksTest, CheckCommandRunsTheRulesOnlyWithTheGeometryFlag) {
-  const ToolRun with = RunTool("check --geometry '" + kBoxes + "'");
+  const ToolRun with = RunTool("check --geometry '" + kBoxes + "'", true);
   EXPECT_NE(with.output.find("inertia-disagrees-with-geometry"), std::string::npos) << with.output;
   EXPECT_NE(with.output.find("mesh-unreadable"), std::string::npos) << with.output;
-  const ToolRun without = RunTool("check '" + kBoxes + "'");
+  const ToolRun without = RunTool("check '" + kBoxes + "'", true);
   EXPECT_EQ(without.output.find("inertia-disagrees-with-geometry"), std::string::npos)
       << without.output;
   EXPECT_EQ(without.output.find("mesh-unreadable"), std::string::npos) << without.output;
 }
 
 TEST(GeometryChecksTest, CheckCommandAcceptsTheFactorAndDisablingTheRules) {
-  const ToolRun run =
-      RunTool("check --geometry --geometry-factor 20 --disable mesh-unreadable '" + kBoxes + "'");
+  const ToolRun run = RunTool(
+      "check --geometry --geometry-factor 20 --disable mesh-unreadable '" + kBoxes + "'", true);
   EXPECT_EQ(run.output.find("inertia-disagrees-with-geometry"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("mesh-unreadable"), std::string::npos) << run.output;
-  const ToolRun list = RunTool("check --list-rules");
+  const ToolRun list = RunTool("check --list-rules", true);
   EXPECT_NE(list.output.find("inertia-disagrees-with-geometry"), std::string::npos);
 }
 

@@ -2,7 +2,6 @@
 // MASSPROPS_TOOL_PATH) on testdata/report/. Expected numbers are hand-derived in
 // tests/mass_report_test.cc; exit codes are the contract of docs/report.md.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -12,27 +11,12 @@
 #include <sstream>
 #include <string>
 
+#include "tool_runner.h"
+
 namespace {
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-// Runs the tool with `args` (shell words), capturing stdout (and stderr when `with_stderr`).
-ToolRun RunTool(const std::string& args, bool with_stderr = false) {
-  const std::string command = std::string("'") + MASSPROPS_TOOL_PATH + "' " + args +
-                              (with_stderr ? " 2>&1" : " 2>/dev/null");
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using massprops::test_support::RunTool;
+using massprops::test_support::ToolRun;
 
 std::string Fixture(const std::string& name) {
   return "'" + std::string(MASSPROPS_TESTDATA_DIR) + "/report/" + name + "'";

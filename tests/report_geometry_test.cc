@@ -1,6 +1,5 @@
 // `massprops report --geometry`: the inertia a link's geometry implies beside the declared one.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -9,29 +8,15 @@
 #include "massprops/mass_report.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
+#include "tool_runner.h"
 
 namespace massprops {
 namespace {
 
+using massprops::test_support::RunTool;
+using massprops::test_support::ToolRun;
+
 const std::string kBoxes = std::string(MASSPROPS_TESTDATA_DIR) + "/geometry/boxes.urdf";
-
-struct ToolRun {
-  int exit_code = -1;
-  std::string output;
-};
-
-ToolRun RunTool(const std::string& args) {
-  const std::string command = std::string("'") + MASSPROPS_TOOL_PATH + "' " + args + " 2>/dev/null";
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) run.output.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
 
 const nlohmann::json& LinkNamed(const nlohmann::json& model, const std::string& name) {
   for (const nlohmann::json& link : model["links"]) {
