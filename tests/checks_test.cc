@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_manifest.h"
 #include "massprops/sdf_reader.h"
 #include "massprops/urdf_reader.h"
 
@@ -302,21 +303,14 @@ TEST(ChecksTest, GeometryBoundsFollowTheGeometryPoseAndSkipMeshes) {
 // a 1e-6·trace tolerance) name exactly the links that massprops reports inertia-not-physical
 // for, per link (group findings are left out).
 TEST(ChecksTest, CorpusInvalidLinksMatchTheManifest) {
-  std::ifstream manifest(std::string(MASSPROPS_CORPUS_DIR) + "/MANIFEST.tsv");
-  if (!manifest) GTEST_SKIP() << "corpus not found";
-  std::string line;
-  std::getline(manifest, line);  // header
+  if (!std::ifstream(test_support::CorpusDir() + "/MANIFEST.tsv")) GTEST_SKIP() << "no corpus";
   int files = 0;
-  while (std::getline(manifest, line)) {
-    std::vector<std::string> cols;
-    std::stringstream ss(line);
-    std::string col;
-    while (std::getline(ss, col, '\t')) cols.push_back(col);
-    if (cols.size() < 8 || cols[1] != "urdf") continue;
+  for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest("urdf")) {
+    const std::string& notes = row.notes;
     std::set<std::string> expected;
-    const auto pos = cols[7].find("invalid_links=");
+    const auto pos = notes.find("invalid_links=");
     if (pos != std::string::npos) {
-      const std::string list = cols[7].substr(pos + 14, cols[7].find(';', pos) - pos - 14);
+      const std::string list = notes.substr(pos + 14, notes.find(';', pos) - pos - 14);
       std::stringstream items(list);
       std::string item;
       while (std::getline(items, item, '|')) {
@@ -324,7 +318,7 @@ TEST(ChecksTest, CorpusInvalidLinksMatchTheManifest) {
         expected.insert(item.substr(0, item.find('(')));
       }
     }
-    const ReadResult result = ReadUrdfFile(std::string(MASSPROPS_CORPUS_DIR) + "/" + cols[0]);
+    const ReadResult result = ReadUrdfFile(test_support::CorpusDir() + "/" + row.file);
     if (result.models.empty()) continue;  // read errors are the readers' tests
     ++files;
     std::set<std::string> flagged;
@@ -334,7 +328,7 @@ TEST(ChecksTest, CorpusInvalidLinksMatchTheManifest) {
       for (const auto& value : f.values) group = group || value.first == "group_links";
       if (!group) flagged.insert(f.link);
     }
-    EXPECT_EQ(flagged, expected) << cols[0];
+    EXPECT_EQ(flagged, expected) << row.file;
   }
   EXPECT_GT(files, 100);
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_manifest.h"
 #include "massprops/checks.h"
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
@@ -31,15 +32,8 @@ struct Entry {
 
 std::vector<Entry> ReadManifest() {
   std::vector<Entry> entries;
-  std::ifstream in(kCorpus / "MANIFEST.tsv");
-  std::string line;
-  std::getline(in, line);  // header: file, format, source_repo, ...
-  while (std::getline(in, line)) {
-    std::vector<std::string> columns;
-    std::stringstream s(line);
-    std::string column;
-    while (std::getline(s, column, '\t')) columns.push_back(column);
-    if (columns.size() >= 3) entries.push_back({columns[0], columns[2]});
+  for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest()) {
+    entries.push_back({row.file, row.source_repo});
   }
   return entries;
 }

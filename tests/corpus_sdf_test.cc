@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_manifest.h"
 #include "massprops/model.h"
 #include "massprops/sdf_reader.h"
 
@@ -32,17 +33,8 @@ struct Row {
 
 std::vector<Row> SdfRows() {
   std::vector<Row> rows;
-  std::ifstream in(kCorpus + "/MANIFEST.tsv");
-  std::string line;
-  std::getline(in, line);  // header: file, format, source_repo, commit, original_path, license,
-                           // links, notes, invalid_inertial_links
-  while (std::getline(in, line)) {
-    std::vector<std::string> cols;
-    std::stringstream ss(line);
-    std::string col;
-    while (std::getline(ss, col, '\t')) cols.push_back(col);
-    if (cols.size() < 8 || cols[1] != "sdf") continue;
-    rows.push_back({cols[0], std::stoi(cols[6]), cols[7]});
+  for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest("sdf")) {
+    rows.push_back({row.file, row.links, row.notes});
   }
   return rows;
 }

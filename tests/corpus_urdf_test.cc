@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_manifest.h"
 #include "massprops/urdf_reader.h"
 
 namespace massprops {
@@ -32,16 +33,8 @@ struct CorpusFile {
 
 std::vector<CorpusFile> UrdfRows() {
   std::vector<CorpusFile> rows;
-  std::ifstream manifest(kCorpus + "/MANIFEST.tsv");
-  std::string line;
-  std::getline(manifest, line);  // header
-  while (std::getline(manifest, line)) {
-    std::vector<std::string> cells;
-    std::stringstream stream(line);
-    std::string cell;
-    while (std::getline(stream, cell, '\t')) cells.push_back(cell);
-    if (cells.size() < 7 || cells[1] != "urdf") continue;
-    rows.push_back({cells[0], cells[6].empty() ? -1 : std::stoi(cells[6])});
+  for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest("urdf")) {
+    rows.push_back({row.file, row.links});
   }
   return rows;
 }

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_manifest.h"
 #include "massprops/model_reader.h"
 #include "massprops/welded_groups.h"
 
@@ -35,15 +36,8 @@ const std::string kCorpus = MASSPROPS_CORPUS_DIR;
 
 std::vector<std::string> UrdfRows() {
   std::vector<std::string> files;
-  std::ifstream in(kCorpus + "/MANIFEST.tsv");
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string file, format;
-    std::getline(ss, file, '\t');
-    std::getline(ss, format, '\t');
-    if (format == "urdf") files.push_back(file);
+  for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest("urdf")) {
+    files.push_back(row.file);
   }
   return files;
 }

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus_manifest.h"
 #include "massprops/model.h"
 #include "massprops/sdf_reader.h"
 
@@ -39,15 +40,8 @@ std::vector<std::string> CorpusModelPaths() {
 
 std::vector<std::string> SdfRows() {
   std::vector<std::string> files;
-  std::ifstream in(kCorpus + "/MANIFEST.tsv");
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string file, format;
-    std::getline(ss, file, '\t');
-    std::getline(ss, format, '\t');
-    if (format == "sdf") files.push_back(file);
+  for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest("sdf")) {
+    files.push_back(row.file);
   }
   return files;
 }
