@@ -5,6 +5,7 @@
 #include <cstdarg>
 #include <cstddef>
 #include <cstdio>
+#include <exception>
 #include <string>
 #include <utility>
 #include <vector>
@@ -104,61 +105,14 @@ Eigen::Matrix3d WrittenMatrix(const Inertial& in) {
   return I;
 }
 
-// Half-extents, along the axes of frame B, of a shape whose own axes are R_BG's columns.
-Eigen::Vector3d HalfExtents(const Geometry& g) {
-  const Eigen::Matrix3d& R = g.X_BG.R_AB;
-  Eigen::Vector3d h;
-  for (int i = 0; i < 3; ++i) {
-    const double rz = std::abs(R(i, 2));
-    const double radial = std::sqrt(std::max(0.0, 1 - rz * rz));  // |row i| without z component
-    switch (g.type) {
-      case Geometry::Type::kBox:
-        h(i) = 0.5 *
-               (std::abs(R(i, 0)) * g.size.x() + std::abs(R(i, 1)) * g.size.y() + rz * g.size.z());
-        break;
-      case Geometry::Type::kCylinder:
-        h(i) = rz * 0.5 * g.length + g.radius * radial;
-        break;
-      case Geometry::Type::kSphere:
-        h(i) = g.radius;
-        break;
-      case Geometry::Type::kCapsule:
-        h(i) = rz * 0.5 * g.length + g.radius;
-        break;
-      case Geometry::Type::kEllipsoid:
-        h(i) = std::sqrt(std::pow(R(i, 0) * g.radii.x(), 2) + std::pow(R(i, 1) * g.radii.y(), 2) +
-                         std::pow(R(i, 2) * g.radii.z(), 2));
-        break;
-      default:
-        h(i) = 0;
-    }
-  }
-  return h;
-}
-
-bool IsPrimitive(const Geometry& g) {
-  switch (g.type) {
-    case Geometry::Type::kBox:
-    case Geometry::Type::kCylinder:
-    case Geometry::Type::kSphere:
-    case Geometry::Type::kCapsule:
-    case Geometry::Type::kEllipsoid:
-      return true;
-    default:
-      return false;
-  }
-}
-
 std::optional<GeometryBounds> BoundsOf(const Link& link, bool collision) {
   GeometryBounds bounds;
   bounds.from_collision = collision;
   for (const Geometry& g : link.geometries) {
     if (g.is_collision != collision) continue;
-    if (!IsPrimitive(g)) return std::nullopt;
-    const Eigen::Vector3d h = HalfExtents(g);
-    if (!h.allFinite() || !g.X_BG.p_AB.allFinite()) return std::nullopt;
-    bounds.box_B.extend(g.X_BG.p_AB - h);
-    bounds.box_B.extend(g.X_BG.p_AB + h);
+    const std::optional<Eigen::AlignedBox3d> box = CalcPrimitiveBounds(g);
+    if (!box) return std::nullopt;
+    bounds.box_B.extend(*box);
     ++bounds.count;
   }
   if (bounds.count == 0) return std::nullopt;
@@ -348,8 +302,45 @@ class Checker {
     const MassProperties props = LinkMassProperties(link, model_.format);
     const Eigen::Vector3d& c = props.p_FoScm_F;
     const Eigen::Matrix3d& I_B = props.I_SScm_F;
-    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
+    // The link's extent: its primitives, else (meshes) the shape function when one is given.
+    std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
+    std::optional<LinkShape> shape;
+    if (!bounds && options_.shape) {
+      shape = CalcLinkShape(link, options_.shape);
+      if (shape) bounds = GeometryBounds{shape->box_B, shape->from_collision, 1};
+    } else {
+      shape = CalcLinkShape(link);
+    }
+    const std::string geometry_name =
+        std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
+        (shape && shape->kind == "mesh" ? " mesh" : "");
     const double trace = I_written.trace();
+
+    // products-sign-suspect for an inertia valid both ways: the geometry decides.
+    if (valid && shape) {
+      Eigen::Matrix3d I_negated = -I_written;
+      I_negated.diagonal() = I_written.diagonal();
+      const std::optional<ProductsSignEvidence> evidence = FindProductsSignEvidence(in, *shape);
+      if (evidence && IsValid(I_negated, tol)) {
+        const Eigen::Vector3d& g = evidence->geometry_products;
+        Emit(kProductsSignSuspect, link, InertiaLocation(link),
+             who + ": the products of inertia (ixy, ixz, iyz = " + Num(in.ixy) + ", " +
+                 Num(in.ixz) + ", " + Num(in.iyz) + ") have the opposite sign of those its " +
+                 geometry_name + " geometry implies for its mass (" + Num(g.x()) + ", " +
+                 Num(g.y()) + ", " + Num(g.z()) + "; negated they differ by " +
+                 Format("%.2g%%", 100 * evidence->mismatch_negated) + ", as written by " +
+                 Format("%.3g%%", 100 * evidence->mismatch_as_written) +
+                 "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
+             {{"ixy", in.ixy},
+              {"ixz", in.ixz},
+              {"iyz", in.iyz},
+              {"geometry_ixy", g.x()},
+              {"geometry_ixz", g.y()},
+              {"geometry_iyz", g.z()},
+              {"mismatch_as_written", evidence->mismatch_as_written},
+              {"mismatch_negated", evidence->mismatch_negated}});
+      }
+    }
 
     // units-suspect.
     bool units_flagged = false;
@@ -364,8 +355,8 @@ class Checker {
             // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
             Emit(kUnitsSuspect, link, InertiaLocation(link),
                  who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
-                     " times the half-diagonal " + Num(extent) + " m of its " +
-                     (bounds->from_collision ? "collision" : "visual") + " geometry (expected " +
+                     " times the half-diagonal " + Num(extent) + " m of its " + geometry_name +
+                     " geometry (expected " +
                      "about 0.3 to 1): " + GuessUnitError(ratio * ratio / 0.25),
                  {{"radius_of_gyration", k},
                   {"geometry_half_diagonal", extent},
@@ -389,7 +380,7 @@ class Checker {
     const Eigen::Vector3d o = bounds->box_B.center();
     const Eigen::Vector3d h = 0.5 * bounds->box_B.sizes();
     const double scale2 = h.squaredNorm();
-    const char* geometry_kind = bounds->from_collision ? "collision" : "visual";
+    const std::string& geometry_kind = geometry_name;
 
     // inertia-exceeds-geometry / inertia-about-origin-suspect (valid inertias only). A body inside
     // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
@@ -411,7 +402,7 @@ class Checker {
         if (shifted_fits) {
           const Validity vs = Analyze(I_shifted);
           Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
-               who + ": the inertia needs more room than the " + std::string(geometry_kind) +
+               who + ": the inertia needs more room than the " + geometry_kind +
                    " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
                    " kg·m² about the center o of its bounding box, r = " + Num(kGeometryMargin) +
                    " × half-diagonal = " + Num(std::sqrt(r2)) +
@@ -429,7 +420,7 @@ class Checker {
         } else {
           Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
                who + ": no mass distribution inside the bounding box of the " +
-                   std::string(geometry_kind) + " geometry (center " + Vec(o) + ", half-sizes " +
+                   geometry_kind + " geometry (center " + Vec(o) + ", half-sizes " +
                    Vec(h) +
                    " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
                    " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " + Num(kGeometryMargin) +
@@ -633,7 +624,8 @@ const std::vector<RuleInfo>& AllRules() {
       {kInertialMissing, Severity::kWarning, true,
        "A link has collision geometry but no <inertial>."},
       {kProductsSignSuspect, Severity::kWarning, true,
-       "The inertia is invalid as written but valid with the products of inertia negated."},
+       "The products of inertia have the wrong sign: the inertia is invalid as written but valid "
+       "with them negated, or the geometry's products have the opposite sign."},
       {kUnitsSuspect, Severity::kWarning, true,
        "The radius of gyration is out of proportion with the link's geometry (unit mistake)."},
       {kInertiaAboutOriginSuspect, Severity::kWarning, true,
@@ -657,6 +649,65 @@ const std::vector<RuleInfo>& AllRules() {
 
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {
   return Checker(model, options).Run();
+}
+
+std::optional<LinkShape> CalcLinkShape(const Link& link, const LinkShapeFunction& fallback) {
+  for (const bool collision : {true, false}) {
+    const std::optional<GeometryBounds> bounds = BoundsOf(link, collision);
+    if (!bounds) continue;
+    Link primitives;  // only the chosen set, so that CalcPrimitiveMassProperties uses it
+    for (const Geometry& g : link.geometries) {
+      if (g.is_collision == collision) primitives.geometries.push_back(g);
+    }
+    const std::optional<PrimitiveMassProperties> unit =
+        CalcPrimitiveMassProperties(primitives, /*density=*/1, /*mass=*/1);
+    if (!unit) continue;
+    LinkShape shape;
+    shape.from_collision = collision;
+    shape.box_B = bounds->box_B;
+    shape.volume = unit->volume;
+    shape.p_BoBcm_B = unit->p_BoBcm_B;
+    shape.G_BBcm_B = unit->I_BBcm_B;
+    shape.kind = "primitive";
+    return shape;
+  }
+  if (!fallback) return std::nullopt;
+  try {
+    return fallback(link);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& in,
+                                                             const LinkShape& shape) {
+  const double m = in.mass;
+  if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
+  const Eigen::Matrix3d I = WrittenMatrix(in);
+  const Eigen::Matrix3d& R = in.X_BBi.R_AB;
+  const Eigen::Matrix3d G = m * (R.transpose() * shape.G_BBcm_B * R);  // in Bi
+  if (!I.allFinite() || !G.allFinite()) return std::nullopt;
+  const Eigen::Vector3d p_written(I(0, 1), I(0, 2), I(1, 2));
+  const Eigen::Vector3d p_geometry(G(0, 1), G(0, 2), G(1, 2));
+  const double mean_geometry = G.trace() / 3;
+  const double mean_written = I.trace() / 3;
+  // Products of at least 10% of the mean moment on both sides: smaller ones are within what a
+  // simplified geometry or a non-uniform density can change, and say nothing about the sign.
+  if (!(mean_geometry > 0) || !(mean_written > 0)) return std::nullopt;
+  if (p_geometry.norm() < 0.1 * mean_geometry || p_written.norm() < 0.1 * mean_written) {
+    return std::nullopt;
+  }
+  // The geometry must describe the body: every moment within a factor 2.
+  for (int i = 0; i < 3; ++i) {
+    const double d = I(i, i), g = G(i, i);
+    if (!(d > 0) || !(g > 0) || std::max(d / g, g / d) > 2) return std::nullopt;
+  }
+  ProductsSignEvidence evidence;
+  evidence.geometry_products = p_geometry;
+  evidence.mismatch_as_written = (p_written - p_geometry).norm() / p_geometry.norm();
+  evidence.mismatch_negated = (p_written + p_geometry).norm() / p_geometry.norm();
+  if (!(evidence.mismatch_negated <= 0.5)) return std::nullopt;
+  return evidence;
 }
 
 std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link) {

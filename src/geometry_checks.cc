@@ -32,6 +32,27 @@ std::string Format(double value) {
 
 }  // namespace
 
+LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve) {
+  return [resolve](const Link& link) -> std::optional<LinkShape> {
+    std::optional<LinkGeometryInertia> g = CalcLinkGeometryInertia(link, 1.0, resolve, nullptr);
+    if (!g || !(g->volume > 0) || !std::isfinite(g->volume) || g->box_B.isEmpty()) {
+      return std::nullopt;
+    }
+    LinkShape shape;
+    shape.from_collision = g->from_collision;
+    shape.box_B = g->box_B;
+    shape.volume = g->volume;
+    shape.p_BoBcm_B = g->p_BoBcm_B;
+    shape.G_BBcm_B = g->I_BBcm_B.CopyToFullMatrix3();
+    shape.kind = "primitive";
+    for (const GeometryMassProperties& part : g->geometries) {
+      if (!part.mesh_path.empty()) shape.kind = "mesh";
+    }
+    if (!shape.G_BBcm_B.allFinite() || !shape.p_BoBcm_B.allFinite()) return std::nullopt;
+    return shape;
+  };
+}
+
 const std::vector<RuleInfo>& GeometryRules() {
   static const std::vector<RuleInfo> rules = {
       {kInertiaDisagreesWithGeometryRule, Severity::kWarning, false,

@@ -560,10 +560,47 @@ void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports) {
   out << "file,model,kind,name,frame,mass,com_x,com_y,com_z,ixx,iyy,izz,ixy,ixz,iyz,"
          "principal_moment_1,principal_moment_2,principal_moment_3,"
          "axis_1_x,axis_1_y,axis_1_z,axis_2_x,axis_2_y,axis_2_z,axis_3_x,axis_3_y,axis_3_z,"
-         "box_1,box_2,box_3,digits_lost,links\n";
+         "box_1,box_2,box_3,digits_lost,links";
+  // With --geometry, every row gets the geometry comparison's columns too (empty for groups,
+  // totals and links without one), so that the header does not change otherwise.
+  bool geometry = false;
+  for (const ModelMassReport& report : reports) {
+    for (const LinkMassReport& link : report.links) geometry = geometry || link.geometry;
+  }
+  if (geometry) {
+    out << ",geometry_source,geometry_com_x,geometry_com_y,geometry_com_z,geometry_ixx,"
+           "geometry_iyy,geometry_izz,geometry_ixy,geometry_ixz,geometry_iyz,"
+           "geometry_principal_moment_1,geometry_principal_moment_2,geometry_principal_moment_3,"
+           "geometry_rel_diff_1,geometry_rel_diff_2,geometry_rel_diff_3,geometry_axis_angle_deg,"
+           "geometry_error";
+  }
+  out << '\n';
   constexpr int kDigits = std::numeric_limits<double>::max_digits10;
+  auto geometry_fields = [&](const LinkGeometryComparison* c) {
+    if (!geometry) return;
+    if (c == nullptr || !c->error.empty()) {
+      for (int i = 0; i < 17; ++i) out << ',';
+      out << ',' << (c == nullptr ? std::string() : CsvField(c->error));
+      return;
+    }
+    out << ',' << (c->from_collision ? "collision" : "visual");
+    for (int i = 0; i < 3; ++i) out << ',' << Number(c->geometry.com(i), kDigits);
+    const Eigen::Matrix3d& G = c->geometry.inertia_about_com;
+    for (double v : {G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2), G(1, 2)}) {
+      out << ',' << Number(v, kDigits);
+    }
+    for (int k = 0; k < 3; ++k) out << ',' << Number(c->geometry.principal_moments(k), kDigits);
+    for (int k = 0; k < 3; ++k) {
+      out << ',';
+      if (std::isfinite(c->moment_rel_diff(k))) out << Number(c->moment_rel_diff(k), kDigits);
+    }
+    out << ',';
+    if (c->axis_angle_deg) out << Number(*c->axis_angle_deg, kDigits);
+    out << ',';
+  };
   auto row = [&](const ModelMassReport& report, const char* kind, const std::string& name,
-                 const BodyMassProperties& b, const std::vector<std::string>& members) {
+                 const BodyMassProperties& b, const std::vector<std::string>& members,
+                 const LinkGeometryComparison* comparison) {
     out << CsvField(report.file) << ',' << CsvField(report.name) << ',' << kind << ','
         << CsvField(name) << ',' << CsvField(b.frame) << ',' << Number(b.mass, kDigits);
     for (int i = 0; i < 3; ++i) out << ',' << Number(b.com(i), kDigits);
@@ -582,16 +619,19 @@ void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports) {
     out << ',' << Number(b.digits_lost, 4) << ',';
     std::string joined;
     for (std::size_t i = 0; i < members.size(); ++i) joined += (i ? ";" : "") + members[i];
-    out << CsvField(joined) << '\n';
+    out << CsvField(joined);
+    geometry_fields(comparison);
+    out << '\n';
   };
   for (const ModelMassReport& report : reports) {
     for (const LinkMassReport& link : report.links) {
-      row(report, "link", link.name, link.properties, {link.name});
+      row(report, "link", link.name, link.properties, {link.name},
+          link.geometry ? &*link.geometry : nullptr);
     }
     for (const GroupMassReport& group : report.welded_groups) {
-      row(report, "welded_group", group.root_link, group.properties, group.links);
+      row(report, "welded_group", group.root_link, group.properties, group.links, nullptr);
     }
-    if (report.total) row(report, "total", report.name, *report.total, {});
+    if (report.total) row(report, "total", report.name, *report.total, {}, nullptr);
   }
 }
 

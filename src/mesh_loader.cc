@@ -383,19 +383,27 @@ std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry&
           return std::nullopt;
         }
         std::optional<MeshMassProperties> mesh;
+        std::shared_ptr<const TriangleMesh> vertices;  // for the bounding box
         if (options.cache != nullptr) {
           mesh = options.cache->MassProperties(*path, geometry.scale, options.inertia, &reason);
+          if (mesh) vertices = options.cache->Load(*path, &reason);
         } else {
-          TriangleMesh triangles;
-          if (LoadMeshFile(*path, &triangles, &reason)) {
+          auto triangles = std::make_shared<TriangleMesh>();
+          if (LoadMeshFile(*path, triangles.get(), &reason)) {
             MeshInertiaOptions unit_density = options.inertia;
             unit_density.density = 1;
-            mesh = CalcMeshMassProperties(ScaleMesh(triangles, geometry.scale), unit_density);
+            mesh = CalcMeshMassProperties(ScaleMesh(*triangles, geometry.scale), unit_density);
+            vertices = std::move(triangles);
           }
         }
-        if (!mesh) {
+        if (!mesh || !vertices) {
           if (error) *error = Describe(geometry) + ": " + reason;
           return std::nullopt;
+        }
+        // The box of the scaled vertices as posed in B (exact; one pass over the vertices).
+        for (const Eigen::Vector3d& v : vertices->vertices) {
+          result.box_B.extend(geometry.X_BG.p_AB +
+                              geometry.X_BG.R_AB * v.cwiseProduct(geometry.scale));
         }
         result.volume = mesh->mass;  // Density 1.
         p_GoGcm_G = mesh->p_GoGcm_G;
@@ -420,6 +428,14 @@ std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry&
       *error = message.str();
     }
     return std::nullopt;
+  }
+  if (geometry.type != Geometry::Type::kMesh) {
+    const std::optional<Eigen::AlignedBox3d> box = CalcPrimitiveBounds(geometry);
+    if (!box) {
+      if (error) *error = Describe(geometry) + ": its pose or a dimension is not finite";
+      return std::nullopt;
+    }
+    result.box_B = *box;
   }
   result.p_BoGcm_B = geometry.X_BG.p_AB + geometry.X_BG.R_AB * p_GoGcm_G;
   result.I_GGcm_B = I_GGcm_G.ReExpress(geometry.X_BG.R_AB);
@@ -452,6 +468,7 @@ std::optional<LinkGeometryInertia> CalcLinkGeometryInertia(const Link& link, dou
         return std::nullopt;
       }
       result.volume += part->volume;
+      result.box_B.extend(part->box_B);
       result.geometries.push_back(std::move(*part));
     }
     Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();

@@ -245,11 +245,44 @@ class Planner {
     return link.inertial ? link.inertial->X_BBi.R_AB : Eigen::Matrix3d::Identity();
   }
 
+  // The link's geometry as a uniform solid of `mass` (> 0), else of density·volume: its
+  // primitives, else options_.shape (meshes). *kind: "primitive" or "mesh".
+  std::optional<PrimitiveMassProperties> GeometryOf(const Link& link, double mass,
+                                                    std::string* kind) const {
+    *kind = "primitive";
+    if (std::optional<PrimitiveMassProperties> g =
+            CalcPrimitiveMassProperties(link, options_.density, mass)) {
+      return g;
+    }
+    if (!options_.shape || !(options_.density > 0) || !std::isfinite(options_.density)) {
+      return std::nullopt;
+    }
+    const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
+    if (!shape) return std::nullopt;
+    PrimitiveMassProperties g;
+    g.volume = shape->volume;
+    g.mass = mass > 0 ? mass : options_.density * shape->volume;
+    g.p_BoBcm_B = shape->p_BoBcm_B;
+    g.I_BBcm_B = g.mass * shape->G_BBcm_B;
+    // A mesh's 32-bit vertices leave products of about 1e-19 where the true value is 0; below
+    // 1e-9 of the trace (far under the vertices' 6e-8 rounding) a product is written as 0.
+    const double noise = 1e-9 * std::abs(g.I_BBcm_B.trace());
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        if (i != j && std::abs(g.I_BBcm_B(i, j)) <= noise) g.I_BBcm_B(i, j) = 0;
+      }
+    }
+    g.from_collision = shape->from_collision;
+    *kind = shape->kind;
+    if (!(g.mass > 0) || !std::isfinite(g.mass) || !g.I_BBcm_B.allFinite()) return std::nullopt;
+    return g;
+  }
+
   bool FromGeometry(const Link& link, bool keep_mass, const std::string& rule, Plan* plan) {
     const double mass = link.inertial ? link.inertial->mass : 0;
     const bool use_mass = keep_mass && std::isfinite(mass) && mass > 0;
-    std::optional<PrimitiveMassProperties> g =
-        CalcPrimitiveMassProperties(link, options_.density, use_mass ? mass : 0);
+    std::string kind;
+    std::optional<PrimitiveMassProperties> g = GeometryOf(link, use_mass ? mass : 0, &kind);
     if (!g) return false;
     Inertial work = link.inertial ? *link.inertial : Inertial{};
     const Eigen::Matrix3d R = RotationOf(link);
@@ -259,10 +292,12 @@ class Planner {
     plan->work = work;
     plan->rule = rule.empty() ? "--from-geometry" : rule;
     plan->inserts_inertial = !link.inertial.has_value();
-    const std::string what = g->from_collision ? "collision" : "visual";
+    const std::string what = std::string(g->from_collision ? "collision" : "visual") +
+                             (kind == "mesh" ? " mesh" : "");
+    const std::string adjective = kind == "mesh" ? "" : "primitive ";
     if (use_mass) {
       plan->methods.push_back("from-geometry");
-      plan->whys.push_back("the inertia (and center of mass) of the link's primitive " + what +
+      plan->whys.push_back("the inertia (and center of mass) of the link's " + adjective + what +
                            " geometry, solid and uniform, with the link's mass " + Num(mass) +
                            " kg");
     } else {
@@ -273,7 +308,7 @@ class Planner {
                                             : "the mass " + Num(mass) + " is not a positive number";
       plan->whys.push_back(reason + ": mass = density " + Num(options_.density) +
                            " kg/m³ × volume " + Num(g->volume) + " m³ = " + Num(g->mass) +
-                           " kg, with the inertia and center of mass of its primitive " + what +
+                           " kg, with the inertia and center of mass of its " + adjective + what +
                            " geometry (solid, uniform)");
     }
     return true;
@@ -290,8 +325,15 @@ class Planner {
     const Eigen::Matrix3d I = WrittenMatrix(w);
     const double trace = I.trace();
     if (!(w.mass > 0) || !(trace > 0)) return;
-    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
-    const double extent = bounds ? 0.5 * bounds->box_B.diagonal().norm() : 0;
+    std::optional<Eigen::AlignedBox3d> box;
+    if (const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link)) {
+      box = bounds->box_B;
+    } else if (options_.shape) {
+      if (const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape)) {
+        box = shape->box_B;
+      }
+    }
+    const double extent = box ? 0.5 * box->diagonal().norm() : 0;
     struct Candidate {
       double inertia_factor;
       double mass_factor;
@@ -355,15 +397,28 @@ class Planner {
   void NegateProducts(const Link& link, Plan* plan) {
     Inertial& w = plan->work;
     Eigen::Matrix3d I = WrittenMatrix(w);
-    if (IsValid(I, options_.tolerance)) return;
     Eigen::Matrix3d negated = -I;
     negated.diagonal() = I.diagonal();
     if (!IsValid(negated, options_.tolerance)) return;
-    // Where the link has primitive geometry, negate only when that lands closer to the
-    // geometry's inertia (with the link's mass, in the inertial frame) than the projection does.
+    if (IsValid(I, options_.tolerance)) {
+      // Valid both ways: negate only on the geometry's evidence (as the check judged it).
+      const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
+      if (!shape) return;
+      const std::optional<ProductsSignEvidence> evidence = FindProductsSignEvidence(w, *shape);
+      if (!evidence) return;
+      SetMatrix(negated, &w);
+      Note(plan, "products-sign-suspect", "negate-products",
+           "the products of inertia had the opposite sign of those the link's geometry implies "
+           "(+∫xy dm instead of −∫xy dm): negated ixy, ixz, iyz, which then match the "
+           "geometry's to " +
+               Percent(evidence->mismatch_negated));
+      return;
+    }
+    // Where the link has geometry, negate only when that lands closer to the geometry's
+    // inertia (with the link's mass, in the inertial frame) than the projection does.
     if (w.mass > 0) {
-      if (std::optional<PrimitiveMassProperties> g =
-              CalcPrimitiveMassProperties(link, options_.density, w.mass)) {
+      std::string kind;
+      if (std::optional<PrimitiveMassProperties> g = GeometryOf(link, w.mass, &kind)) {
         const Eigen::Matrix3d& R = w.X_BBi.R_AB;
         const Eigen::Matrix3d I_geometry = R.transpose() * g->I_BBcm_B * R;
         const Eigen::Matrix3d projected = RepairInertia(I, options_.method, options_.tolerance);
@@ -523,6 +578,7 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
   // Which findings each repair resolves: check the repaired model again.
   CheckOptions check_options;
   check_options.tolerance = options.tolerance;
+  check_options.shape = options.shape;
   const std::vector<Finding> after = CheckModel(ApplyRepairs(model, repairs), check_options);
   std::set<std::pair<std::string, std::string>> remaining;
   for (const Finding& f : after) remaining.insert({f.link, f.rule});

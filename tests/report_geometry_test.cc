@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "massprops/mass_report.h"
 #include "massprops/mesh_loader.h"
@@ -152,6 +153,72 @@ TEST(ReportGeometryTest, WithoutTheFlagTheJsonHasNoGeometry) {
   ASSERT_EQ(run.exit_code, 0);
   const nlohmann::json json = nlohmann::json::parse(run.output);
   EXPECT_FALSE(LinkNamed(json["models"][0], "box_exact").contains("geometry"));
+}
+
+// Splits one CSV line (no quoted commas in the fields read here).
+std::vector<std::string> CsvRow(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    fields.push_back(line.substr(start, comma - start));
+    if (comma == std::string::npos) return fields;
+    start = comma + 1;
+  }
+}
+
+TEST(ReportGeometryTest, CsvGetsGeometryColumnsOnlyWithTheFlag) {
+  const ToolRun plain = RunTool("report --format csv '" + kBoxes + "'");
+  ASSERT_EQ(plain.exit_code, 0);
+  const std::string plain_header = plain.output.substr(0, plain.output.find('\n'));
+  EXPECT_EQ(plain_header.find("geometry_"), std::string::npos) << plain_header;
+  EXPECT_EQ(CsvRow(plain_header).back(), "links");
+  const ToolRun run = RunTool("report --geometry --format csv '" + kBoxes + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  std::vector<std::vector<std::string>> rows;
+  std::size_t start = 0;
+  while (start < run.output.size()) {
+    const std::size_t end = run.output.find('\n', start);
+    rows.push_back(CsvRow(run.output.substr(start, end - start)));
+    start = end == std::string::npos ? run.output.size() : end + 1;
+  }
+  ASSERT_GT(rows.size(), 2u);
+  const std::vector<std::string>& header = rows[0];
+  auto column = [&](const std::string& name) {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return i;
+    }
+    ADD_FAILURE() << "no column " << name;
+    return std::size_t{0};
+  };
+  EXPECT_EQ(header.back(), "geometry_error");
+  bool saw_ten_times = false, saw_missing = false, saw_group = false;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const std::vector<std::string>& row = rows[r];
+    ASSERT_EQ(row.size(), header.size()) << r;
+    const std::string& kind = row[column("kind")];
+    const std::string& name = row[column("name")];
+    if (kind == "link" && name == "box_ten_times") {
+      saw_ten_times = true;
+      // Box formula for 2 kg (fixture comment): 0.26/12, 0.2/12, 0.1/12; declared 10x, so the
+      // relative difference (declared − geometry)/geometry is 9.
+      EXPECT_EQ(row[column("geometry_source")], "collision");
+      EXPECT_NEAR(std::stod(row[column("geometry_ixx")]), 0.26 / 12, 1e-15);
+      EXPECT_NEAR(std::stod(row[column("geometry_principal_moment_1")]), 0.1 / 12, 1e-15);
+      EXPECT_NEAR(std::stod(row[column("geometry_rel_diff_2")]), 9, 1e-12);
+      EXPECT_NEAR(std::stod(row[column("geometry_axis_angle_deg")]), 0, 1e-6);
+      EXPECT_EQ(row[column("geometry_error")], "");
+    } else if (kind == "link" && name == "missing_mesh") {
+      saw_missing = true;
+      EXPECT_EQ(row[column("geometry_source")], "");
+      EXPECT_NE(row[column("geometry_error")].find("no_such_mesh.stl"), std::string::npos);
+    } else if (kind == "welded_group") {
+      saw_group = true;
+      EXPECT_EQ(row[column("geometry_source")], "");
+      EXPECT_EQ(row[column("geometry_error")], "");
+    }
+  }
+  EXPECT_TRUE(saw_ten_times && saw_missing && saw_group);
 }
 
 TEST(ReportGeometryTest, CorpusDoublePendulumLink1AgreesWithItsMeshWithinOnePercent) {

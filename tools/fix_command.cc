@@ -22,6 +22,8 @@
 
 #include "commands.h"
 #include "massprops/checks.h"
+#include "massprops/geometry_checks.h"
+#include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
 #include "massprops/xml_patch.h"
@@ -49,6 +51,8 @@ struct FixArgs {
   std::vector<std::string> from_geometry_links;
   double tolerance = 1e-6;
   std::vector<std::string> model_paths;
+  bool geometry = false;
+  std::vector<std::string> package_paths;
 };
 
 // Writes `data` to `path` through a temporary file in the same folder (mkstemp), flushed to disk
@@ -146,6 +150,18 @@ int RunFix(const FixArgs& args) {
   options.tolerance = args.tolerance;
   CheckOptions check_options;
   check_options.tolerance = args.tolerance;
+  // Meshes are read only when asked: --geometry (the checks and repairs use them) or
+  // --from-geometry (the inertials it replaces may come from meshes). Each file is read once.
+  MeshCache mesh_cache;
+  if (args.geometry || args.from_geometry) {
+    MeshResolveOptions resolve;
+    resolve.package_paths = args.package_paths;
+    resolve.model_paths = args.model_paths;
+    resolve.model_file = args.file;
+    resolve.cache = &mesh_cache;
+    options.shape = MakeLinkShapeFunction(resolve);
+    if (args.geometry) check_options.shape = options.shape;
+  }
 
   std::vector<Repair> repairs;
   std::vector<std::string> known_links;
@@ -195,7 +211,13 @@ int RunFix(const FixArgs& args) {
       }
       if (failed[i]) continue;
       const Repair& r = repairs[i];
-      const int line = r.changes.empty() ? r.link_line : r.changes.front().line;
+      int line = r.link_line;  // the first change that has a line (an inserted one has none)
+      for (const FieldChange& change : r.changes) {
+        if (change.line > 0) {
+          line = change.line;
+          break;
+        }
+      }
       std::cout << name << ":" << line << ": " << DescribeRepair(r) << "\n";
     }
     if (!changed) std::cout << name << ": no change needed\n";
@@ -248,7 +270,7 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
       "fix",
       "Repair mass properties that have a known remedy (invalid inertias, products with the wrong "
       "sign, unit mistakes, inertias about the link origin, missing or non-positive masses of "
-      "links with primitive geometry) and write the file back with only those numbers changed. "
+      "links with geometry) and write the file back with only those numbers changed. "
       "Default: the corrected file on standard output.");
   fix->add_option("FILE", args->file, "URDF or SDF file (detected by content), or '-'");
   fix->add_flag("--dry-run", args->dry_run,
@@ -272,11 +294,19 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
                   "kg/m³ for masses computed from geometry (default 1000, water)")
       ->type_name("RHO");
   fix->add_option("--from-geometry", args->from_geometry_links,
-                  "Replace the inertial of these links (all links with primitive geometry when "
-                  "none is named) with the one of their geometry and current mass; put FILE "
-                  "first or write --from-geometry=LINK")
+                  "Replace the inertial of these links (all links with usable geometry, meshes "
+                  "included, when none is named) with the one of their geometry and current "
+                  "mass; put FILE first or write --from-geometry=LINK")
       ->type_name("LINK")
       ->expected(0, -1);
+  fix->add_flag("--geometry", args->geometry,
+                "Judge and repair units, product signs and inertias about the origin against "
+                "mesh geometry too (as check --geometry); meshes are read");
+  fix->add_option("--package-path", args->package_paths,
+                  "Folder searched for package:// mesh URIs before ROS_PACKAGE_PATH and "
+                  "AMENT_PREFIX_PATH (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
   fix->add_option("--tolerance", args->tolerance,
                   "Validity tolerance relative to the trace (as check; default 1e-6)");
   fix->add_option("--model-path", args->model_paths, "Folder searched for SDF model:// URIs")

@@ -44,6 +44,18 @@ void AddGeometryCheckOptions(CLI::App* check) {
       ->allow_extra_args(false);
 }
 
+void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
+                       CheckOptions* options) {
+  GeometryArgs& args = Args();
+  if (!args.enabled) return;
+  MeshResolveOptions resolve;
+  resolve.package_paths = args.package_paths;
+  resolve.model_paths = model_paths;
+  resolve.model_file = model.file;
+  resolve.cache = &args.cache;
+  options->shape = MakeLinkShapeFunction(resolve);
+}
+
 void AddGeometryFindings(const Model& model, const CheckOptions& options,
                          const std::vector<std::string>& model_paths,
                          std::vector<Finding>* findings) {

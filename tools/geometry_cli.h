@@ -1,7 +1,7 @@
 #pragma once
 // `massprops check --geometry`: the options and the glue that runs the geometry rules
 // (include/massprops/geometry_checks.h) inside the check command. Defined in
-// tools/geometry_check_command.cc; main.cc calls these in four places.
+// tools/geometry_check_command.cc; main.cc calls these.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -13,6 +13,12 @@ namespace massprops::cli {
 
 /// Adds --geometry, --geometry-factor X and --package-path DIR to the check subcommand.
 void AddGeometryCheckOptions(CLI::App* check);
+
+/// With --geometry: sets options->shape to a mesh-reading LinkShapeFunction for `model` (the
+/// run's mesh cache), so that CheckModel judges mesh-only links against their meshes too.
+/// Without it, leaves `options` unchanged.
+void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
+                       CheckOptions* options);
 
 /// Appends the geometry findings of `model` when --geometry was given (one mesh cache per run),
 /// honouring `options.overrides` for the geometry rules. `model_paths` are searched for

@@ -297,7 +297,9 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
     for (const massprops::Model& model : read.models) {
       result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
       result.models.push_back(model.name);
-      std::vector<Finding> findings = massprops::CheckModel(model, settings[i].options);
+      CheckOptions check_options = settings[i].options;
+      massprops::cli::UseGeometryShapes(model, settings[i].model_paths, &check_options);
+      std::vector<Finding> findings = massprops::CheckModel(model, check_options);
       massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
                                           &findings);
       result.findings.insert(result.findings.end(), findings.begin(), findings.end());

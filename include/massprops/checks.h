@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/link_shape.h"
 #include "massprops/model.h"
 #include "massprops/repair.h"
 
@@ -56,6 +57,11 @@ struct CheckOptions {
   /// Per-rule overrides: a severity, or nullopt to disable the rule. Rules not named keep their
   /// defaults.
   std::map<std::string, std::optional<Severity>> overrides;
+  /// The shape of links whose geometry is not all primitives (meshes), for units-suspect,
+  /// products-sign-suspect, inertia-about-origin-suspect, inertia-exceeds-geometry and
+  /// com-outside-geometry. Empty (the default): those links are judged without geometry, and
+  /// CheckModel reads no file. `massprops check --geometry` sets MakeLinkShapeFunction.
+  LinkShapeFunction shape;
 };
 
 /// Runs every enabled rule on the model. Findings are ordered by location (line), then rule id.
@@ -70,6 +76,32 @@ struct GeometryBounds {
   bool from_collision = true;  ///< false: the visual geometry was used.
   int count = 0;               ///< Number of geometries in the box.
 };
+
+/// The link as a uniform solid of its geometry: from its primitives when its collision
+/// geometries (else its visual ones) are all primitives, computed here without reading a file;
+/// otherwise from `fallback` when it is set (e.g. meshes through MakeLinkShapeFunction);
+/// otherwise nullopt. Never throws.
+std::optional<LinkShape> CalcLinkShape(const Link& link, const LinkShapeFunction& fallback = {});
+
+/// What the geometry says about the signs of the products of inertia of a valid inertial.
+struct ProductsSignEvidence {
+  /// The products (ixy, ixz, iyz as URDF/SDF write them, in the inertial frame Bi) that the
+  /// shape implies for the link's mass.
+  Eigen::Vector3d geometry_products = Eigen::Vector3d::Zero();
+  /// ‖p_written − p_geometry‖ / ‖p_geometry‖ and ‖−p_written − p_geometry‖ / ‖p_geometry‖ (their
+  /// sum is at least 2).
+  double mismatch_as_written = 0;
+  double mismatch_negated = 0;
+};
+
+/// Evidence that the inertial's products of inertia have the wrong sign: the shape's central
+/// inertia (for the inertial's mass, in Bi) has products of at least 10% of its mean moment, the
+/// written products are of that size too, every written moment ixx, iyy, izz is within a factor
+/// 2 of the shape's, and the negated products match the shape's to 50% (mismatch_negated <=
+/// 0.5, so mismatch_as_written >= 1.5). nullopt otherwise (no evidence either way). This is how
+/// products-sign-suspect judges an inertia that is valid both as written and negated.
+std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& inertial,
+                                                             const LinkShape& shape);
 
 /// The link's GeometryBounds, or nullopt when its extent is unknown: no geometry, or the chosen
 /// set holds a mesh (meshes are not read) or an unknown shape. Never throws. Cost: O(geometries).

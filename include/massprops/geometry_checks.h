@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "massprops/checks.h"
+#include "massprops/link_shape.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model.h"
 
@@ -30,6 +31,15 @@ struct GeometryCheckOptions {
   /// Severity overrides and disabling (CheckOptions::overrides) for these two rules.
   CheckOptions check;
 };
+
+/// The LinkShapeFunction that reads meshes: for a link, CalcLinkGeometryInertia at unit mass
+/// (collision geometry if all of it can be computed, else visual; meshes resolved by `resolve`,
+/// whose model_file should be the model's file and whose cache should be set so that each mesh
+/// is read once), as a LinkShape with the box of the geometries used. nullopt when the link has
+/// no usable geometry. Give it to CheckOptions::shape and RepairOptions::shape so that the
+/// units, products-sign and about-origin rules and `fix --from-geometry` use meshes.
+/// The returned function holds a copy of `resolve` (the cache by pointer: it must outlive it).
+LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve);
 
 /// The two rules above, as RuleInfo (both warnings, both off by default).
 const std::vector<RuleInfo>& GeometryRules();

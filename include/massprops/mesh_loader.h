@@ -10,6 +10,7 @@
 /// Nothing here throws for bad input.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -110,6 +111,9 @@ struct GeometryMassProperties {
   double volume = 0;                                    ///< = mass at density 1.
   Eigen::Vector3d p_BoGcm_B = Eigen::Vector3d::Zero();  ///< Center of mass, in the link frame.
   RotationalInertia<double> I_GGcm_B;  ///< About the center of mass, expressed in B, density 1.
+  /// Axis-aligned bounding box in B: of the posed shape for primitives (CalcPrimitiveBounds), of
+  /// the scaled and posed vertices for meshes.
+  Eigen::AlignedBox3d box_B;
   /// Meshes only: the resolved path and what the mesh looked like (model used, defects).
   std::string mesh_path;
   std::optional<MeshDiagnostics> mesh_diagnostics;
@@ -133,6 +137,7 @@ struct LinkGeometryInertia {
   Eigen::Vector3d p_BoBcm_B = Eigen::Vector3d::Zero();  ///< Center of mass in the link frame.
   RotationalInertia<double> I_BBcm_B;              ///< About the center of mass, expressed in B.
   bool from_collision = true;                      ///< false when the visual geometries were used.
+  Eigen::AlignedBox3d box_B;                       ///< Bounding box of the geometries used, in B.
   std::vector<GeometryMassProperties> geometries;  ///< The geometries used, in file order.
   /// Why the collision geometries were not used, when the visual ones were (empty otherwise).
   std::string note;

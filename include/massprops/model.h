@@ -63,6 +63,12 @@ struct Geometry {
   SourceLocation location;   ///< The <collision>/<visual> element.
 };
 
+/// The axis-aligned bounding box, in the link frame B, of a primitive geometry (box, cylinder,
+/// sphere, capsule, ellipsoid) posed by X_BG: exact for every orientation (the box of the rotated
+/// shape, not of its rotated box). nullopt for a mesh, kOther, or a non-finite dimension or pose.
+/// Cost: about 50 flops.
+std::optional<Eigen::AlignedBox3d> CalcPrimitiveBounds(const Geometry& geometry);
+
 struct Link {
   std::string name;                  ///< SDF: scoped name of a nested model's link ("inner::link").
   std::optional<Inertial> inertial;  ///< Absent when the file has no <inertial> (massless link).

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "massprops/link_shape.h"
 #include "massprops/model.h"
 
 namespace massprops {
@@ -44,12 +45,17 @@ struct RepairOptions {
   /// the one whose radius of gyration lands nearest half the geometry's half-diagonal is taken).
   bool fix_units = false;
   double density = kDefaultDensity;  ///< kg/m³, for masses computed from geometry. > 0.
-  /// --from-geometry: replace the inertial of every link with primitive geometry ...
+  /// --from-geometry: replace the inertial of every link with usable geometry (primitives, or
+  /// meshes through `shape`) ...
   bool from_geometry_all = false;
   /// ... or of these links only.
   std::vector<std::string> from_geometry_links;
   /// Validity tolerance (as CheckOptions::tolerance): valid inputs are returned unchanged.
   double tolerance = 1e-6;
+  /// The shape of links whose geometry is not all primitives (meshes): used where primitives
+  /// are (from-geometry, units, products sign) when set; see CheckOptions::shape. `massprops fix`
+  /// sets MakeLinkShapeFunction with --geometry or --from-geometry.
+  LinkShapeFunction shape;
 };
 
 /// One number (or a run of numbers) of the file that a repair changes.
