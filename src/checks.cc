@@ -330,13 +330,15 @@ class Checker {
                  Num(g.y()) + ", " + Num(g.z()) + "; negated they differ by " +
                  Format("%.2g%%", 100 * evidence->mismatch_negated) + ", as written by " +
                  Format("%.3g%%", 100 * evidence->mismatch_as_written) +
-                 "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
+                 "): they were probably written as +∫xy dm where URDF/SDF expect -∫xy dm, or "
+                 "copied from a mirror-image part",
              {{"ixy", in.ixy},
               {"ixz", in.ixz},
               {"iyz", in.iyz},
               {"geometry_ixy", g.x()},
               {"geometry_ixz", g.y()},
               {"geometry_iyz", g.z()},
+              {"cosine", evidence->cosine},
               {"mismatch_as_written", evidence->mismatch_as_written},
               {"mismatch_negated", evidence->mismatch_negated}});
       }
@@ -419,9 +421,8 @@ class Checker {
                 {"shifted_principal_max", vs.moments(2)}});
         } else {
           Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
-               who + ": no mass distribution inside the bounding box of the " +
-                   geometry_kind + " geometry (center " + Vec(o) + ", half-sizes " +
-                   Vec(h) +
+               who + ": no mass distribution inside the bounding box of the " + geometry_kind +
+                   " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
                    " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
                    " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " + Num(kGeometryMargin) +
                    " × half-diagonal = " + Num(std::sqrt(r2)) +
@@ -702,11 +703,17 @@ std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& in,
     const double d = I(i, i), g = G(i, i);
     if (!(d > 0) || !(g > 0) || std::max(d / g, g / d) > 2) return std::nullopt;
   }
+  // The direction of the products is what a uniform-density model gets right; their size less
+  // so (a motor inside a shell): the written products must point within about 25° of the
+  // opposite of the geometry's (cosine <= -0.9) and be within a factor 2 of their size.
+  const double size_ratio = p_written.norm() / p_geometry.norm();
+  const double cosine = p_written.dot(p_geometry) / (p_written.norm() * p_geometry.norm());
+  if (!(cosine <= -0.9) || size_ratio > 2 || size_ratio < 0.5) return std::nullopt;
   ProductsSignEvidence evidence;
   evidence.geometry_products = p_geometry;
+  evidence.cosine = cosine;
   evidence.mismatch_as_written = (p_written - p_geometry).norm() / p_geometry.norm();
   evidence.mismatch_negated = (p_written + p_geometry).norm() / p_geometry.norm();
-  if (!(evidence.mismatch_negated <= 0.5)) return std::nullopt;
   return evidence;
 }
 

@@ -292,8 +292,8 @@ class Planner {
     plan->work = work;
     plan->rule = rule.empty() ? "--from-geometry" : rule;
     plan->inserts_inertial = !link.inertial.has_value();
-    const std::string what = std::string(g->from_collision ? "collision" : "visual") +
-                             (kind == "mesh" ? " mesh" : "");
+    const std::string what =
+        std::string(g->from_collision ? "collision" : "visual") + (kind == "mesh" ? " mesh" : "");
     const std::string adjective = kind == "mesh" ? "" : "primitive ";
     if (use_mass) {
       plan->methods.push_back("from-geometry");

@@ -115,6 +115,7 @@ TEST(MeshAwareChecksTest, MeshShapesRevealGramsInertiaAboutOriginAndFlippedProdu
   EXPECT_NEAR(ValueOf(*sign, "geometry_ixz"), 0, 1e-9);
   EXPECT_NEAR(ValueOf(*sign, "mismatch_negated"), 0, 1e-6);
   EXPECT_NEAR(ValueOf(*sign, "mismatch_as_written"), 2, 1e-6);
+  EXPECT_NEAR(ValueOf(*sign, "cosine"), -1, 1e-9);
 }
 
 TEST(MeshAwareChecksTest, ShapeFunctionGivesTheScaledPosedMeshBox) {
@@ -140,7 +141,8 @@ TEST(MeshAwareChecksTest, ShapeFunctionGivesTheScaledPosedMeshBox) {
   EXPECT_LT(shape->G_BBcm_B(0, 1), 1e-9);
   // A link without geometry has no shape; a link with primitives only is a "primitive" shape.
   EXPECT_FALSE(shapes(model.links.at(model.FindLink("no_geometry"))).has_value());
-  const std::optional<LinkShape> primitive = shapes(model.links.at(model.FindLink("box_and_sphere")));
+  const std::optional<LinkShape> primitive =
+      shapes(model.links.at(model.FindLink("box_and_sphere")));
   ASSERT_TRUE(primitive.has_value());
   EXPECT_EQ(primitive->kind, "primitive");
   // Box [-0.1, 0.1]³ and sphere of radius 0.1 at z = 0.5 (fixture).
@@ -154,8 +156,8 @@ TEST(MeshAwareChecksTest, ProductsSignEvidenceNeedsSizableProductsAndMatchingMom
   const double dx = 0.075 / 2, dy = 1.0 / 120, dz = 0.37 / 12;  // per kg
   LinkShape shape;
   shape.volume = 0.018;
-  shape.box_B = Eigen::AlignedBox3d(Eigen::Vector3d(-0.3, -0.3, -0.15),
-                                    Eigen::Vector3d(0.3, 0.3, 0.15));
+  shape.box_B =
+      Eigen::AlignedBox3d(Eigen::Vector3d(-0.3, -0.3, -0.15), Eigen::Vector3d(0.3, 0.3, 0.15));
   shape.G_BBcm_B << c * c * dx + s * s * dy, c * s * (dx - dy), 0, c * s * (dx - dy),
       s * s * dx + c * c * dy, 0, 0, 0, dz;
   Inertial in;
@@ -180,10 +182,26 @@ TEST(MeshAwareChecksTest, ProductsSignEvidenceNeedsSizableProductsAndMatchingMom
   Inertial other = in;
   other.izz *= 2.5;
   EXPECT_FALSE(FindProductsSignEvidence(other, shape).has_value());
-  // Negated products 60% off the geometry's: not close enough.
-  Inertial far = in;
-  far.ixy = -0.4 * in.ixy;  // negated: 0.4·p_g, mismatch 0.6
-  EXPECT_FALSE(FindProductsSignEvidence(far, shape).has_value());
+  // Opposite direction, but 0.45 or 2.1 times the geometry's size: the sizes do not match.
+  Inertial small_opposite = in;
+  small_opposite.ixy = 0.45 * in.ixy;
+  EXPECT_FALSE(FindProductsSignEvidence(small_opposite, shape).has_value());
+  Inertial large_opposite = in;
+  large_opposite.ixy = 2.1 * in.ixy;
+  EXPECT_FALSE(FindProductsSignEvidence(large_opposite, shape).has_value());
+  // 1.5 times the size, opposite direction (as finger_edu's middle link in the corpus): evidence.
+  Inertial larger = in;
+  larger.ixy = 1.5 * in.ixy;
+  const std::optional<ProductsSignEvidence> larger_evidence =
+      FindProductsSignEvidence(larger, shape);
+  ASSERT_TRUE(larger_evidence.has_value());
+  EXPECT_NEAR(larger_evidence->cosine, -1, 1e-12);
+  EXPECT_NEAR(larger_evidence->mismatch_negated, 0.5, 1e-12);  // |1.5 p − p| / |p|
+  // A second product as large as the first, of the geometry's sign: the direction is 45° off
+  // the opposite (cosine −1/√2 > −0.9).
+  Inertial skew = in;
+  skew.iyz = -in.ixy;
+  EXPECT_FALSE(FindProductsSignEvidence(skew, shape).has_value());
   // The inertial frame turned 90° about z: the geometry is compared in that frame, where its
   // product (x, y) changes sign; the written numbers (in Bi) that were flipped are now right.
   Inertial turned = in;
@@ -305,9 +323,9 @@ TEST(MeshAwareChecksTest, FixFromGeometryReadsTheMesh) {
   auto number = [&](const std::string& attribute) {
     const std::size_t at = run.output.find(attribute + "=\"", link);
     EXPECT_NE(at, std::string::npos) << attribute;
-    return at == std::string::npos ? NAN
-                                   : std::strtod(run.output.c_str() + at + attribute.size() + 2,
-                                                 nullptr);
+    return at == std::string::npos
+               ? NAN
+               : std::strtod(run.output.c_str() + at + attribute.size() + 2, nullptr);
   };
   // m·G for m = 2 (ShapeFunctionGivesTheScaledPosedMeshBox).
   EXPECT_NEAR(number("ixx"), 2 * 0.18 / 12, 1e-7);

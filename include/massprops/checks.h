@@ -88,6 +88,8 @@ struct ProductsSignEvidence {
   /// The products (ixy, ixz, iyz as URDF/SDF write them, in the inertial frame Bi) that the
   /// shape implies for the link's mass.
   Eigen::Vector3d geometry_products = Eigen::Vector3d::Zero();
+  /// The cosine of the angle between the written and the geometry's products (as 3-vectors).
+  double cosine = 0;
   /// ‖p_written − p_geometry‖ / ‖p_geometry‖ and ‖−p_written − p_geometry‖ / ‖p_geometry‖ (their
   /// sum is at least 2).
   double mismatch_as_written = 0;
@@ -97,8 +99,9 @@ struct ProductsSignEvidence {
 /// Evidence that the inertial's products of inertia have the wrong sign: the shape's central
 /// inertia (for the inertial's mass, in Bi) has products of at least 10% of its mean moment, the
 /// written products are of that size too, every written moment ixx, iyy, izz is within a factor
-/// 2 of the shape's, and the negated products match the shape's to 50% (mismatch_negated <=
-/// 0.5, so mismatch_as_written >= 1.5). nullopt otherwise (no evidence either way). This is how
+/// 2 of the shape's (the shape describes this body), and the written products, as a 3-vector,
+/// point the opposite way of the shape's (cosine <= -0.9, within about 25°) with a length within a
+/// factor 2 of theirs. nullopt otherwise (no evidence either way). This is how
 /// products-sign-suspect judges an inertia that is valid both as written and negated.
 std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& inertial,
                                                              const LinkShape& shape);
