@@ -373,7 +373,14 @@ std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry&
       }
       case Geometry::Type::kMesh: {
         std::string reason;
-        const std::optional<std::string> path = ResolveMeshUri(geometry.uri, options, &reason);
+        // A relative URI is relative to the file that holds the geometry: for an SDF model
+        // included from another folder, that is the included model's file, not options.model_file.
+        MeshResolveOptions where = options;
+        const std::string& holder = geometry.location.file;
+        if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
+          where.model_file = holder;
+        }
+        const std::optional<std::string> path = ResolveMeshUri(geometry.uri, where, &reason);
         if (!path) {
           if (error) *error = Describe(geometry) + ": " + reason;
           return std::nullopt;

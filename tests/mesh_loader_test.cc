@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "massprops/model_reader.h"
@@ -16,6 +17,7 @@ namespace massprops {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+namespace fs = std::filesystem;
 const std::string kMeshDir = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh";
 
 double RelativeDifference(const RotationalInertia<double>& actual,
@@ -363,6 +365,31 @@ TEST_F(LinkGeometryTest, ScaledRotatedMeshGivesTheBoxInertiaInTheLinkFrame) {
   EXPECT_LT(RelativeDifference(g->I_BBcm_B, Box(2, b, a, c)), 1e-12);
   ASSERT_EQ(g->geometries.size(), 1u);
   EXPECT_EQ(g->geometries[0].mesh_path, kMeshDir + "/box_ascii.stl");
+  // The bounding box of the posed vertices: x from 1 − b to 1, y from 0 to a, z from 0 to c.
+  EXPECT_LT((g->box_B.min() - Eigen::Vector3d(1 - b, 0, 0)).norm(), 1e-15);
+  EXPECT_LT((g->box_B.max() - Eigen::Vector3d(1, a, c)).norm(), 1e-15);
+}
+
+TEST(MeshLoaderTest, RelativeMeshOfAnIncludedSdfModelResolvesFromTheModelsOwnFile) {
+  // testdata/mesh/sdf/world.sdf includes model://mesh_part, whose mesh URI ../../../box_ascii.stl
+  // is relative to models/mesh_part/model.sdf (from the world's folder it names nothing).
+  ReadOptions read_options;
+  read_options.sdf.model_paths = {kMeshDir + "/sdf/models"};
+  const ReadResult read = ReadModelFile(kMeshDir + "/sdf/world.sdf", read_options);
+  ASSERT_TRUE(read.errors.empty()) << read.errors.front().ToString();
+  ASSERT_EQ(read.models.size(), 1u);
+  const Model& model = read.models[0];
+  ASSERT_EQ(model.links.size(), 1u);
+  MeshResolveOptions options;
+  options.use_environment = false;
+  options.model_file = model.file;  // the world
+  std::string error;
+  const auto g = CalcLinkGeometryInertia(model.links[0], 2.0, options, &error);
+  ASSERT_TRUE(g) << error;
+  // The 0.1 x 0.2 x 0.3 box: volume 0.006 m³ (to the STL's float32 rounding).
+  EXPECT_NEAR(g->volume, 0.006, 1e-9);
+  const std::string& path = g->geometries.at(0).mesh_path;
+  EXPECT_EQ(fs::weakly_canonical(path), fs::weakly_canonical(kMeshDir + "/box_ascii.stl"));
 }
 
 TEST_F(LinkGeometryTest, SeveralCollisionsAreSummedAsOneUniformBody) {

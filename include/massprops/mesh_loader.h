@@ -41,7 +41,9 @@ struct MeshResolveOptions {
   /// Read the environment variables above.
   bool use_environment = true;
   /// The model file that references the meshes: relative paths (and `file://` relative paths)
-  /// are relative to its folder (to the current directory when empty or "-").
+  /// are relative to its folder (to the current directory when empty or "-"). A geometry whose
+  /// location names another file (a model included by an SDF world) is resolved relative to
+  /// that file instead (CalcGeometryMassProperties).
   std::string model_file;
   /// How open or non-manifold meshes are modelled (density is ignored: results are per unit
   /// density, or scaled to a given mass).
