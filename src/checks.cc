@@ -140,6 +140,15 @@ std::string GuessUnitError(double factor) {
   return best->text;
 }
 
+// A mesh 1000 times too large (an STL in millimetres referenced without scale="0.001 ...") makes
+// a right inertia look 1e6 too small: say so when the geometry is a mesh and k/e is near 1/1000
+// of a solid body's 0.5.
+std::string MeshScaleHint(const std::optional<LinkShape>& shape, double ratio) {
+  if (!shape || shape->kind != "mesh" || !(ratio < 0.5 / 100)) return "";
+  return "; or the mesh is in millimetres and lacks scale=\"0.001 0.001 0.001\" (its box is " +
+         Format("%.3g", 0.5 / ratio) + " times the size the radius of gyration suggests)";
+}
+
 class Checker {
  public:
   Checker(const Model& model, const CheckOptions& options) : model_(model), options_(options) {}
@@ -358,8 +367,8 @@ class Checker {
             Emit(kUnitsSuspect, link, InertiaLocation(link),
                  who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
                      " times the half-diagonal " + Num(extent) + " m of its " + geometry_name +
-                     " geometry (expected " +
-                     "about 0.3 to 1): " + GuessUnitError(ratio * ratio / 0.25),
+                     " geometry (expected " + "about 0.3 to 1): " +
+                     GuessUnitError(ratio * ratio / 0.25) + MeshScaleHint(shape, ratio),
                  {{"radius_of_gyration", k},
                   {"geometry_half_diagonal", extent},
                   {"ratio", ratio},

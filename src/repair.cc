@@ -326,11 +326,13 @@ class Planner {
     const double trace = I.trace();
     if (!(w.mass > 0) || !(trace > 0)) return;
     std::optional<Eigen::AlignedBox3d> box;
+    bool mesh = false;
     if (const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link)) {
       box = bounds->box_B;
     } else if (options_.shape) {
       if (const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape)) {
         box = shape->box_B;
+        mesh = shape->kind == "mesh";
       }
     }
     const double extent = box ? 0.5 * box->diagonal().norm() : 0;
@@ -356,7 +358,10 @@ class Planner {
       if (extent > 0) {
         const double ratio = k_new / extent;
         const double score = std::abs(std::log(ratio / 0.5));
-        if (ratio >= 0.1 && ratio <= 2) plausible.push_back({score, &c});
+        // Against a mesh, "the inertia is 1e6 too small" is indistinguishable from "the mesh is
+        // in millimetres without a scale", the commoner mistake: never chosen on its own then.
+        const bool ambiguous = mesh && c.inertia_factor == 1e6;
+        if (ratio >= 0.1 && ratio <= 2 && !ambiguous) plausible.push_back({score, &c});
         if (ratio > 1.0 / 30 && ratio < 30 && score < nearest_score) {
           nearest_score = score;
           nearest = &c;

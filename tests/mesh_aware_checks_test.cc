@@ -92,7 +92,16 @@ TEST(MeshAwareChecksTest, MeshShapesRevealGramsInertiaAboutOriginAndFlippedProdu
   EXPECT_EQ(RulesOf(findings, "products_flipped"),
             std::vector<std::string>{"products-sign-suspect"});
   EXPECT_TRUE(RulesOf(findings, "products_right").empty());
-  EXPECT_EQ(cache.files_loaded(), 1);  // one STL for four links
+  EXPECT_EQ(RulesOf(findings, "mesh_in_mm"), std::vector<std::string>{"units-suspect"});
+  EXPECT_EQ(cache.files_loaded(), 1);  // one STL for five links
+
+  // mesh_in_mm: k = sqrt((0.28/6)/4) against the half-diagonal 1000·sqrt(0.14)/2 of the box
+  // scaled by 1000; the message names the missing mesh scale.
+  const Finding* mm = Find(findings, "units-suspect", "mesh_in_mm");
+  ASSERT_NE(mm, nullptr);
+  EXPECT_NEAR(ValueOf(*mm, "ratio"), std::sqrt(0.28 / 6 / 4) / (500 * std::sqrt(0.14)), 1e-9);
+  EXPECT_NE(mm->message.find("lacks scale=\"0.001 0.001 0.001\""), std::string::npos)
+      << mm->message;
 
   // grams: k = sqrt(tr(I)/(2m)) = sqrt((0.28/6)/4000); half-diagonal of the 0.1 x 0.2 x 0.3 box
   // = sqrt(0.14)/2.
@@ -221,6 +230,7 @@ TEST(MeshAwareChecksTest, RepairsUseTheMeshes) {
   RepairOptions options;
   options.shape = check.shape;
   const std::vector<Repair> repairs = PlanRepairs(model, CheckModel(model, check), options);
+  // mesh_in_mm gets none: against a mesh, "inertia 1e6 too small" is not chosen on its own.
   ASSERT_EQ(repairs.size(), 3u);
   for (const Repair& r : repairs) {
     EXPECT_EQ(r.resolves, std::vector<std::string>{r.rule}) << r.link;
@@ -305,8 +315,10 @@ TEST(MeshAwareChecksTest, FixWithGeometryRepairsTheMeshFindingsAndTheResultCheck
       RunTool("check --geometry --disable inertia-disagrees-with-geometry --fail-on warning '" +
                   fixed + "'",
               true);
-  EXPECT_EQ(check.exit_code, 0) << check.output;
-  EXPECT_NE(check.output.find("0 warnings"), std::string::npos) << check.output;
+  // Only mesh_in_mm's warning is left: its inertia was right and is untouched.
+  EXPECT_EQ(check.exit_code, 1) << check.output;
+  EXPECT_NE(check.output.find("1 warning"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("link 'mesh_in_mm'"), std::string::npos) << check.output;
   // Without --geometry, fix finds nothing to repair in the same file.
   const ToolRun plain = RunTool("fix --dry-run '" + kDefects + "'", true);
   EXPECT_EQ(plain.exit_code, 0) << plain.output;
