@@ -131,6 +131,10 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
                       " geometry implies " + Format(g) + " kg m^2 for mass " +
                       Format(link.inertial->mass) + " kg (a factor " + Format(worst) +
                       ", more than " + Format(options.factor) + ")";
+    for (const LinkGeometryComparison::Mesh& mesh : comparison.meshes) {
+      const std::string note = DescribeMeshDiagnostics(mesh.diagnostics);
+      if (!note.empty()) finding.message += "; mesh '" + mesh.uri + "': " + note;
+    }
     finding.values = {{"mass", link.inertial->mass},
                       {"declared_moment", declared(worst_k)},
                       {"geometry_moment", g},

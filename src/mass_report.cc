@@ -438,6 +438,16 @@ LinkGeometryComparison CompareLinkWithGeometry(const Link& link,
     return result;
   }
   result.from_collision = implied->from_collision;
+  // implied->geometries are the link's geometries of the chosen kind, in file order.
+  std::size_t part = 0;
+  for (const Geometry& g : link.geometries) {
+    if (g.is_collision != implied->from_collision) continue;
+    if (part >= implied->geometries.size()) break;
+    const GeometryMassProperties& used = implied->geometries[part++];
+    if (g.type == Geometry::Type::kMesh && used.mesh_diagnostics) {
+      result.meshes.push_back({g.uri, used.mesh_path, *used.mesh_diagnostics});
+    }
+  }
   result.geometry = MakeBodyMassProperties(link.name, mass, implied->p_BoBcm_B,
                                            implied->I_BBcm_B.CopyToFullMatrix3());
   // The declared inertia, about its center of mass, expressed in B: R_BBi I_Bi R_BBi^T.
@@ -509,6 +519,21 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
                            {"moment_rel_diff", std::move(rel)},
                            {"axis_angle_deg", g.axis_angle_deg ? nlohmann::json(*g.axis_angle_deg)
                                                                : nlohmann::json()}};
+          nlohmann::json meshes = nlohmann::json::array();
+          for (const LinkGeometryComparison::Mesh& mesh : g.meshes) {
+            const MeshDiagnostics& d = mesh.diagnostics;
+            meshes.push_back({{"uri", mesh.uri},
+                              {"path", mesh.path},
+                              {"triangles", d.num_triangles},
+                              {"model", ToString(d.model)},
+                              {"winding_inverted", d.winding_inverted},
+                              {"boundary_edges", d.boundary_edges},
+                              {"non_manifold_edges", d.non_manifold_edges},
+                              {"inconsistent_edges", d.inconsistent_edges},
+                              {"degenerate_triangles", d.degenerate_triangles},
+                              {"note", DescribeMeshDiagnostics(d)}});
+          }
+          j["geometry"]["meshes"] = std::move(meshes);
         }
       }
       model["links"].push_back(std::move(j));
@@ -730,6 +755,12 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
       if (!c.error.empty()) {
         notes.push_back("link '" + link.name + "': no geometry inertia: " + c.error);
         continue;
+      }
+      for (const LinkGeometryComparison::Mesh& mesh : c.meshes) {
+        const std::string note = DescribeMeshDiagnostics(mesh.diagnostics);
+        if (!note.empty()) {
+          notes.push_back("link '" + link.name + "': mesh '" + mesh.uri + "': " + note);
+        }
       }
       std::vector<std::string> row{link.name, c.from_collision ? "collision" : "visual"};
       for (int k = 0; k < 3; ++k) row.push_back(Number(c.geometry.principal_moments(k), kDigits));

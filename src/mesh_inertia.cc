@@ -162,6 +162,50 @@ const char* ToString(MeshSolidModel model) {
   return "unknown";
 }
 
+std::string DescribeMeshDiagnostics(const MeshDiagnostics& d) {
+  std::vector<std::string> parts;
+  if (d.winding_inverted) {
+    parts.push_back("its triangles are wound inward (negative volume): the sign was flipped");
+  }
+  std::vector<std::string> edges;
+  if (d.boundary_edges > 0) edges.push_back(std::to_string(d.boundary_edges) + " boundary");
+  if (d.non_manifold_edges > 0) {
+    edges.push_back(std::to_string(d.non_manifold_edges) + " non-manifold");
+  }
+  if (d.inconsistent_edges > 0) {
+    edges.push_back(std::to_string(d.inconsistent_edges) + " inconsistently oriented");
+  }
+  if (!edges.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      list += (i == 0 ? "" : i + 1 == edges.size() ? " and " : ", ") + edges[i];
+    }
+    std::string text = "it is not a closed manifold (" + list + " edges): ";
+    if (d.model == MeshSolidModel::kClosedSolid) {
+      text +=
+          "integrated as a closed solid, since its volume does not depend on the reference "
+          "point (cracks or T-junctions of no area)";
+    } else {
+      text += std::string("modelled as its ") + ToString(d.model);
+      // The reason, unless it only repeats the edge counts.
+      if (!d.fallback_reason.empty() && d.fallback_reason.find("edge") == std::string::npos) {
+        text += " (" + d.fallback_reason + ")";
+      }
+    }
+    parts.push_back(text);
+  } else if (d.model != MeshSolidModel::kClosedSolid) {
+    std::string text = std::string("modelled as its ") + ToString(d.model);
+    if (!d.fallback_reason.empty()) text += " (" + d.fallback_reason + ")";
+    parts.push_back(text);
+  }
+  if (d.degenerate_triangles > 0) {
+    parts.push_back(std::to_string(d.degenerate_triangles) + " degenerate triangle(s) add nothing");
+  }
+  std::string sentence;
+  for (std::size_t i = 0; i < parts.size(); ++i) sentence += (i ? "; " : "") + parts[i];
+  return sentence;
+}
+
 MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
   ValidateMesh(mesh);
   MeshDiagnostics d;

@@ -221,6 +221,44 @@ TEST(ReportGeometryTest, CsvGetsGeometryColumnsOnlyWithTheFlag) {
   EXPECT_TRUE(saw_ten_times && saw_missing && saw_group);
 }
 
+TEST(ReportGeometryTest, MeshDefectsAreNamedInJsonAndText) {
+  // testdata/mesh/mesh_notes.urdf: an inward-wound tetrahedron (4 triangles), the box without
+  // its top (two triangles per face, 5 faces: 10 triangles, 4 boundary edges), a clean box.
+  const std::string file = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh/mesh_notes.urdf";
+  const ToolRun run = RunTool("report --geometry --format json '" + file + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json json = nlohmann::json::parse(run.output);
+  const nlohmann::json& model = json["models"][0];
+  const nlohmann::json& inward = LinkNamed(model, "inward")["geometry"]["meshes"].at(0);
+  EXPECT_EQ(inward["uri"], "packages/renamed_folder/tet_inward.obj");
+  EXPECT_EQ(inward["triangles"], 4);
+  EXPECT_EQ(inward["winding_inverted"], true);
+  EXPECT_EQ(inward["model"], "closed solid");
+  EXPECT_NE(inward["note"].get<std::string>().find("wound inward"), std::string::npos);
+  // Its volume 1·2·3/6 = 1 m³ with the sign flipped: the geometry's inertia is positive.
+  EXPECT_GT(LinkNamed(model, "inward")["geometry"]["principal_moments"][0].get<double>(), 0);
+  const nlohmann::json& open = LinkNamed(model, "open")["geometry"]["meshes"].at(0);
+  EXPECT_EQ(open["triangles"], 10);
+  EXPECT_EQ(open["boundary_edges"], 4);
+  EXPECT_EQ(open["model"], "convex hull");
+  EXPECT_EQ(open["winding_inverted"], false);
+  const nlohmann::json& clean = LinkNamed(model, "clean")["geometry"]["meshes"].at(0);
+  EXPECT_EQ(clean["boundary_edges"], 0);
+  EXPECT_EQ(clean["note"], "");
+
+  const ToolRun text = RunTool("report --geometry '" + file + "'");
+  ASSERT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.output.find("note: link 'inward': mesh 'packages/renamed_folder/tet_inward.obj': "
+                             "its triangles are wound inward"),
+            std::string::npos)
+      << text.output;
+  EXPECT_NE(text.output.find("note: link 'open': mesh 'open_box.obj': it is not a closed manifold "
+                             "(4 boundary edges): modelled as its convex hull"),
+            std::string::npos)
+      << text.output;
+  EXPECT_EQ(text.output.find("link 'clean': mesh"), std::string::npos);
+}
+
 TEST(ReportGeometryTest, CorpusDoublePendulumLink1AgreesWithItsMeshWithinOnePercent) {
   // ../shared/corpus/example-robot-data: the meshes are package://example-robot-data/...,
   // found with --package-path at the corpus (docs/meshes.md); docs/meshes.md's table gives

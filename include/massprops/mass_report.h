@@ -85,6 +85,15 @@ struct LinkGeometryComparison {
   /// geometry-implied principal axes; nullopt when the axes are not defined (see
   /// CalcPrincipalAxisAngle).
   std::optional<double> axis_angle_deg;
+  /// The meshes among the geometries used, in file order, with what their triangles looked like
+  /// (the model used — closed solid, convex hull, thin shell —, an inverted winding, open or
+  /// non-manifold edges; see DescribeMeshDiagnostics).
+  struct Mesh {
+    std::string uri;   ///< As written in the model file.
+    std::string path;  ///< As resolved.
+    MeshDiagnostics diagnostics;
+  };
+  std::vector<Mesh> meshes;
 };
 
 /// The angle in degrees between two sets of principal axes, given by the principal moments

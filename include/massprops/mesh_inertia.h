@@ -109,6 +109,12 @@ struct MeshMassProperties {
   MeshDiagnostics diagnostics;
 };
 
+/// One sentence on what was notable about a mesh and what was done about it, for users: the
+/// winding was inverted (flipped), it is open / non-manifold / inconsistently oriented (with the
+/// counts) and which model was used (closed solid despite T-junctions, convex hull, thin shell,
+/// and why), degenerate triangles. Empty for a clean closed manifold integrated as it is.
+std::string DescribeMeshDiagnostics(const MeshDiagnostics& diagnostics);
+
 /// The topology of a mesh: fills every count of MeshDiagnostics except winding_inverted, model
 /// and fallback_reason. Throws std::invalid_argument if a triangle's index is out of range or a
 /// vertex is not finite. Cost: linear in vertices + triangles (a hash of the positions and a
