@@ -327,6 +327,41 @@ TEST(MeshAwareChecksTest, FixWithGeometryRepairsTheMeshFindingsAndTheResultCheck
   fs::remove_all(scratch, ec);
 }
 
+TEST(MeshAwareChecksTest, FixFromGeometryWithoutALinkNameReplacesEveryLinkWithGeometry) {
+  // `--from-geometry` with no value, before another option or after FILE: all links. In
+  // robot.urdf, scaled_box and box_and_sphere have an inertial and usable geometry.
+  for (const std::string& args : {"fix --from-geometry --dry-run '" + kMeshRobot + "'",
+                                  "fix --dry-run '" + kMeshRobot + "' --from-geometry"}) {
+    const ToolRun run = RunTool(args, true);
+    EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.output;
+    EXPECT_NE(run.output.find("link 'scaled_box' [--from-geometry"), std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("link 'box_and_sphere' [--from-geometry"), std::string::npos)
+        << run.output;
+  }
+}
+
+TEST(MeshAwareChecksTest, FixFromGeometrySaysWhyANamedLinkIsLeftAlone) {
+  // visual_only's mesh is package://mesh/cube_quads.obj: without --package-path it is not found.
+  const ToolRun run =
+      RunTool("fix --dry-run '" + kMeshRobot + "' --from-geometry=visual_only", true);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("warning: --from-geometry: link 'visual_only' is left as it is: "),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("package 'mesh' not found"), std::string::npos) << run.output;
+  // With the package path it is replaced: a cube of side 2 of water, 8 m³ → 8000 kg.
+  const ToolRun found =
+      RunTool("fix --dry-run '" + kMeshRobot + "' --package-path '" +
+                  std::string(MASSPROPS_TESTDATA_DIR) + "' --from-geometry=visual_only",
+              true);
+  EXPECT_EQ(found.exit_code, 0) << found.output;
+  EXPECT_NE(found.output.find("link 'visual_only' [--from-geometry → from-geometry-density]: new "
+                              "<inertial>: mass 8000"),
+            std::string::npos)
+      << found.output;
+}
+
 TEST(MeshAwareChecksTest, FixFromGeometryReadsTheMesh) {
   const ToolRun run = RunTool("fix '" + kMeshRobot + "' --from-geometry=scaled_box", true);
   EXPECT_EQ(run.exit_code, 0) << run.output;

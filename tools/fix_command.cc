@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -153,8 +154,8 @@ int RunFix(const FixArgs& args) {
   // Meshes are read only when asked: --geometry (the checks and repairs use them) or
   // --from-geometry (the inertials it replaces may come from meshes). Each file is read once.
   MeshCache mesh_cache;
+  MeshResolveOptions resolve;
   if (args.geometry || args.from_geometry) {
-    MeshResolveOptions resolve;
     resolve.package_paths = args.package_paths;
     resolve.model_paths = args.model_paths;
     resolve.model_file = args.file;
@@ -176,6 +177,20 @@ int RunFix(const FixArgs& args) {
       std::cerr << "massprops: error: --from-geometry: " << name << " has no link '" << link
                 << "'\n";
       return kExitError;
+    }
+    // A named link that got no repair: say why, rather than change nothing silently.
+    const bool repaired = std::any_of(repairs.begin(), repairs.end(),
+                                      [&](const Repair& r) { return r.link == link; });
+    if (repaired) continue;
+    for (const Model& model : read.models) {
+      const int index = model.FindLink(link);
+      if (index < 0) continue;
+      std::string why;
+      if (CalcLinkGeometryInertia(model.links[index], 1.0, resolve, &why)) {
+        why = "its geometry gives the inertial it already has";
+      }
+      std::cerr << "massprops: warning: --from-geometry: link '" << link
+                << "' is left as it is: " << why << "\n";
     }
   }
   const PatchResult patched = PatchModelText(text, read.models.front().format, repairs);
@@ -314,6 +329,10 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
       ->allow_extra_args(false);
   fix->callback([run, args, fix] {
     args->from_geometry = fix->count("--from-geometry") > 0;
+    // CLI11 records `--from-geometry` given without a value as one empty value.
+    args->from_geometry_links.erase(
+        std::remove(args->from_geometry_links.begin(), args->from_geometry_links.end(), ""),
+        args->from_geometry_links.end());
     // `fix --from-geometry robot.urdf`: the option swallowed the FILE.
     if (args->file.empty() && !args->from_geometry_links.empty()) {
       args->file = args->from_geometry_links.back();
