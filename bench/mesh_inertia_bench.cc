@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 
+#include "../tests/test_shapes.h"
 #include "massprops/mesh_inertia.h"
 
 namespace massprops {
@@ -21,34 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 // stacks = slices/2), centered away from the origin.
 TriangleMesh MakeSphere(std::int64_t triangles) {
   const int slices = std::max(8, static_cast<int>(std::lround(std::sqrt(triangles))));
-  const int stacks = slices / 2;
-  const double r = 0.1;
-  const Eigen::Vector3d center(0.3, -0.2, 0.5);
-  TriangleMesh mesh;
-  mesh.vertices.push_back(center + Eigen::Vector3d(0, 0, r));
-  for (int i = 1; i < stacks; ++i) {
-    const double theta = kPi * i / stacks;
-    for (int j = 0; j < slices; ++j) {
-      const double phi = 2 * kPi * j / slices;
-      mesh.vertices.push_back(center + r * Eigen::Vector3d(std::sin(theta) * std::cos(phi),
-                                                           std::sin(theta) * std::sin(phi),
-                                                           std::cos(theta)));
-    }
-  }
-  mesh.vertices.push_back(center - Eigen::Vector3d(0, 0, r));
-  const auto south = static_cast<std::int32_t>(mesh.vertices.size() - 1);
-  auto ring = [&](int i, int j) { return 1 + (i - 1) * slices + (j % slices); };
-  for (int j = 0; j < slices; ++j) mesh.triangles.push_back({0, ring(1, j), ring(1, j + 1)});
-  for (int i = 1; i + 1 < stacks; ++i) {
-    for (int j = 0; j < slices; ++j) {
-      mesh.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
-      mesh.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
-    }
-  }
-  for (int j = 0; j < slices; ++j) {
-    mesh.triangles.push_back({south, ring(stacks - 1, j + 1), ring(stacks - 1, j)});
-  }
-  return mesh;
+  return test_support::MakeUvSphere(0.1, slices, Eigen::Vector3d(0.3, -0.2, 0.5));
 }
 
 void SetCounters(benchmark::State& state, const TriangleMesh& mesh) {

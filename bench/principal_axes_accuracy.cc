@@ -21,9 +21,12 @@
 #include <string>
 #include <vector>
 
+#include "../tests/test_shapes.h"
 #include "massprops/principal_axes.h"
 
 namespace {
+
+using massprops::test_support::RandomRotation;
 
 using massprops::Matrix3;
 using massprops::Vector3;
@@ -33,13 +36,6 @@ struct Family {
   std::string name;
   std::vector<Matrix3<double>> inputs;
 };
-
-Matrix3<LongDouble> RandomRotation(std::mt19937_64* rng) {
-  std::normal_distribution<double> normal;
-  Eigen::Quaternion<LongDouble> q(normal(*rng), normal(*rng), normal(*rng), normal(*rng));
-  q.normalize();
-  return q.toRotationMatrix();
-}
 
 // R * diag(moments) * R^T, computed in long double, then rounded to double.
 Matrix3<double> Rotated(const Vector3<LongDouble>& moments, std::mt19937_64* rng) {

@@ -143,8 +143,8 @@ std::string GuessUnitError(double factor) {
 // A mesh 1000 times too large (an STL in millimetres referenced without scale="0.001 ...") makes
 // a right inertia look 1e6 too small: say so when the geometry is a mesh and k/e is near 1/1000
 // of a solid body's 0.5.
-std::string MeshScaleHint(const std::optional<LinkShape>& shape, double ratio) {
-  if (!shape || shape->kind != "mesh" || !(ratio < 0.5 / 100)) return "";
+std::string MeshScaleHint(const GeometryBounds& bounds, double ratio) {
+  if (!bounds.from_mesh || !(ratio < 0.5 / 100)) return "";
   return "; or the mesh is in millimetres and lacks scale=\"0.001 0.001 0.001\" (its box is " +
          Format("%.3g", 0.5 / ratio) + " times the size the radius of gyration suggests)";
 }
@@ -311,18 +311,13 @@ class Checker {
     const MassProperties props = LinkMassProperties(link, model_.format);
     const Eigen::Vector3d& c = props.p_FoScm_F;
     const Eigen::Matrix3d& I_B = props.I_SScm_F;
-    // The link's extent: its primitives, else (meshes) the shape function when one is given.
-    std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
-    std::optional<LinkShape> shape;
-    if (!bounds && options_.shape) {
-      shape = CalcLinkShape(link, options_.shape);
-      if (shape) bounds = GeometryBounds{shape->box_B, shape->from_collision, 1};
-    } else {
-      shape = CalcLinkShape(link);
-    }
+    // The link as a solid of its geometry (primitives; meshes through options_.shape), and its
+    // extent.
+    const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
+    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, shape);
     const std::string geometry_name =
         std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
-        (shape && shape->kind == "mesh" ? " mesh" : "");
+        (bounds && bounds->from_mesh ? " mesh" : "");
     const double trace = I_written.trace();
 
     // products-sign-suspect for an inertia valid both ways: the geometry decides.
@@ -368,7 +363,7 @@ class Checker {
                  who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
                      " times the half-diagonal " + Num(extent) + " m of its " + geometry_name +
                      " geometry (expected " + "about 0.3 to 1): " +
-                     GuessUnitError(ratio * ratio / 0.25) + MeshScaleHint(shape, ratio),
+                     GuessUnitError(ratio * ratio / 0.25) + MeshScaleHint(*bounds, ratio),
                  {{"radius_of_gyration", k},
                   {"geometry_half_diagonal", extent},
                   {"ratio", ratio},
@@ -729,6 +724,13 @@ std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& in,
 std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link) {
   if (std::optional<GeometryBounds> bounds = BoundsOf(link, /*collision=*/true)) return bounds;
   return BoundsOf(link, /*collision=*/false);
+}
+
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
+                                                     const std::optional<LinkShape>& shape) {
+  if (std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link)) return bounds;
+  if (!shape) return std::nullopt;
+  return GeometryBounds{shape->box_B, shape->from_collision, 1, shape->kind == "mesh"};
 }
 
 }  // namespace massprops

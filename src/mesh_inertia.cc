@@ -42,31 +42,24 @@ void ValidateMesh(const TriangleMesh& mesh) {
   }
 }
 
-// Center of the bounding box of the vertices that triangles use (the origin if none).
-Eigen::Vector3d BoundingBoxCenter(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty()) return Eigen::Vector3d::Zero();
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
+// The bounding box of the vertices that triangles use (empty if none).
+Eigen::AlignedBox3d UsedBoundingBox(const TriangleMesh& mesh) {
+  Eigen::AlignedBox3d box;
   for (const auto& triangle : mesh.triangles) {
-    for (const std::int32_t index : triangle) {
-      lo = lo.cwiseMin(mesh.vertices[index]);
-      hi = hi.cwiseMax(mesh.vertices[index]);
-    }
+    for (const std::int32_t index : triangle) box.extend(mesh.vertices[index]);
   }
-  return (lo + hi) / 2;
+  return box;
+}
+
+// Its center (the origin if there is no triangle) and its diagonal (0 then).
+Eigen::Vector3d BoundingBoxCenter(const TriangleMesh& mesh) {
+  const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
+  return box.isEmpty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(box.center());
 }
 
 double BoundingBoxDiagonal(const TriangleMesh& mesh) {
-  if (mesh.triangles.empty()) return 0;
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for (const auto& triangle : mesh.triangles) {
-    for (const std::int32_t index : triangle) {
-      lo = lo.cwiseMin(mesh.vertices[index]);
-      hi = hi.cwiseMax(mesh.vertices[index]);
-    }
-  }
-  return (hi - lo).norm();
+  const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
+  return box.isEmpty() ? 0 : box.diagonal().norm();
 }
 
 // Adds w·(a·aᵀ + b·bᵀ + c·cᵀ + s·sᵀ), s = a + b + c, to C.

@@ -245,6 +245,14 @@ class Planner {
     return link.inertial ? link.inertial->X_BBi.R_AB : Eigen::Matrix3d::Identity();
   }
 
+  // CalcLinkShape with options_.shape, once per link (a mesh shape reads and integrates meshes).
+  const std::optional<LinkShape>& ShapeOf(const Link& link) const {
+    auto it = shapes_.find(link.name);
+    if (it == shapes_.end())
+      it = shapes_.emplace(link.name, CalcLinkShape(link, options_.shape)).first;
+    return it->second;
+  }
+
   // The link's geometry as a uniform solid of `mass` (> 0), else of density·volume: its
   // primitives, else options_.shape (meshes). *kind: "primitive" or "mesh".
   std::optional<PrimitiveMassProperties> GeometryOf(const Link& link, double mass,
@@ -257,7 +265,7 @@ class Planner {
     if (!options_.shape || !(options_.density > 0) || !std::isfinite(options_.density)) {
       return std::nullopt;
     }
-    const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
+    const std::optional<LinkShape>& shape = ShapeOf(link);
     if (!shape) return std::nullopt;
     PrimitiveMassProperties g;
     g.volume = shape->volume;
@@ -325,17 +333,9 @@ class Planner {
     const Eigen::Matrix3d I = WrittenMatrix(w);
     const double trace = I.trace();
     if (!(w.mass > 0) || !(trace > 0)) return;
-    std::optional<Eigen::AlignedBox3d> box;
-    bool mesh = false;
-    if (const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link)) {
-      box = bounds->box_B;
-    } else if (options_.shape) {
-      if (const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape)) {
-        box = shape->box_B;
-        mesh = shape->kind == "mesh";
-      }
-    }
-    const double extent = box ? 0.5 * box->diagonal().norm() : 0;
+    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, ShapeOf(link));
+    const bool mesh = bounds && bounds->from_mesh;
+    const double extent = bounds ? 0.5 * bounds->box_B.diagonal().norm() : 0;
     struct Candidate {
       double inertia_factor;
       double mass_factor;
@@ -407,7 +407,7 @@ class Planner {
     if (!IsValid(negated, options_.tolerance)) return;
     if (IsValid(I, options_.tolerance)) {
       // Valid both ways: negate only on the geometry's evidence (as the check judged it).
-      const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
+      const std::optional<LinkShape>& shape = ShapeOf(link);
       if (!shape) return;
       const std::optional<ProductsSignEvidence> evidence = FindProductsSignEvidence(w, *shape);
       if (!evidence) return;
@@ -518,6 +518,7 @@ class Planner {
 
   const Model& model_;
   const RepairOptions& options_;
+  mutable std::map<std::string, std::optional<LinkShape>> shapes_;  // ShapeOf's memo
 };
 
 }  // namespace

@@ -11,9 +11,12 @@
 #include <vector>
 
 #include "massprops/unit_inertia.h"
+#include "test_shapes.h"
 
 namespace massprops {
 namespace {
+
+using test_support::MakeUvSphere;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -88,35 +91,6 @@ TriangleMesh MakeOctahedron(double a) {
         }
       }
     }
-  }
-  return mesh;
-}
-
-// A UV sphere of radius r with `slices` longitudes and slices/2 stacks, vertices on the sphere.
-TriangleMesh MakeUvSphere(double r, int slices) {
-  const int stacks = slices / 2;
-  TriangleMesh mesh;
-  mesh.vertices.emplace_back(0, 0, r);  // North pole: 0.
-  for (int i = 1; i < stacks; ++i) {
-    const double theta = kPi * i / stacks;
-    for (int j = 0; j < slices; ++j) {
-      const double phi = 2 * kPi * j / slices;
-      mesh.vertices.emplace_back(r * std::sin(theta) * std::cos(phi),
-                                 r * std::sin(theta) * std::sin(phi), r * std::cos(theta));
-    }
-  }
-  mesh.vertices.emplace_back(0, 0, -r);  // South pole.
-  const auto south = static_cast<std::int32_t>(mesh.vertices.size() - 1);
-  auto ring = [&](int i, int j) { return 1 + (i - 1) * slices + (j % slices); };
-  for (int j = 0; j < slices; ++j) mesh.triangles.push_back({0, ring(1, j), ring(1, j + 1)});
-  for (int i = 1; i + 1 < stacks; ++i) {
-    for (int j = 0; j < slices; ++j) {
-      mesh.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
-      mesh.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
-    }
-  }
-  for (int j = 0; j < slices; ++j) {
-    mesh.triangles.push_back({south, ring(stacks - 1, j + 1), ring(stacks - 1, j)});
   }
   return mesh;
 }

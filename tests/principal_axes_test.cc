@@ -14,21 +14,17 @@
 #include <type_traits>
 #include <vector>
 
+#include "test_shapes.h"
+
 namespace massprops {
 namespace {
+
+using test_support::RandomRotation;
 
 using LongDouble = long double;
 
 template <typename T>
 constexpr T kEps = std::numeric_limits<T>::epsilon();
-
-// A random rotation from a normalized Gaussian quaternion (uniform on SO(3)), in long double.
-Matrix3<LongDouble> RandomRotation(std::mt19937_64* rng) {
-  std::normal_distribution<double> normal;
-  Eigen::Quaternion<LongDouble> q(normal(*rng), normal(*rng), normal(*rng), normal(*rng));
-  q.normalize();
-  return q.toRotationMatrix();
-}
 
 // R diag(moments) R^T, computed in long double and rounded to T.
 template <typename T>

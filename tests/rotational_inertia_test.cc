@@ -14,22 +14,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "test_shapes.h"
+
 namespace massprops {
 namespace {
 
+using test_support::RandomRotation;
+
 template <typename T>
 constexpr T kEps = std::numeric_limits<T>::epsilon();
-
-// A uniformly distributed random rotation (normalized Gaussian quaternion, Shoemake/Marsaglia),
-// built in long double and rounded to T.
-template <typename T>
-Matrix3<T> RandomRotation(std::mt19937_64* generator) {
-  std::normal_distribution<double> normal;
-  Eigen::Quaternion<long double> q(normal(*generator), normal(*generator), normal(*generator),
-                                   normal(*generator));
-  q.normalize();
-  return q.toRotationMatrix().template cast<T>();
-}
 
 // R_z(θ): re-expresses a vector from E in A when A is E turned by θ about z... (used as a plain
 // rotation matrix in the hand derivations below).

@@ -14,22 +14,18 @@
 #include <stdexcept>
 #include <string>
 
+#include "test_shapes.h"
+
 namespace massprops {
 namespace {
+
+using test_support::RandomRotation;
 
 using M = SpatialInertia<double>;
 using G = UnitInertia<double>;
 using I3 = RotationalInertia<double>;
 using V = Vector3<double>;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-Matrix3<double> RandomRotation(std::mt19937_64* generator) {
-  std::normal_distribution<double> normal;
-  Eigen::Quaterniond q(normal(*generator), normal(*generator), normal(*generator),
-                       normal(*generator));
-  q.normalize();
-  return q.toRotationMatrix();
-}
 
 TEST(SpatialInertiaTest, DefaultIsNaNAndSetNaNMakesNaN) {
   EXPECT_TRUE(M().IsNaN());
@@ -119,7 +115,7 @@ TEST(SpatialInertiaTest, RotatedThinRodFarFromThePointStaysValid) {
   // the center of mass loses digits relative to the inertia about P; the test allows for that.
   std::mt19937_64 generator(31);
   for (int k = 0; k < 1000; ++k) {
-    const Matrix3<double> R = RandomRotation(&generator);
+    const Matrix3<double> R = RandomRotation<double>(&generator);
     const V com = 1e3 * R.col(1);
     const G rod = G::ThinRod(1, R.col(0));
     const M m(3.0, com, rod.ShiftFromCenterOfMass(-com));
@@ -190,7 +186,7 @@ TEST(SpatialInertiaTest, CopyToFullMatrix6HasDrakesLayout) {
 
 TEST(SpatialInertiaTest, ShiftMatchesBuildingAtTheNewPoint) {
   std::mt19937_64 generator(41);
-  const I3 I_cm = (G::SolidBox(1, 2, 3) * 5.0).ReExpress(RandomRotation(&generator));
+  const I3 I_cm = (G::SolidBox(1, 2, 3) * 5.0).ReExpress(RandomRotation<double>(&generator));
   const V p_PScm(0.3, -0.2, 1.0);
   const M M_P = M::MakeFromCentralInertia(5, p_PScm, I_cm);
   const V p_PQ(2, 1, -1);
@@ -211,7 +207,7 @@ TEST(SpatialInertiaTest, ReExpressRotatesComAndInertia) {
   const I3 I_cm(1, 2, 2.5);
   const V com(1, 2, 3);
   const M spatial_E = M::MakeFromCentralInertia(2, com, I_cm);
-  const Matrix3<double> R = RandomRotation(&generator);
+  const Matrix3<double> R = RandomRotation<double>(&generator);
   const M spatial_A = spatial_E.ReExpress(R);
   const M expected = M::MakeFromCentralInertia(2, R * com, I_cm.ReExpress(R));
   EXPECT_TRUE(spatial_A.get_com().isApprox(R * com, 4 * kEps));

@@ -16,20 +16,16 @@
 #include <type_traits>
 #include <utility>
 
+#include "test_shapes.h"
+
 namespace massprops {
 namespace {
+
+using test_support::RandomRotation;
 
 using G = UnitInertia<double>;
 using V = Vector3<double>;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-Matrix3<double> RandomRotation(std::mt19937_64* generator) {
-  std::normal_distribution<double> normal;
-  Eigen::Quaterniond q(normal(*generator), normal(*generator), normal(*generator),
-                       normal(*generator));
-  q.normalize();
-  return q.toRotationMatrix();
-}
 
 // Expects G to equal the six given matrix entries within tolerance·max|entry|.
 void ExpectEntries(const RotationalInertia<double>& I, double xx, double yy, double zz, double xy,
@@ -127,7 +123,7 @@ TEST(UnitInertiaTest, SolidCylinderAlongAnyAxisIsTheRotatedZCylinder) {
   const double r = 0.3, L = 1.7;
   const G along_z = G::SolidCylinder(r, L, V(0, 0, 1));
   for (int k = 0; k < 100; ++k) {
-    const V b = RandomRotation(&generator).col(0);
+    const V b = RandomRotation<double>(&generator).col(0);
     const G expected = along_z.ReExpress(RotationTakingZTo(b));
     EXPECT_TRUE(G::SolidCylinder(r, L, b).IsNearlyEqualTo(expected, 16 * kEps));
   }
@@ -193,7 +189,7 @@ TEST(UnitInertiaTest, ThinRodAndThinDiskLieOnTheValidityBoundary) {
   ExpectEntries(G::ThinDisk(2, V(0, 0, 1)), 1, 1, 2, 0, 0, 0);
   std::mt19937_64 generator(17);
   for (int k = 0; k < 1000; ++k) {
-    const V axis = RandomRotation(&generator).col(2);
+    const V axis = RandomRotation<double>(&generator).col(2);
     for (const double size : {1e-9, 1e-3, 1.0, 1e3, 1e9}) {
       EXPECT_TRUE(G::ThinRod(size, axis).CouldBePhysicallyValid());
       EXPECT_TRUE(G::ThinDisk(size, axis).CouldBePhysicallyValid());

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "geometry_cli.h"
 #include "massprops/checks.h"
 #include "massprops/geometry_checks.h"
 #include "massprops/mesh_loader.h"
@@ -154,12 +155,9 @@ int RunFix(const FixArgs& args) {
   // Meshes are read only when asked: --geometry (the checks and repairs use them) or
   // --from-geometry (the inertials it replaces may come from meshes). Each file is read once.
   MeshCache mesh_cache;
-  MeshResolveOptions resolve;
+  const MeshResolveOptions resolve =
+      MakeResolveOptions(args.package_paths, args.model_paths, args.file, &mesh_cache);
   if (args.geometry || args.from_geometry) {
-    resolve.package_paths = args.package_paths;
-    resolve.model_paths = args.model_paths;
-    resolve.model_file = args.file;
-    resolve.cache = &mesh_cache;
     options.shape = MakeLinkShapeFunction(resolve);
     if (args.geometry) check_options.shape = options.shape;
   }
@@ -317,11 +315,7 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
   fix->add_flag("--geometry", args->geometry,
                 "Judge and repair units, product signs and inertias about the origin against "
                 "mesh geometry too (as check --geometry); meshes are read");
-  fix->add_option("--package-path", args->package_paths,
-                  "Folder searched for package:// mesh URIs before ROS_PACKAGE_PATH and "
-                  "AMENT_PREFIX_PATH (repeatable)")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
+  AddPackagePathOption(fix, &args->package_paths);
   fix->add_option("--tolerance", args->tolerance,
                   "Validity tolerance relative to the trace (as check; default 1e-6)");
   fix->add_option("--model-path", args->model_paths, "Folder searched for SDF model:// URIs")

@@ -25,6 +25,26 @@ GeometryArgs& Args() {
 
 }  // namespace
 
+CLI::Option* AddPackagePathOption(CLI::App* command, std::vector<std::string>* paths) {
+  return command
+      ->add_option("--package-path", *paths,
+                   "Folder searched for package:// mesh URIs before ROS_PACKAGE_PATH and "
+                   "AMENT_PREFIX_PATH (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+}
+
+MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_paths,
+                                      const std::vector<std::string>& model_paths,
+                                      const std::string& model_file, MeshCache* cache) {
+  MeshResolveOptions resolve;
+  resolve.package_paths = package_paths;
+  resolve.model_paths = model_paths;
+  resolve.model_file = model_file;
+  resolve.cache = cache;
+  return resolve;
+}
+
 void AddGeometryCheckOptions(CLI::App* check) {
   GeometryArgs& args = Args();
   check->add_flag("--geometry", args.enabled,
@@ -36,24 +56,15 @@ void AddGeometryCheckOptions(CLI::App* check) {
                    "this factor")
       ->check(CLI::Range(1.0 + 1e-12, 1e300))
       ->capture_default_str();
-  check
-      ->add_option("--package-path", args.package_paths,
-                   "Folder searched for package:// mesh URIs before ROS_PACKAGE_PATH and "
-                   "AMENT_PREFIX_PATH (repeatable)")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
+  AddPackagePathOption(check, &args.package_paths);
 }
 
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
                        CheckOptions* options) {
   GeometryArgs& args = Args();
   if (!args.enabled) return;
-  MeshResolveOptions resolve;
-  resolve.package_paths = args.package_paths;
-  resolve.model_paths = model_paths;
-  resolve.model_file = model.file;
-  resolve.cache = &args.cache;
-  options->shape = MakeLinkShapeFunction(resolve);
+  options->shape = MakeLinkShapeFunction(
+      MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache));
 }
 
 void AddGeometryFindings(const Model& model, const CheckOptions& options,
@@ -64,9 +75,7 @@ void AddGeometryFindings(const Model& model, const CheckOptions& options,
   GeometryCheckOptions geometry;
   geometry.enabled = true;
   geometry.factor = args.factor;
-  geometry.resolve.package_paths = args.package_paths;
-  geometry.resolve.model_paths = model_paths;
-  geometry.resolve.cache = &args.cache;
+  geometry.resolve = MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache);
   geometry.check = options;
   const std::vector<Finding> found = CheckModelGeometry(model, geometry);
   findings->insert(findings->end(), found.begin(), found.end());

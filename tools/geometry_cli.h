@@ -7,9 +7,19 @@
 #include <vector>
 
 #include "massprops/checks.h"
+#include "massprops/mesh_loader.h"
 #include "massprops/model.h"
 
 namespace massprops::cli {
+
+/// Adds `--package-path DIR` (repeatable) to a subcommand (check, fix, report).
+CLI::Option* AddPackagePathOption(CLI::App* command, std::vector<std::string>* paths);
+
+/// Where a run's meshes are found: the given folders, the model file (relative paths) and the
+/// run's cache; the environment variables too.
+MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_paths,
+                                      const std::vector<std::string>& model_paths,
+                                      const std::string& model_file, MeshCache* cache);
 
 /// Adds --geometry, --geometry-factor X and --package-path DIR to the check subcommand.
 void AddGeometryCheckOptions(CLI::App* check);

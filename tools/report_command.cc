@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "geometry_cli.h"
 #include "massprops/mass_report.h"
 #include "massprops/merge_fixed.h"
 #include "massprops/mesh_loader.h"
@@ -86,11 +87,8 @@ int RunReport(const ReportArgs& args) {
                         e.element.empty() ? e.message : e.element + ": " + e.message});
     }
     // One mesh cache per run; relative mesh paths are relative to this file.
-    MeshResolveOptions geometry;
-    geometry.package_paths = args.package_paths;
-    geometry.model_paths = args.model_paths;
-    geometry.model_file = file;
-    geometry.cache = &mesh_cache;
+    const MeshResolveOptions geometry =
+        MakeResolveOptions(args.package_paths, args.model_paths, file, &mesh_cache);
     options.geometry = args.geometry ? &geometry : nullptr;
     for (const Model& model : read.models) {
       ModelMassReport report;
@@ -193,12 +191,7 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
   report->add_flag("--geometry", report_args->geometry,
                    "Also give, per link, the inertia its geometry (collision, else visual; "
                    "meshes read) implies for its declared mass, and how the declared one differs");
-  report
-      ->add_option("--package-path", report_args->package_paths,
-                   "Folder searched for package:// mesh URIs before ROS_PACKAGE_PATH and "
-                   "AMENT_PREFIX_PATH (repeatable)")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
+  AddPackagePathOption(report, &report_args->package_paths);
   report->callback(
       [run, report_args] { *run = [report_args] { return RunReport(*report_args); }; });
 

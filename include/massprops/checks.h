@@ -75,6 +75,7 @@ struct GeometryBounds {
   Eigen::AlignedBox3d box_B;   ///< In the link frame B (metres).
   bool from_collision = true;  ///< false: the visual geometry was used.
   int count = 0;               ///< Number of geometries in the box.
+  bool from_mesh = false;      ///< The box is that of a LinkShape with meshes (see below).
 };
 
 /// The link as a uniform solid of its geometry: from its primitives when its collision
@@ -109,5 +110,10 @@ std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& ine
 /// The link's GeometryBounds, or nullopt when its extent is unknown: no geometry, or the chosen
 /// set holds a mesh (meshes are not read) or an unknown shape. Never throws. Cost: O(geometries).
 std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link);
+
+/// The same, and when the primitives give no extent, the box of `shape` (from CalcLinkShape with
+/// a mesh-reading fallback), marked from_mesh when the shape came from meshes.
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
+                                                     const std::optional<LinkShape>& shape);
 
 }  // namespace massprops
