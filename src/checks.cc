@@ -31,6 +31,10 @@ constexpr const char* kInertiaAboutOriginSuspect = "inertia-about-origin-suspect
 constexpr const char* kInertiaExceedsGeometry = "inertia-exceeds-geometry";
 constexpr const char* kComOutsideGeometry = "com-outside-geometry";
 constexpr const char* kInertiaNearBoundary = "inertia-near-boundary";
+// Rules whose findings the readers make (ReadResult::findings).
+constexpr const char* kUrdfNotLoadable = "urdf-not-loadable";
+constexpr const char* kInertialUnreadable = "inertial-unreadable";
+constexpr const char* kIncludeUnresolved = "include-unresolved";
 
 // units-suspect: the radius of gyration k = sqrt(tr(I)/(2m)) is flagged when k / (half-diagonal
 // of the geometry's bounding box) is above kUnitsRatio or below 1/kUnitsRatio (a kg·mm² inertia
@@ -491,6 +495,11 @@ class Checker {
   void CheckGroup(const WeldedGroup& group) {
     // A static SDF model never moves: missing or zero mass properties are what it should have.
     if (model_.is_static) return;
+    // A member whose <inertial> could not be read makes the group's mass properties unknown (the
+    // reader's inertial-unreadable finding says why): judge nothing about the group.
+    for (int i : group.links) {
+      if (model_.links[i].inertial_unreadable) return;
+    }
     const Link& root = model_.links[group.links.front()];
     const CompositeInertia composite = CalcCompositeInertia(model_, group);
     bool all_massless = true;
@@ -641,6 +650,13 @@ const std::vector<RuleInfo>& AllRules() {
        "The center of mass is outside the bounding box of the link's geometry."},
       {kInertiaNearBoundary, Severity::kNote, true,
        "The inertia is physically valid only within the tolerance."},
+      {kUrdfNotLoadable, Severity::kError, true,
+       "urdfdom (ROS's URDF parser) refuses the file; its mass properties are checked from a "
+       "lenient reading."},
+      {kInertialUnreadable, Severity::kError, true,
+       "A number of a link's <inertial> cannot be read; the other links are still checked."},
+      {kIncludeUnresolved, Severity::kWarning, true,
+       "An SDF <include> cannot be resolved; the rest of the file is still checked."},
   };
   // The geometry rules (geometry_checks.h) run only with --geometry; listed here so that every
   // rule id is known to the tool, the configuration file and SARIF.
@@ -654,6 +670,42 @@ const std::vector<RuleInfo>& AllRules() {
 
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {
   return Checker(model, options).Run();
+}
+
+std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& options) {
+  std::vector<Finding> findings;
+  for (const ReadFinding& rf : read.findings) {
+    std::optional<Severity> severity;
+    const auto it = options.overrides.find(rf.rule);
+    if (it != options.overrides.end()) {
+      severity = it->second;
+    } else {
+      for (const RuleInfo& info : AllRules()) {
+        if (info.id == rf.rule && info.enabled_by_default) severity = info.default_severity;
+      }
+    }
+    if (!severity) continue;
+    bool ignored = false;
+    for (const Model& model : read.models) {
+      if (!rf.model.empty() && model.name != rf.model) continue;
+      const int index = rf.link.empty() ? -1 : model.FindLink(rf.link);
+      if (index < 0) continue;
+      for (const std::string& rule : model.links[index].ignored_rules) {
+        ignored = ignored || rule == "all" || rule == rf.rule;
+      }
+    }
+    if (ignored) continue;
+    Finding f;
+    f.rule = rf.rule;
+    f.severity = *severity;
+    f.model = rf.model;
+    f.link = rf.link;
+    f.location = rf.location;
+    f.message = rf.message;
+    f.values = rf.values;
+    findings.push_back(std::move(f));
+  }
+  return findings;
 }
 
 std::optional<LinkShape> CalcLinkShape(const Link& link, const LinkShapeFunction& fallback) {

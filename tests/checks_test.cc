@@ -70,8 +70,9 @@ INSTANTIATE_TEST_SUITE_P(EveryRuleWithAFixture, RuleFixtureTest,
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
-  // 12 rules of CheckModel + 2 geometry rules (geometry_checks.h), off unless --geometry.
-  EXPECT_EQ(ids.size(), 14u);
+  // 12 rules of CheckModel + 3 rules whose findings the readers make (ReadResult::findings) + 2
+  // geometry rules (geometry_checks.h), off unless --geometry.
+  EXPECT_EQ(ids.size(), 17u);
   EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);
   EXPECT_EQ(ToString(Severity::kNote), std::string("note"));
@@ -335,3 +336,74 @@ TEST(ChecksTest, CorpusInvalidLinksMatchTheManifest) {
 
 }  // namespace
 }  // namespace massprops
+
+// ReaderFindings turns a reader's findings into Findings with the rule's severity, honouring the
+// overrides and a link's ignore comment (hand-built ReadResult; severities from AllRules()).
+TEST(ChecksTest, ReaderFindingsTakeTheirRulesSeverityAndHonourOverridesAndIgnores) {
+  massprops::ReadResult read;
+  massprops::Model model;
+  model.name = "m";
+  massprops::Link quiet;
+  quiet.name = "quiet";
+  quiet.ignored_rules = {"inertial-unreadable"};
+  massprops::Link loud;
+  loud.name = "loud";
+  model.links = {quiet, loud};
+  read.models.push_back(model);
+  for (const char* link : {"quiet", "loud"}) {
+    massprops::ReadFinding rf;
+    rf.rule = "inertial-unreadable";
+    rf.model = "m";
+    rf.link = link;
+    rf.location.line = 7;
+    rf.message = "mass value=\"abc\"";
+    read.findings.push_back(rf);
+  }
+  std::vector<massprops::Finding> findings = massprops::ReaderFindings(read);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].link, "loud");
+  EXPECT_EQ(findings[0].severity, Severity::kError);
+  EXPECT_EQ(findings[0].location.line, 7);
+
+  massprops::CheckOptions options;
+  options.overrides["inertial-unreadable"] = Severity::kWarning;
+  findings = massprops::ReaderFindings(read, options);
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].severity, Severity::kWarning);
+  options.overrides["inertial-unreadable"] = std::nullopt;
+  EXPECT_TRUE(massprops::ReaderFindings(read, options).empty());
+}
+
+// A link whose <inertial> could not be read makes its welded group's mass unknown: no
+// massless-moving-body (which its absent inertial would otherwise suggest).
+TEST(ChecksTest, AGroupWithAnUnreadableInertialIsNotJudged) {
+  massprops::Model model;
+  model.name = "m";
+  massprops::Link base;
+  base.name = "base";
+  base.inertial = massprops::Inertial{};
+  base.inertial->mass = 1;
+  base.inertial->ixx = base.inertial->iyy = base.inertial->izz = 0.1;
+  massprops::Link arm;
+  arm.name = "arm";
+  arm.inertial_unreadable = true;
+  model.links = {base, arm};
+  massprops::Joint joint;
+  joint.name = "shoulder";
+  joint.type = massprops::Joint::Type::kRevolute;
+  joint.type_name = "revolute";
+  joint.parent = "base";
+  joint.child = "arm";
+  model.joints = {joint};
+  model.root_link = "base";
+  for (const massprops::Finding& f : massprops::CheckModel(model)) {
+    EXPECT_NE(f.link, "arm") << f.rule << ": " << f.message;
+  }
+  arm.inertial_unreadable = false;  // the same arm, simply massless: reported
+  model.links[1] = arm;
+  bool massless = false;
+  for (const massprops::Finding& f : massprops::CheckModel(model)) {
+    massless = massless || f.rule == "massless-moving-body";
+  }
+  EXPECT_TRUE(massless);
+}

@@ -294,6 +294,9 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
           warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
       result.findings.push_back(finding);
     }
+    for (Finding& finding : massprops::ReaderFindings(read, settings[i].options)) {
+      result.findings.push_back(std::move(finding));
+    }
     for (const massprops::Model& model : read.models) {
       result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
       result.models.push_back(model.name);

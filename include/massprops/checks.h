@@ -68,6 +68,11 @@ struct CheckOptions {
 /// Rules listed in a link's `ignored_rules` are not reported for that link.
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options = {});
 
+/// The reader's findings (ReadResult::findings) as Findings: each with its rule's severity after
+/// `options.overrides` (dropped when the rule is off) and dropped when the link it names has the
+/// rule in its `ignored_rules`. In the order the reader gave them.
+std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& options = {});
+
 /// The axis-aligned bounding box, in the link frame B, of the link's primitive geometries (box,
 /// cylinder, sphere, capsule, ellipsoid, each posed by X_BG): of its collisions when it has any
 /// and they are all primitives, else of its visuals when they are all primitives.

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace massprops {
@@ -76,6 +77,10 @@ struct Link {
   /// Rule ids disabled for this link by a `<!-- massprops: ignore rule-id [rule-id...] -->`
   /// comment inside the link element ("all" disables every rule).
   std::vector<std::string> ignored_rules;
+  /// The link's <inertial> could not be read (a number that cannot be parsed even leniently):
+  /// `inertial` is then absent, a ReadFinding with rule "inertial-unreadable" says why, and the
+  /// checks judge nothing about the mass properties of this link or of its welded group.
+  bool inertial_unreadable = false;
   SourceLocation location;  ///< The <link> element.
 };
 
@@ -133,6 +138,20 @@ struct ReadError {
   std::string ToString() const;
 };
 
+/// Something a reader found about the model that is a finding rather than a failure to read: the
+/// model is still returned and checked. `rule` is a rule id of AllRules() (checks.h), e.g.
+/// "urdf-not-loadable", "inertial-unreadable" or "include-unresolved"; `link` is "" when the
+/// finding is about the whole file. The tool reports it as a Finding with the rule's configured
+/// severity (ReaderFindings in checks.h).
+struct ReadFinding {
+  std::string rule;
+  std::string model;
+  std::string link;
+  SourceLocation location;
+  std::string message;  ///< A sentence that quotes the offending text.
+  std::vector<std::pair<std::string, double>> values;
+};
+
 /// What a reader returns: the models it read (a world may hold several) and the errors it found.
 /// A file with errors yields no model unless the errors are confined to elements that can be
 /// skipped (then `warnings` says so).
@@ -140,6 +159,7 @@ struct ReadResult {
   std::vector<Model> models;
   std::vector<ReadError> errors;
   std::vector<ReadError> warnings;
+  std::vector<ReadFinding> findings;  ///< Findings about the models read (see ReadFinding).
   bool ok() const { return errors.empty(); }
 };
 
