@@ -1,5 +1,10 @@
-// Speed of the symmetric 3x3 eigen-solvers: massprops' accurate and fast solvers beside Eigen's
-// SelfAdjointEigenSolver::compute and ::computeDirect, on the same pre-generated inputs (double).
+// Speed of the symmetric 3x3 eigen-solvers: massprops' accurate and fast solvers, called as free
+// functions on a matrix and through the class users call (RotationalInertia::
+// CalcPrincipalMomentsOfInertia / CalcPrincipalMomentsAndAxesOfInertia, BM_Class*), beside Eigen's
+// SelfAdjointEigenSolver::compute and ::computeDirect, on the same pre-generated inputs (double),
+// in one run. Numbers and the command that produced them: docs/benchmarks.md.
+//   build/bench/principal_axes_bench --benchmark_repetitions=9 \
+//       --benchmark_report_aggregates_only=true
 //
 // Argument 0: 1024 well-conditioned rotated inertias; argument 1: 1024 rotated thin rods
 // diag(eps, 1, 1) with eps cycling through 1e-4, 1e-8, 1e-12, 1e-16. Each benchmark iteration
@@ -13,6 +18,7 @@
 #include <vector>
 
 #include "massprops/principal_axes.h"
+#include "massprops/rotational_inertia.h"
 
 namespace {
 
@@ -51,6 +57,34 @@ const std::vector<Matrix3<double>>& Inputs(int family) {
   return family == 0 ? well : rods;
 }
 
+// The same inputs as RotationalInertia values (entries of the lower triangle, unchecked).
+std::vector<massprops::RotationalInertia<double>> MakeInertias(int family) {
+  std::vector<massprops::RotationalInertia<double>> inertias;
+  for (const Matrix3<double>& A : Inputs(family)) {
+    inertias.push_back(massprops::RotationalInertia<double>::MakeFromMomentsAndProductsOfInertia(
+        A(0, 0), A(1, 1), A(2, 2), A(1, 0), A(2, 0), A(2, 1), true));
+  }
+  return inertias;
+}
+
+const std::vector<massprops::RotationalInertia<double>>& Inertias(int family) {
+  static const std::vector<massprops::RotationalInertia<double>> well = MakeInertias(0);
+  static const std::vector<massprops::RotationalInertia<double>> rods = MakeInertias(1);
+  return family == 0 ? well : rods;
+}
+
+template <typename Solve>
+void RunClass(benchmark::State& state, Solve solve) {
+  const std::vector<massprops::RotationalInertia<double>>& inputs =
+      Inertias(static_cast<int>(state.range(0)));
+  int i = 0;
+  for (auto _ : state) {
+    solve(inputs[i]);
+    i = (i + 1) & (kCount - 1);
+  }
+  state.SetLabel(state.range(0) == 0 ? "well-conditioned" : "thin rods");
+}
+
 template <typename Solve>
 void Run(benchmark::State& state, Solve solve) {
   const std::vector<Matrix3<double>>& inputs = Inputs(static_cast<int>(state.range(0)));
@@ -83,6 +117,24 @@ void BM_FastValues(benchmark::State& state) {
 void BM_FastVectors(benchmark::State& state) {
   Run(state, [](const Matrix3<double>& A) {
     benchmark::DoNotOptimize(massprops::CalcSymmetricEigensystem(A, PrincipalSolver::kFast));
+  });
+}
+
+void BM_ClassAccurateValues(benchmark::State& state) {
+  RunClass(state, [](const massprops::RotationalInertia<double>& I) {
+    benchmark::DoNotOptimize(I.CalcPrincipalMomentsOfInertia(PrincipalSolver::kAccurate));
+  });
+}
+
+void BM_ClassFastValues(benchmark::State& state) {
+  RunClass(state, [](const massprops::RotationalInertia<double>& I) {
+    benchmark::DoNotOptimize(I.CalcPrincipalMomentsOfInertia(PrincipalSolver::kFast));
+  });
+}
+
+void BM_ClassAxes(benchmark::State& state) {
+  RunClass(state, [](const massprops::RotationalInertia<double>& I) {
+    benchmark::DoNotOptimize(I.CalcPrincipalMomentsAndAxesOfInertia());
   });
 }
 
@@ -122,6 +174,9 @@ BENCHMARK(BM_AccurateValues)->Arg(0)->Arg(1);
 BENCHMARK(BM_AccurateVectors)->Arg(0)->Arg(1);
 BENCHMARK(BM_FastValues)->Arg(0)->Arg(1);
 BENCHMARK(BM_FastVectors)->Arg(0)->Arg(1);
+BENCHMARK(BM_ClassAccurateValues)->Arg(0)->Arg(1);
+BENCHMARK(BM_ClassFastValues)->Arg(0)->Arg(1);
+BENCHMARK(BM_ClassAxes)->Arg(0)->Arg(1);
 BENCHMARK(BM_EigenComputeValues)->Arg(0)->Arg(1);
 BENCHMARK(BM_EigenComputeVectors)->Arg(0)->Arg(1);
 BENCHMARK(BM_EigenComputeDirectValues)->Arg(0)->Arg(1);

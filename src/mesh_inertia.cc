@@ -11,9 +11,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-extern "C" {
-#include <libqhull_r/qhull_ra.h>
-}
+#include "mesh_backend.h"
 
 namespace massprops {
 namespace {
@@ -378,7 +376,7 @@ bool CalcConvexHull(const TriangleMesh& mesh, TriangleMesh* hull, std::string* e
   const Eigen::Vector3d R = BoundingBoxCenter(mesh);
   std::vector<char> used(mesh.vertices.size(), 0);
   for (const auto& t : mesh.triangles) used[t[0]] = used[t[1]] = used[t[2]] = 1;
-  std::vector<coordT> points;
+  std::vector<double> points;
   std::vector<std::int32_t> original;
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     if (!used[i]) continue;
@@ -391,54 +389,33 @@ bool CalcConvexHull(const TriangleMesh& mesh, TriangleMesh* hull, std::string* e
     return false;
   }
 
-  // qhull writes its messages to a FILE: collect them in memory.
-  char* message_buffer = nullptr;
-  std::size_t message_size = 0;
-  FILE* messages = open_memstream(&message_buffer, &message_size);
-  if (messages == nullptr) {
-    if (error) *error = "cannot open a stream for qhull's messages";
-    return false;
-  }
-  qhT qh_storage;
-  qhT* qh = &qh_storage;
-  qh_zero(qh, messages);
-  char command[] = "qhull Qt";
-  const int exit_code = qh_new_qhull(qh, 3, static_cast<int>(original.size()), points.data(), False,
-                                     command, messages, messages);
+  const internal::MeshBackend* backend = internal::GetMeshBackend(error);
+  if (backend == nullptr) return false;
+  std::vector<std::array<int, 3>> facets;
+  std::vector<std::array<double, 3>> normals;
+  std::string text;
+  const int exit_code = backend->convex_hull(points.data(), static_cast<int>(original.size()),
+                                             &facets, &normals, &text);
   TriangleMesh result;
-  if (exit_code == 0) {
-    facetT* facet;
-    vertexT* vertex;
-    vertexT** vertexp;
-    std::unordered_map<int, std::int32_t> hull_index;  // qhull point id → result vertex
-    FORALLfacets {
-      std::array<std::int32_t, 3> triangle{};
-      int k = 0;
-      FOREACHvertex_(facet->vertices) {
-        if (k >= 3) break;
-        const int id = qh_pointid(qh, vertex->point);
-        auto found = hull_index.find(id);
-        if (found == hull_index.end()) {
-          found = hull_index.emplace(id, static_cast<std::int32_t>(result.vertices.size())).first;
-          result.vertices.push_back(mesh.vertices[original[id]]);
-        }
-        triangle[k++] = found->second;
+  std::unordered_map<int, std::int32_t> hull_index;  // qhull point id → result vertex
+  for (std::size_t f = 0; f < facets.size() && exit_code == 0; ++f) {
+    std::array<std::int32_t, 3> triangle{};
+    for (int k = 0; k < 3; ++k) {
+      const int id = facets[f][k];
+      auto found = hull_index.find(id);
+      if (found == hull_index.end()) {
+        found = hull_index.emplace(id, static_cast<std::int32_t>(result.vertices.size())).first;
+        result.vertices.push_back(mesh.vertices[original[id]]);
       }
-      if (k != 3) continue;
-      const Eigen::Vector3d& a = result.vertices[triangle[0]];
-      const Eigen::Vector3d& b = result.vertices[triangle[1]];
-      const Eigen::Vector3d& c = result.vertices[triangle[2]];
-      const Eigen::Vector3d outward(facet->normal[0], facet->normal[1], facet->normal[2]);
-      if ((b - a).cross(c - a).dot(outward) < 0) std::swap(triangle[1], triangle[2]);
-      result.triangles.push_back(triangle);
+      triangle[k] = found->second;
     }
+    const Eigen::Vector3d& a = result.vertices[triangle[0]];
+    const Eigen::Vector3d& b = result.vertices[triangle[1]];
+    const Eigen::Vector3d& c = result.vertices[triangle[2]];
+    const Eigen::Vector3d outward(normals[f][0], normals[f][1], normals[f][2]);
+    if ((b - a).cross(c - a).dot(outward) < 0) std::swap(triangle[1], triangle[2]);
+    result.triangles.push_back(triangle);
   }
-  qh_freeqhull(qh, !qh_ALL);
-  int still_long = 0, total_long = 0;
-  qh_memfreeshort(qh, &still_long, &total_long);
-  std::fclose(messages);
-  std::string text = message_buffer ? std::string(message_buffer, message_size) : std::string();
-  std::free(message_buffer);
   if (exit_code != 0 || result.triangles.empty()) {
     if (error) {
       // qhull's first line says what went wrong (e.g. "QH6154 ... initial simplex is flat").

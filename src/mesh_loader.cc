@@ -1,12 +1,8 @@
 #include "massprops/mesh_loader.h"
 
-#include <assimp/config.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 #include <tinyxml2.h>
 
 #include <algorithm>
-#include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -16,6 +12,7 @@
 #include <utility>
 
 #include "massprops/unit_inertia.h"
+#include "mesh_backend.h"
 
 namespace massprops {
 namespace fs = std::filesystem;
@@ -207,62 +204,13 @@ bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* erro
     if (error) *error = "mesh file '" + path + "' is empty or unreadable";
     return false;
   }
-  Assimp::Importer importer;
-  // URDF and SDF use mesh coordinates as written: do not rotate a Z_UP (or X_UP) DAE to Y_UP.
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
-  if (scene == nullptr || scene->mRootNode == nullptr) {
-    if (error) *error = "mesh file '" + path + "' cannot be read: " + importer.GetErrorString();
+  std::string why;
+  const internal::MeshBackend* backend = internal::GetMeshBackend(&why);
+  if (backend == nullptr) {
+    if (error) *error = "mesh file '" + path + "' cannot be read: " + why;
     return false;
   }
-  TriangleMesh result;
-  std::string problem;
-  // Depth-first walk of the scene graph, carrying the node-to-file transform.
-  std::vector<std::pair<const aiNode*, aiMatrix4x4>> stack = {
-      {scene->mRootNode, scene->mRootNode->mTransformation}};
-  while (!stack.empty() && problem.empty()) {
-    const auto [node, X_FileNode] = stack.back();
-    stack.pop_back();
-    const bool mirrored = X_FileNode.Determinant() < 0;
-    for (unsigned m = 0; m < node->mNumMeshes; ++m) {
-      if (node->mMeshes[m] >= scene->mNumMeshes) continue;
-      const aiMesh* part = scene->mMeshes[node->mMeshes[m]];
-      const std::size_t offset = result.vertices.size();
-      if (offset + part->mNumVertices >
-          static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
-        problem = "more than 2^31 vertices";
-        break;
-      }
-      for (unsigned v = 0; v < part->mNumVertices; ++v) {
-        const aiVector3D p = X_FileNode * part->mVertices[v];
-        result.vertices.emplace_back(p.x, p.y, p.z);
-        if (!result.vertices.back().allFinite()) problem = "a vertex is not finite";
-      }
-      for (unsigned f = 0; f < part->mNumFaces; ++f) {
-        const aiFace& face = part->mFaces[f];
-        if (face.mNumIndices != 3) continue;  // Points and lines have no volume.
-        const auto index = [&](unsigned k) {
-          return static_cast<std::int32_t>(offset + face.mIndices[k]);
-        };
-        if (mirrored) {
-          result.triangles.push_back({index(0), index(2), index(1)});
-        } else {
-          result.triangles.push_back({index(0), index(1), index(2)});
-        }
-      }
-    }
-    for (unsigned c = 0; c < node->mNumChildren; ++c) {
-      stack.emplace_back(node->mChildren[c], X_FileNode * node->mChildren[c]->mTransformation);
-    }
-  }
-  if (problem.empty() && result.triangles.empty()) problem = "it holds no triangle";
-  if (!problem.empty()) {
-    if (error) *error = "mesh file '" + path + "' cannot be used: " + problem;
-    return false;
-  }
-  *mesh = std::move(result);
-  return true;
+  return backend->load_mesh(path.c_str(), mesh, error);
 }
 
 TriangleMesh ScaleMesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {

@@ -71,6 +71,13 @@ template <typename T>
 constexpr int kJacobiMinExponent = std::numeric_limits<T>::min_exponent / 4;
 
 template <typename T>
+bool AllFinite(const Sym3<T>& s) {
+  using std::isfinite;
+  return isfinite(s.d[0]) && isfinite(s.d[1]) && isfinite(s.d[2]) && isfinite(s.o[0]) &&
+         isfinite(s.o[1]) && isfinite(s.o[2]);
+}
+
+template <typename T>
 T MaxAbsEntry(const Sym3<T>& s) {
   using std::abs;
   return std::max({abs(s.d[0]), abs(s.d[1]), abs(s.d[2]), abs(s.o[0]), abs(s.o[1]), abs(s.o[2])});
@@ -135,14 +142,11 @@ void Jacobi(Sym3<T>* s, Matrix3<T>* V) {
 // scaled by a power of two (exactly) when its entries lie outside the range where squares are
 // safe, diagonalized by Jacobi, and scaled back.
 template <typename T>
-void SolveJacobi(const Matrix3<T>& A, Vector3<T>* w, Matrix3<T>* V) {
-  Sym3<T> s = ReadLowerTriangle(A);
+void SolveJacobi(Sym3<T> s, Vector3<T>* w, Matrix3<T>* V) {
   if (V != nullptr) V->setIdentity();
   T values[3] = {s.d[0], s.d[1], s.d[2]};
   if (!IsDiagonal(s)) {
-    bool finite = true;
-    for (int i = 0; i < 3; ++i) finite = finite && std::isfinite(s.d[i]) && std::isfinite(s.o[i]);
-    if (!finite) {  // NaN or infinity (release builds): NaN out, no iterations.
+    if (!AllFinite(s)) {  // NaN or infinity (release builds): NaN out, no iterations.
       w->setConstant(std::numeric_limits<T>::quiet_NaN());
       if (V != nullptr) V->setConstant(std::numeric_limits<T>::quiet_NaN());
       return;
@@ -360,18 +364,74 @@ bool ClosedForm(const Sym3<T>& a, Mode mode, Vector3<T>* values, Matrix3<T>* V) 
   return true;
 }
 
-// Diagonal input: sorted, exactly. Otherwise the closed form; outside its safe range, again
-// after an exact scaling by a power of two; and if that fails too (the spread of the eigenvalues
-// underflows, or the input is not finite), Jacobi.
+// The power of two e such that entries of magnitude at most s (> 0, finite), scaled by 2^-e, can
+// be squared and summed without overflow or underflow: 0 when s lies within 2^(min_exponent/4) ..
+// 2^(max_exponent/4) (about 1e-77 .. 1e77 for double), otherwise the exponent of s. The same
+// range as internal::SafeScaleExponent of rotational_inertia.h.
 template <typename T>
-void SolveClosedForm(const Matrix3<T>& A, Mode mode, Vector3<T>* w, Matrix3<T>* V) {
-  Sym3<T> s = ReadLowerTriangle(A);
-  if (IsDiagonal(s) || !ClosedForm(s, mode, w, V)) {
-    SolveJacobi(A, w, V);  // Jacobi: exact on diagonal input, scales itself.
+int ScaleExponent(const T& s) {
+  static const T kLow = std::ldexp(T(1), std::numeric_limits<T>::min_exponent / 4);
+  static const T kHigh = std::ldexp(T(1), std::numeric_limits<T>::max_exponent / 4);
+  return (s > kLow && s < kHigh) ? 0 : std::ilogb(s);
+}
+
+// Diagonal input: sorted, exactly. Otherwise the closed form; outside its safe range, again
+// after an exact scaling by a power of two (so the result is the closed form's on any finite
+// input whose eigenvalue spread does not underflow, bit for bit what it gives on the scaled
+// matrix); and if that fails too (the spread underflows), Jacobi. Returns false when an entry is
+// not finite (the values are then not finite either); this is the only finiteness test, and it
+// runs only off the fast path.
+template <typename T>
+bool Solve(const Sym3<T>& s, Mode mode, Vector3<T>* w, Matrix3<T>* V) {
+  using std::isfinite;
+  if (IsDiagonal(s)) {
+    SolveJacobi(s, w, V);  // Exact: the diagonal sorted.
+    return isfinite(s.d[0]) && isfinite(s.d[1]) && isfinite(s.d[2]);
   }
+  if (ClosedForm(s, mode, w, V)) return true;
+  if (!AllFinite(s)) {
+    w->setConstant(std::numeric_limits<T>::quiet_NaN());
+    if (V != nullptr) V->setConstant(std::numeric_limits<T>::quiet_NaN());
+    return false;
+  }
+  const int e = ScaleExponent(MaxAbsEntry(s));
+  if (e != 0) {
+    Sym3<T> scaled;
+    for (int i = 0; i < 3; ++i) {
+      scaled.d[i] = std::ldexp(s.d[i], -e);
+      scaled.o[i] = std::ldexp(s.o[i], -e);
+    }
+    if (ClosedForm(scaled, mode, w, V)) {
+      for (int k = 0; k < 3; ++k) (*w)(k) = std::ldexp((*w)(k), e);
+      return true;
+    }
+  }
+  SolveJacobi(s, w, V);  // Scales itself.
+  return true;
+}
+
+Mode ValuesMode(PrincipalSolver solver) {
+  return solver == PrincipalSolver::kFast ? Mode::kClosedFormValues : Mode::kDeflatedValues;
 }
 
 }  // namespace
+
+namespace internal {
+
+template <typename T>
+bool SymmetricEigenvaluesOfEntries(T a00, T a11, T a22, T a10, T a20, T a21,
+                                   PrincipalSolver solver, Vector3<T>* values) {
+  return Solve(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, ValuesMode(solver), values,
+               static_cast<Matrix3<T>*>(nullptr));
+}
+
+template <typename T>
+bool SymmetricEigensystemOfEntries(T a00, T a11, T a22, T a10, T a20, T a21, Vector3<T>* values,
+                                   Matrix3<T>* vectors) {
+  return Solve(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, Mode::kDeflatedVectors, values, vectors);
+}
+
+}  // namespace internal
 
 template <typename T>
 Vector3<T> CalcSymmetricEigenvalues(const Matrix3<T>& A, PrincipalSolver solver) {
@@ -379,11 +439,7 @@ Vector3<T> CalcSymmetricEigenvalues(const Matrix3<T>& A, PrincipalSolver solver)
   ThrowIfNotFinite(A, "CalcSymmetricEigenvalues");
 #endif
   Vector3<T> w;
-  if (solver == PrincipalSolver::kFast) {
-    SolveClosedForm<T>(A, Mode::kClosedFormValues, &w, nullptr);
-  } else {
-    SolveClosedForm<T>(A, Mode::kDeflatedValues, &w, nullptr);
-  }
+  Solve(ReadLowerTriangle(A), ValuesMode(solver), &w, static_cast<Matrix3<T>*>(nullptr));
   return w;
 }
 
@@ -396,7 +452,7 @@ std::pair<Vector3<T>, Matrix3<T>> CalcSymmetricEigensystem(const Matrix3<T>& A,
   std::pair<Vector3<T>, Matrix3<T>> result;
   // With vectors both solvers deflate: the eigenvectors of the two closest eigenvalues need it.
   static_cast<void>(solver);
-  SolveClosedForm<T>(A, Mode::kDeflatedVectors, &result.first, &result.second);
+  Solve(ReadLowerTriangle(A), Mode::kDeflatedVectors, &result.first, &result.second);
   return result;
 }
 
@@ -410,5 +466,23 @@ template std::pair<Vector3<double>, Matrix3<double>> CalcSymmetricEigensystem<do
     const Matrix3<double>&, PrincipalSolver);
 template std::pair<Vector3<long double>, Matrix3<long double>>
 CalcSymmetricEigensystem<long double>(const Matrix3<long double>&, PrincipalSolver);
+
+namespace internal {
+template bool SymmetricEigenvaluesOfEntries<float>(float, float, float, float, float, float,
+                                                   PrincipalSolver, Vector3<float>*);
+template bool SymmetricEigenvaluesOfEntries<double>(double, double, double, double, double, double,
+                                                    PrincipalSolver, Vector3<double>*);
+template bool SymmetricEigenvaluesOfEntries<long double>(long double, long double, long double,
+                                                         long double, long double, long double,
+                                                         PrincipalSolver, Vector3<long double>*);
+template bool SymmetricEigensystemOfEntries<float>(float, float, float, float, float, float,
+                                                   Vector3<float>*, Matrix3<float>*);
+template bool SymmetricEigensystemOfEntries<double>(double, double, double, double, double, double,
+                                                    Vector3<double>*, Matrix3<double>*);
+template bool SymmetricEigensystemOfEntries<long double>(long double, long double, long double,
+                                                         long double, long double, long double,
+                                                         Vector3<long double>*,
+                                                         Matrix3<long double>*);
+}  // namespace internal
 
 }  // namespace massprops

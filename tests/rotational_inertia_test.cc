@@ -8,11 +8,13 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "test_shapes.h"
 
@@ -468,6 +470,128 @@ TEST(RotationalInertiaTest, HugeAndTinyInertiasAreHandledWithoutOverflow) {
   const double tiny = std::numeric_limits<double>::denorm_min();
   EXPECT_TRUE(Unchecked(tiny, tiny, 2 * tiny).CouldBePhysicallyValid());
   EXPECT_FALSE(Unchecked(-tiny, tiny, tiny).CouldBePhysicallyValid());
+}
+
+// ------------------------------------------- the class path is the free solver, bit for bit
+
+// True iff a and b hold the same bits (NaN payloads and the sign of zero included).
+template <typename T>
+bool SameBits(const T& a, const T& b) {
+  // long double: only the 10 value bytes of x87's 80-bit format (the rest is padding).
+  constexpr std::size_t kBytes =
+      std::numeric_limits<T>::digits == 64 ? 10 : sizeof(T);
+  return std::memcmp(&a, &b, kBytes) == 0;
+}
+
+template <typename T, int R, int C>
+bool SameBits(const Eigen::Matrix<T, R, C>& a, const Eigen::Matrix<T, R, C>& b) {
+  for (int i = 0; i < a.size(); ++i) {
+    if (!SameBits(a.data()[i], b.data()[i])) return false;
+  }
+  return true;
+}
+
+// Inputs of every kind the solvers branch on: rotated general inertias, thin rods, thin disks,
+// near-spheres (eigenvalues equal to 1e-9), diagonal ones, ones with one product, invalid ones
+// (negative moments, triangle inequality violated), each at scales 2^-900 .. 2^900 where the
+// solver works unscaled, scales by a power of two first, or falls back to Jacobi.
+template <typename T>
+std::vector<RotationalInertia<T>> BitIdentityInputs() {
+  std::mt19937_64 generator(17);
+  std::uniform_real_distribution<double> uniform(0.05, 1.0);
+  std::vector<Vector3<T>> moments;
+  for (int k = 0; k < 40; ++k) {
+    const T a = T(uniform(generator)), b = T(uniform(generator)), c = T(uniform(generator));
+    moments.push_back(Vector3<T>(b + c, a + c, a + b));  // general
+  }
+  for (const double eps : {1e-3, 1e-8, 1e-16, 0.0}) {
+    moments.push_back(Vector3<T>(T(eps), 1, 1));      // thin rods
+    moments.push_back(Vector3<T>(1, 1, T(2 - eps)));  // thin disks
+    moments.push_back(Vector3<T>(1, T(1 + eps), 1));  // near-spheres
+  }
+  moments.push_back(Vector3<T>(-1, 2, 3));  // invalid: a negative moment
+  moments.push_back(Vector3<T>(1, 1, 5));   // invalid: triangle inequality
+  std::vector<RotationalInertia<T>> inputs;
+  for (const int exponent : {0, -900, -600, -480, -300, -100, -40, 40, 100, 300, 480, 600, 900}) {
+    if (exponent < std::numeric_limits<T>::min_exponent + 60 ||
+        exponent > std::numeric_limits<T>::max_exponent - 60) {
+      continue;  // Beyond float's range.
+    }
+    for (const Vector3<T>& m : moments) {
+      const Vector3<T> scaled = m * std::ldexp(T(1), exponent);
+      const RotationalInertia<T> diagonal =
+          RotationalInertia<T>::MakeFromMomentsAndProductsOfInertia(
+              scaled(0), scaled(1), scaled(2), 0, 0, 0, true);
+      inputs.push_back(diagonal);
+      inputs.push_back(diagonal.ReExpress(RandomRotation<T>(&generator)));
+      inputs.push_back(RotationalInertia<T>::MakeFromMomentsAndProductsOfInertia(
+          scaled(0), scaled(1), scaled(2), scaled(0) / 4, 0, 0, true));
+    }
+  }
+  return inputs;
+}
+
+template <typename T>
+class PrincipalClassPathTest : public ::testing::Test {};
+TYPED_TEST_SUITE(PrincipalClassPathTest, ::testing::Types<float, double, long double>);
+
+// The contract (#17): the class path is the bare solver with no other arithmetic, so
+// what a user gets through RotationalInertia is exactly what CalcSymmetricEigenvalues /
+// CalcSymmetricEigensystem give on the same matrix; both are compared bit for bit.
+TYPED_TEST(PrincipalClassPathTest, MomentsAndAxesAreBitForBitThoseOfTheFreeSolver) {
+  using T = TypeParam;
+  const std::vector<RotationalInertia<T>> inputs = BitIdentityInputs<T>();
+  ASSERT_GT(inputs.size(), 1000u);
+  for (const RotationalInertia<T>& I : inputs) {
+    const Matrix3<T> A = I.CopyToFullMatrix3();
+    for (const PrincipalSolver solver : {PrincipalSolver::kAccurate, PrincipalSolver::kFast}) {
+      const Vector3<T> by_class = I.CalcPrincipalMomentsOfInertia(solver);
+      const Vector3<T> by_solver = CalcSymmetricEigenvalues<T>(A, solver);
+      ASSERT_TRUE(SameBits(by_class, by_solver)) << I << by_class.transpose() << "\n"
+                                                 << by_solver.transpose();
+      ASSERT_TRUE(by_class.allFinite()) << I;
+      const auto [moments, axes] = I.CalcPrincipalMomentsAndAxesOfInertia(solver);
+      const auto [solver_moments, solver_axes] = CalcSymmetricEigensystem<T>(A, solver);
+      ASSERT_TRUE(SameBits(moments, solver_moments)) << I;
+      ASSERT_TRUE(SameBits(axes, solver_axes)) << I;
+    }
+  }
+}
+
+// Scaling by a power of two is exact, and so is every operation of the solvers on the scaled
+// matrix as long as nothing overflows or underflows: the moments of 2^k·A are 2^k times those of
+// A, bit for bit, whether the solver ran on 2^k·A directly or scaled it back first. So moving the
+// scaling from the class into the solver changed no result.
+TYPED_TEST(PrincipalClassPathTest, MomentsOfPowerOfTwoMultiplesAreExactMultiples) {
+  using T = TypeParam;
+  std::mt19937_64 generator(5);
+  std::uniform_real_distribution<double> uniform(0.05, 1.0);
+  for (int k = 0; k < 50; ++k) {
+    const T a = T(uniform(generator)), b = T(uniform(generator)), c = T(uniform(generator));
+    const Matrix3<T> R = RandomRotation<T>(&generator);
+    const Matrix3<T> A = R * Vector3<T>(b + c, a + c, a + b).asDiagonal() * R.transpose();
+    const Vector3<T> fast = CalcSymmetricEigenvalues<T>(A, PrincipalSolver::kFast);
+    const Vector3<T> accurate = CalcSymmetricEigenvalues<T>(A, PrincipalSolver::kAccurate);
+    const auto [values, vectors] = CalcSymmetricEigensystem<T>(A);
+    for (const int exponent : {-900, -500, -120, -90, -40, -20, 20, 40, 90, 120, 500, 900}) {
+      if (exponent < std::numeric_limits<T>::min_exponent + 60 ||
+          exponent > std::numeric_limits<T>::max_exponent - 60) {
+        continue;
+      }
+      const T s = std::ldexp(T(1), exponent);
+      const Matrix3<T> B = A * s;
+      ASSERT_TRUE(SameBits(Vector3<T>(CalcSymmetricEigenvalues<T>(B, PrincipalSolver::kFast)),
+                           Vector3<T>(fast * s)))
+          << exponent;
+      ASSERT_TRUE(
+          SameBits(Vector3<T>(CalcSymmetricEigenvalues<T>(B, PrincipalSolver::kAccurate)),
+                   Vector3<T>(accurate * s)))
+          << exponent;
+      const auto [scaled_values, scaled_vectors] = CalcSymmetricEigensystem<T>(B);
+      ASSERT_TRUE(SameBits(scaled_values, Vector3<T>(values * s))) << exponent;
+      ASSERT_TRUE(SameBits(scaled_vectors, vectors)) << exponent;
+    }
+  }
 }
 
 // ----------------------------------------------------------- the validity boundary, by type

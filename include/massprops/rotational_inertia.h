@@ -53,8 +53,9 @@ bool IsPhysicallyValidInertia(const T& xx, const T& yy, const T& zz, const T& xy
                               const T& yz, const T& relative_tolerance,
                               const T& reference_trace = T(0));
 
-/// Principal moments (ascending) of the six entries, computed on power-of-two-scaled entries so
-/// that huge or tiny inputs neither overflow nor underflow. Precondition: entries finite.
+/// Principal moments (ascending) of the six entries (the solver scales huge or tiny entries by a
+/// power of two, exactly, so they neither overflow nor underflow); +0 for all-zero entries.
+/// Precondition: entries finite.
 template <typename T>
 Vector3<T> ScaledPrincipalMoments(const T& xx, const T& yy, const T& zz, const T& xy, const T& xz,
                                   const T& yz, PrincipalSolver solver);
@@ -291,20 +292,37 @@ class RotationalInertia {
         static_cast<S>(xz_), static_cast<S>(yz_), true);
   }
 
-  /// The principal moments of inertia, ascending. Computed on entries scaled by a power of two
-  /// (exact), so 1e300 entries do not overflow. Throws std::logic_error (always, not only in
-  /// debug builds) if an entry is NaN or Inf. The accurate solver (default) gives every moment
-  /// within a few units of round-off of the trace and is exact on diagonal input; see
-  /// principal_axes.h and bench/ for the fast one.
+  /// The principal moments of inertia, ascending: bit for bit CalcSymmetricEigenvalues(
+  /// CopyToFullMatrix3(), solver), at the same cost (no copy, no extra pass: the solver itself
+  /// scales by a power of two, exactly, where squares of 1e300 entries would overflow, and tests
+  /// finiteness only off its fast path). Throws std::logic_error (always, not only in debug
+  /// builds) if an entry is NaN or Inf. The accurate solver (default) gives every moment within a
+  /// few units of round-off of the trace and is exact on diagonal input; see principal_axes.h and
+  /// bench/ for the fast one.
   Vector3<T> CalcPrincipalMomentsOfInertia(
-      PrincipalSolver solver = PrincipalSolver::kAccurate) const;
+      PrincipalSolver solver = PrincipalSolver::kAccurate) const {
+    Vector3<T> moments;
+    if (!internal::SymmetricEigenvaluesOfEntries(xx_, yy_, zz_, xy_, xz_, yz_, solver, &moments)) {
+      ThrowWithDescription("CalcPrincipalMomentsOfInertia() on non-finite entries");
+    }
+    return moments;
+  }
 
   /// The principal moments (ascending) and the principal axes as the columns of a rotation
-  /// matrix R_EA (right-handed, orthonormal; column k is the axis of moment k, expressed in E).
-  /// When all three moments are equal the axes are the identity. Throws std::logic_error
-  /// (always) if an entry is NaN or Inf.
+  /// matrix R_EA (right-handed, orthonormal; column k is the axis of moment k, expressed in E):
+  /// bit for bit CalcSymmetricEigensystem(CopyToFullMatrix3()), at the same cost. When all three
+  /// moments are equal the axes are the identity. Throws std::logic_error (always) if an entry is
+  /// NaN or Inf. Both solvers compute axes the same way (see principal_axes.h).
   std::pair<Vector3<T>, Matrix3<T>> CalcPrincipalMomentsAndAxesOfInertia(
-      PrincipalSolver solver = PrincipalSolver::kAccurate) const;
+      PrincipalSolver solver = PrincipalSolver::kAccurate) const {
+    static_cast<void>(solver);
+    std::pair<Vector3<T>, Matrix3<T>> result;
+    if (!internal::SymmetricEigensystemOfEntries(xx_, yy_, zz_, xy_, xz_, yz_, &result.first,
+                                                 &result.second)) {
+      ThrowWithDescription("CalcPrincipalMomentsAndAxesOfInertia() on non-finite entries");
+    }
+    return result;
+  }
 
   /// True iff this could be the rotational inertia of a real body about some point: all six
   /// entries finite and the principal moments λ1 <= λ2 <= λ3 (accurate solver) satisfy
@@ -474,14 +492,11 @@ Matrix3<T> ScaledMatrix(const T& xx, const T& yy, const T& zz, const T& xy, cons
 template <typename T>
 Vector3<T> ScaledPrincipalMoments(const T& xx, const T& yy, const T& zz, const T& xy, const T& xz,
                                   const T& yz, PrincipalSolver solver) {
-  using std::abs;
-  const T s = std::max({abs(xx), abs(yy), abs(zz), abs(xy), abs(xz), abs(yz)});
-  if (s == T(0)) return Vector3<T>::Zero();
-  const int e = SafeScaleExponent(s);
-  Vector3<T> lambda = CalcSymmetricEigenvalues<T>(ScaledMatrix(xx, yy, zz, xy, xz, yz, e), solver);
-  if (e != 0) {
-    for (int k = 0; k < 3; ++k) lambda(k) = std::ldexp(lambda(k), e);
+  if (xx == T(0) && yy == T(0) && zz == T(0) && xy == T(0) && xz == T(0) && yz == T(0)) {
+    return Vector3<T>::Zero();  // +0 even for -0 entries.
   }
+  Vector3<T> lambda;
+  SymmetricEigenvaluesOfEntries(xx, yy, zz, xy, xz, yz, solver, &lambda);
   return lambda;
 }
 
@@ -614,32 +629,6 @@ RotationalInertia<T> RotationalInertia<T>::FromMatrix(const Matrix3<T>& I,
   RotationalInertia result = Raw(I(0, 0), I(1, 1), I(2, 2), half * I(0, 1) + half * I(1, 0),
                                  half * I(0, 2) + half * I(2, 0), half * I(1, 2) + half * I(2, 1));
   if (!skip_validity_check) result.ThrowIfNotPhysicallyValid("FromMatrix()");
-  return result;
-}
-
-template <typename T>
-Vector3<T> RotationalInertia<T>::CalcPrincipalMomentsOfInertia(PrincipalSolver solver) const {
-  if (!IsFinite()) {
-    ThrowWithDescription("CalcPrincipalMomentsOfInertia() on non-finite entries");
-  }
-  return internal::ScaledPrincipalMoments(xx_, yy_, zz_, xy_, xz_, yz_, solver);
-}
-
-template <typename T>
-std::pair<Vector3<T>, Matrix3<T>> RotationalInertia<T>::CalcPrincipalMomentsAndAxesOfInertia(
-    PrincipalSolver solver) const {
-  using std::abs;
-  if (!IsFinite()) {
-    ThrowWithDescription("CalcPrincipalMomentsAndAxesOfInertia() on non-finite entries");
-  }
-  const T s = std::max({abs(xx_), abs(yy_), abs(zz_), abs(xy_), abs(xz_), abs(yz_)});
-  if (s == T(0)) return {Vector3<T>::Zero(), Matrix3<T>::Identity()};
-  const int e = internal::SafeScaleExponent(s);
-  std::pair<Vector3<T>, Matrix3<T>> result =
-      CalcSymmetricEigensystem<T>(internal::ScaledMatrix(xx_, yy_, zz_, xy_, xz_, yz_, e), solver);
-  if (e != 0) {
-    for (int k = 0; k < 3; ++k) result.first(k) = std::ldexp(result.first(k), e);
-  }
   return result;
 }
 
