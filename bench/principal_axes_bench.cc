@@ -3,8 +3,8 @@
 // CalcPrincipalMomentsOfInertia / CalcPrincipalMomentsAndAxesOfInertia, BM_Class*), beside Eigen's
 // SelfAdjointEigenSolver::compute and ::computeDirect, on the same pre-generated inputs (double),
 // in one run. Numbers and the command that produced them: docs/benchmarks.md.
-//   build/bench/principal_axes_bench --benchmark_repetitions=9 \
-//       --benchmark_report_aggregates_only=true
+//   build/bench/principal_axes_bench --benchmark_repetitions=9 --benchmark_report_aggregates_only
+//   (docs/benchmarks.md also runs it under callgrind to count instructions).
 //
 // Argument 0: 1024 well-conditioned rotated inertias; argument 1: 1024 rotated thin rods
 // diag(eps, 1, 1) with eps cycling through 1e-4, 1e-8, 1e-12, 1e-16. Each benchmark iteration

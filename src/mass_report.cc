@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "massprops/principal_axes.h"
+#include "name_index.h"
 
 namespace massprops {
 namespace {
@@ -23,34 +24,29 @@ namespace {
 // in file order that names it as child (self-loops ignored); its parent link is -1 when that
 // joint's parent is not a link of the model (SDF "world").
 struct ModelIndex {
-  std::unordered_map<std::string, int> link;
-  std::unordered_map<std::string, int> joint;
+  explicit ModelIndex(const Model& model)
+      : link(static_cast<int>(model.links.size()),
+             [&model](int i) -> const std::string& { return model.links[i].name; }) {}
+  internal::NameIndex link;
   std::vector<int> parent_joint;
   std::vector<int> parent_link;
   // Children of link p: child_list[child_start[p] .. child_start[p + 1]).
   std::vector<int> child_start;
   std::vector<int> child_list;
 
-  int FindLink(const std::string& name) const {
-    const auto it = link.find(name);
-    return it == link.end() ? -1 : it->second;
-  }
+  int FindLink(const std::string& name) const { return link.Find(name); }
   bool IsFixedChild(const Model& model, int c) const {
     return parent_joint[c] >= 0 && model.joints[parent_joint[c]].type == Joint::Type::kFixed;
   }
 };
 
 ModelIndex BuildIndex(const Model& model) {
-  ModelIndex index;
+  ModelIndex index(model);
   const int n = static_cast<int>(model.links.size());
-  index.link.reserve(model.links.size() * 2);
-  for (int i = 0; i < n; ++i) index.link.emplace(model.links[i].name, i);
-  index.joint.reserve(model.joints.size() * 2);
   index.parent_joint.assign(n, -1);
   index.parent_link.assign(n, -1);
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const Joint& joint = model.joints[j];
-    index.joint.emplace(joint.name, j);
     const int child = index.FindLink(joint.child);
     if (child < 0 || index.parent_joint[child] >= 0) continue;
     const int parent = index.FindLink(joint.parent);
@@ -83,6 +79,10 @@ class PoseSolver {
   std::optional<Pose> Get(int link) {
     if (anchor_ < 0 || link < 0) return std::nullopt;
     if (link == anchor_) return Pose();
+    if (known_.empty()) {  // First use: one slot per link (no hashing, no node per pose).
+      known_.assign(model_.links.size(), 0);
+      memo_.resize(model_.links.size());
+    }
     std::vector<int> path;
     int cur = link;
     std::optional<Pose> base;
@@ -92,9 +92,8 @@ class PoseSolver {
         base = Pose();
         break;
       }
-      const auto it = memo_.find(cur);
-      if (it != memo_.end()) {
-        base = it->second;
+      if (cur >= 0 && known_[cur]) {
+        base = memo_[cur];
         break;
       }
       if (cur < 0 || path.size() > n) break;  // Above the root, or a cycle: unreachable.
@@ -107,6 +106,7 @@ class PoseSolver {
         const auto q = joint_values_.find(j);
         base = *base * CalcJointPose(model_.joints[j], q == joint_values_.end() ? 0.0 : q->second);
       }
+      known_[*it] = 1;
       memo_[*it] = base;
     }
     return base;
@@ -117,7 +117,8 @@ class PoseSolver {
   const ModelIndex& index_;
   const std::unordered_map<int, double>& joint_values_;
   int anchor_;
-  std::unordered_map<int, std::optional<Pose>> memo_;
+  std::vector<char> known_;                 // per link: memo_ holds its pose (or nullopt)
+  std::vector<std::optional<Pose>> memo_;  // per link
 };
 
 // The group of links welded to `root` below it (root first, the others in file order), with
@@ -230,13 +231,18 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
   const ModelIndex index = BuildIndex(model);
 
   std::unordered_map<int, double> joint_values;
+  std::optional<internal::NameIndex> joint_index;  // only when joint values are given
+  if (!options.joint_values.empty()) {
+    joint_index.emplace(static_cast<int>(model.joints.size()),
+                        [&model](int j) -> const std::string& { return model.joints[j].name; });
+  }
   for (const auto& [name, value] : options.joint_values) {
-    const auto it = index.joint.find(name);
-    if (it == index.joint.end()) {
+    const int joint_number = joint_index->Find(name);
+    if (joint_number < 0) {
       *error = "model '" + model.name + "' has no joint named '" + name + "'";
       return false;
     }
-    const Joint& joint = model.joints[it->second];
+    const Joint& joint = model.joints[joint_number];
     if (joint.type == Joint::Type::kFixed) {
       *error = "joint '" + name + "' is fixed: it has no value to set";
       return false;
@@ -251,7 +257,7 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
       *error = "the value of joint '" + name + "' is not finite";
       return false;
     }
-    joint_values.emplace(it->second, value);
+    joint_values.emplace(joint_number, value);
   }
   auto find_link = [&](const std::string& name, const char* what, int* out) {
     *out = index.FindLink(name);

@@ -2,9 +2,10 @@
 
 #include <cstddef>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
+
+#include "name_index.h"
 
 namespace massprops {
 namespace {
@@ -18,13 +19,10 @@ struct Tree {
 
 Tree BuildTree(const Model& model) {
   const int n = static_cast<int>(model.links.size());
-  std::unordered_map<std::string, int> index;
-  index.reserve(model.links.size() * 2);
-  for (int i = 0; i < n; ++i) index.emplace(model.links[i].name, i);
-  auto find = [&index](const std::string& name) {
-    const auto it = index.find(name);
-    return it == index.end() ? -1 : it->second;
-  };
+  const internal::NameIndex index(n, [&model](int i) -> const std::string& {
+    return model.links[i].name;
+  });
+  auto find = [&index](const std::string& name) { return index.Find(name); };
   Tree tree{std::vector<int>(n, -1), std::vector<int>(n, -1)};
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const Joint& joint = model.joints[j];
