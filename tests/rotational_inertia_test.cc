@@ -533,7 +533,8 @@ std::vector<RotationalInertia<T>> BitIdentityInputs() {
 
 template <typename T>
 class PrincipalClassPathTest : public ::testing::Test {};
-TYPED_TEST_SUITE(PrincipalClassPathTest, ::testing::Types<float, double, long double>);
+using ClassPathScalarTypes = ::testing::Types<float, double, long double>;
+TYPED_TEST_SUITE(PrincipalClassPathTest, ClassPathScalarTypes);
 
 // The contract (#17): the class path is the bare solver with no other arithmetic, so
 // what a user gets through RotationalInertia is exactly what CalcSymmetricEigenvalues /
@@ -541,7 +542,7 @@ TYPED_TEST_SUITE(PrincipalClassPathTest, ::testing::Types<float, double, long do
 TYPED_TEST(PrincipalClassPathTest, MomentsAndAxesAreBitForBitThoseOfTheFreeSolver) {
   using T = TypeParam;
   const std::vector<RotationalInertia<T>> inputs = BitIdentityInputs<T>();
-  ASSERT_GT(inputs.size(), 1000u);
+  ASSERT_GT(inputs.size(), 400u);  // 486 for float (three scales), 1998 for double
   for (const RotationalInertia<T>& I : inputs) {
     const Matrix3<T> A = I.CopyToFullMatrix3();
     for (const PrincipalSolver solver : {PrincipalSolver::kAccurate, PrincipalSolver::kFast}) {
