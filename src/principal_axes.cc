@@ -316,8 +316,8 @@ bool Deflate(const Sym3<T>& c, T mu, Vector3<T>* mu_out, Matrix3<T>* V) {
 // the other two are then mu' = -mu/2 -+ sqrt(3 - 3 mu^2/4), which loses half the digits when they
 // are nearly equal (kClosedFormValues), or come from Deflate (the other modes).
 // Returns false (the caller falls back) when the squares could overflow or lose digits.
-template <typename T>
-bool ClosedForm(const Sym3<T>& a, Mode mode, Vector3<T>* values, Matrix3<T>* V) {
+template <Mode mode, typename T>
+bool ClosedForm(const Sym3<T>& a, Vector3<T>* values, Matrix3<T>* V) {
   using std::sqrt;
   constexpr T kSqrt3 = T(1.7320508075688772935274463415058723669L);
   constexpr T kMinP2 = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
@@ -375,20 +375,12 @@ int ScaleExponent(const T& s) {
   return (s > kLow && s < kHigh) ? 0 : std::ilogb(s);
 }
 
-// Diagonal input: sorted, exactly. Otherwise the closed form; outside its safe range, again
-// after an exact scaling by a power of two (so the result is the closed form's on any finite
-// input whose eigenvalue spread does not underflow, bit for bit what it gives on the scaled
-// matrix); and if that fails too (the spread underflows), Jacobi. Returns false when an entry is
-// not finite (the values are then not finite either); this is the only finiteness test, and it
-// runs only off the fast path.
-template <typename T>
-bool Solve(const Sym3<T>& s, Mode mode, Vector3<T>* w, Matrix3<T>* V) {
-  using std::isfinite;
-  if (IsDiagonal(s)) {
-    SolveJacobi(s, w, V);  // Exact: the diagonal sorted.
-    return isfinite(s.d[0]) && isfinite(s.d[1]) && isfinite(s.d[2]);
-  }
-  if (ClosedForm(s, mode, w, V)) return true;
+// The rare path of Solve, kept out of line so that the common one stays as short as the closed
+// form itself: not finite (false), or an exact scaling by a power of two and the closed form
+// again, else Jacobi.
+template <Mode mode, typename T>
+[[gnu::noinline]] bool SolveOutsideClosedFormRange(const Sym3<T>& s, Vector3<T>* w,
+                                                   Matrix3<T>* V) {
   if (!AllFinite(s)) {
     w->setConstant(std::numeric_limits<T>::quiet_NaN());
     if (V != nullptr) V->setConstant(std::numeric_limits<T>::quiet_NaN());
@@ -401,7 +393,7 @@ bool Solve(const Sym3<T>& s, Mode mode, Vector3<T>* w, Matrix3<T>* V) {
       scaled.d[i] = std::ldexp(s.d[i], -e);
       scaled.o[i] = std::ldexp(s.o[i], -e);
     }
-    if (ClosedForm(scaled, mode, w, V)) {
+    if (ClosedForm<mode>(scaled, w, V)) {
       for (int k = 0; k < 3; ++k) (*w)(k) = std::ldexp((*w)(k), e);
       return true;
     }
@@ -410,8 +402,28 @@ bool Solve(const Sym3<T>& s, Mode mode, Vector3<T>* w, Matrix3<T>* V) {
   return true;
 }
 
-Mode ValuesMode(PrincipalSolver solver) {
-  return solver == PrincipalSolver::kFast ? Mode::kClosedFormValues : Mode::kDeflatedValues;
+// Diagonal input: sorted, exactly. Otherwise the closed form; outside its safe range, again
+// after an exact scaling by a power of two (so the result is the closed form's on any finite
+// input whose eigenvalue spread does not underflow, bit for bit what it gives on the scaled
+// matrix); and if that fails too (the spread underflows), Jacobi. Returns false when an entry is
+// not finite (the values are then not finite either); this is the only finiteness test, and it
+// runs only off the fast path.
+template <Mode mode, typename T>
+bool Solve(const Sym3<T>& s, Vector3<T>* w, Matrix3<T>* V) {
+  using std::isfinite;
+  if (IsDiagonal(s)) {
+    SolveJacobi(s, w, V);  // Exact: the diagonal sorted.
+    return isfinite(s.d[0]) && isfinite(s.d[1]) && isfinite(s.d[2]);
+  }
+  if (ClosedForm<mode>(s, w, V)) return true;
+  return SolveOutsideClosedFormRange<mode>(s, w, V);
+}
+
+template <typename T>
+bool SolveValues(const Sym3<T>& s, PrincipalSolver solver, Vector3<T>* w) {
+  return solver == PrincipalSolver::kFast
+             ? Solve<Mode::kClosedFormValues>(s, w, static_cast<Matrix3<T>*>(nullptr))
+             : Solve<Mode::kDeflatedValues>(s, w, static_cast<Matrix3<T>*>(nullptr));
 }
 
 }  // namespace
@@ -421,14 +433,14 @@ namespace internal {
 template <typename T>
 bool SymmetricEigenvaluesOfEntries(T a00, T a11, T a22, T a10, T a20, T a21,
                                    PrincipalSolver solver, Vector3<T>* values) {
-  return Solve(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, ValuesMode(solver), values,
-               static_cast<Matrix3<T>*>(nullptr));
+  return SolveValues(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, solver, values);
 }
 
 template <typename T>
 bool SymmetricEigensystemOfEntries(T a00, T a11, T a22, T a10, T a20, T a21, Vector3<T>* values,
                                    Matrix3<T>* vectors) {
-  return Solve(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, Mode::kDeflatedVectors, values, vectors);
+  return Solve<Mode::kDeflatedVectors>(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, values,
+                                       vectors);
 }
 
 }  // namespace internal
@@ -439,7 +451,7 @@ Vector3<T> CalcSymmetricEigenvalues(const Matrix3<T>& A, PrincipalSolver solver)
   ThrowIfNotFinite(A, "CalcSymmetricEigenvalues");
 #endif
   Vector3<T> w;
-  Solve(ReadLowerTriangle(A), ValuesMode(solver), &w, static_cast<Matrix3<T>*>(nullptr));
+  SolveValues(ReadLowerTriangle(A), solver, &w);
   return w;
 }
 
@@ -452,7 +464,7 @@ std::pair<Vector3<T>, Matrix3<T>> CalcSymmetricEigensystem(const Matrix3<T>& A,
   std::pair<Vector3<T>, Matrix3<T>> result;
   // With vectors both solvers deflate: the eigenvectors of the two closest eigenvalues need it.
   static_cast<void>(solver);
-  Solve(ReadLowerTriangle(A), Mode::kDeflatedVectors, &result.first, &result.second);
+  Solve<Mode::kDeflatedVectors>(ReadLowerTriangle(A), &result.first, &result.second);
   return result;
 }
 
