@@ -117,7 +117,7 @@ class PoseSolver {
   const ModelIndex& index_;
   const std::unordered_map<int, double>& joint_values_;
   int anchor_;
-  std::vector<char> known_;                 // per link: memo_ holds its pose (or nullopt)
+  std::vector<char> known_;                // per link: memo_ holds its pose (or nullopt)
   std::vector<std::optional<Pose>> memo_;  // per link
 };
 

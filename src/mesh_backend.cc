@@ -43,7 +43,8 @@ Loaded Load() {
   // path (LD_LIBRARY_PATH, the cache).
   std::string tried;
   void* handle = nullptr;
-  for (const std::string& candidate : {ThisLibraryFolder() + kBackendFile, std::string(kBackendFile)}) {
+  for (const std::string& candidate :
+       {ThisLibraryFolder() + kBackendFile, std::string(kBackendFile)}) {
     handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (handle != nullptr) break;
     const char* why = dlerror();

@@ -379,8 +379,7 @@ int ScaleExponent(const T& s) {
 // form itself: not finite (false), or an exact scaling by a power of two and the closed form
 // again, else Jacobi.
 template <Mode mode, typename T>
-[[gnu::noinline]] bool SolveOutsideClosedFormRange(const Sym3<T>& s, Vector3<T>* w,
-                                                   Matrix3<T>* V) {
+[[gnu::noinline]] bool SolveOutsideClosedFormRange(const Sym3<T>& s, Vector3<T>* w, Matrix3<T>* V) {
   if (!AllFinite(s)) {
     w->setConstant(std::numeric_limits<T>::quiet_NaN());
     if (V != nullptr) V->setConstant(std::numeric_limits<T>::quiet_NaN());
@@ -431,16 +430,15 @@ bool SolveValues(const Sym3<T>& s, PrincipalSolver solver, Vector3<T>* w) {
 namespace internal {
 
 template <typename T>
-bool SymmetricEigenvaluesOfEntries(T a00, T a11, T a22, T a10, T a20, T a21,
-                                   PrincipalSolver solver, Vector3<T>* values) {
+bool SymmetricEigenvaluesOfEntries(T a00, T a11, T a22, T a10, T a20, T a21, PrincipalSolver solver,
+                                   Vector3<T>* values) {
   return SolveValues(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, solver, values);
 }
 
 template <typename T>
 bool SymmetricEigensystemOfEntries(T a00, T a11, T a22, T a10, T a20, T a21, Vector3<T>* values,
                                    Matrix3<T>* vectors) {
-  return Solve<Mode::kDeflatedVectors>(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, values,
-                                       vectors);
+  return Solve<Mode::kDeflatedVectors>(Sym3<T>{{a00, a11, a22}, {a21, a20, a10}}, values, vectors);
 }
 
 }  // namespace internal

@@ -19,9 +19,8 @@ struct Tree {
 
 Tree BuildTree(const Model& model) {
   const int n = static_cast<int>(model.links.size());
-  const internal::NameIndex index(n, [&model](int i) -> const std::string& {
-    return model.links[i].name;
-  });
+  const internal::NameIndex index(
+      n, [&model](int i) -> const std::string& { return model.links[i].name; });
   auto find = [&index](const std::string& name) { return index.Find(name); };
   Tree tree{std::vector<int>(n, -1), std::vector<int>(n, -1)};
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {

@@ -478,8 +478,7 @@ TEST(RotationalInertiaTest, HugeAndTinyInertiasAreHandledWithoutOverflow) {
 template <typename T>
 bool SameBits(const T& a, const T& b) {
   // long double: only the 10 value bytes of x87's 80-bit format (the rest is padding).
-  constexpr std::size_t kBytes =
-      std::numeric_limits<T>::digits == 64 ? 10 : sizeof(T);
+  constexpr std::size_t kBytes = std::numeric_limits<T>::digits == 64 ? 10 : sizeof(T);
   return std::memcmp(&a, &b, kBytes) == 0;
 }
 
@@ -520,8 +519,8 @@ std::vector<RotationalInertia<T>> BitIdentityInputs() {
     for (const Vector3<T>& m : moments) {
       const Vector3<T> scaled = m * std::ldexp(T(1), exponent);
       const RotationalInertia<T> diagonal =
-          RotationalInertia<T>::MakeFromMomentsAndProductsOfInertia(
-              scaled(0), scaled(1), scaled(2), 0, 0, 0, true);
+          RotationalInertia<T>::MakeFromMomentsAndProductsOfInertia(scaled(0), scaled(1), scaled(2),
+                                                                    0, 0, 0, true);
       inputs.push_back(diagonal);
       inputs.push_back(diagonal.ReExpress(RandomRotation<T>(&generator)));
       inputs.push_back(RotationalInertia<T>::MakeFromMomentsAndProductsOfInertia(
@@ -584,9 +583,8 @@ TYPED_TEST(PrincipalClassPathTest, MomentsOfPowerOfTwoMultiplesAreExactMultiples
       ASSERT_TRUE(SameBits(Vector3<T>(CalcSymmetricEigenvalues<T>(B, PrincipalSolver::kFast)),
                            Vector3<T>(fast * s)))
           << exponent;
-      ASSERT_TRUE(
-          SameBits(Vector3<T>(CalcSymmetricEigenvalues<T>(B, PrincipalSolver::kAccurate)),
-                   Vector3<T>(accurate * s)))
+      ASSERT_TRUE(SameBits(Vector3<T>(CalcSymmetricEigenvalues<T>(B, PrincipalSolver::kAccurate)),
+                           Vector3<T>(accurate * s)))
           << exponent;
       const auto [scaled_values, scaled_vectors] = CalcSymmetricEigensystem<T>(B);
       ASSERT_TRUE(SameBits(scaled_values, Vector3<T>(values * s))) << exponent;

@@ -11,13 +11,13 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <exception>
 #include <optional>
 #include <string>
 #include <system_error>

@@ -76,8 +76,8 @@ namespace internal {
 /// matrix A with these entries, at the same cost. Returns false, with non-finite output, iff an
 /// entry is NaN or infinite; the finiteness test runs only off the fast path. Never throws.
 template <typename T>
-bool SymmetricEigenvaluesOfEntries(T a00, T a11, T a22, T a10, T a20, T a21,
-                                   PrincipalSolver solver, Vector3<T>* values);
+bool SymmetricEigenvaluesOfEntries(T a00, T a11, T a22, T a10, T a20, T a21, PrincipalSolver solver,
+                                   Vector3<T>* values);
 /// See SymmetricEigenvaluesOfEntries; the vectors as CalcSymmetricEigensystem gives them.
 template <typename T>
 bool SymmetricEigensystemOfEntries(T a00, T a11, T a22, T a10, T a20, T a21, Vector3<T>* values,

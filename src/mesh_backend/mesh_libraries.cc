@@ -34,7 +34,8 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
         importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (scene == nullptr || scene->mRootNode == nullptr) {
       if (error) {
-        *error = "mesh file '" + std::string(path) + "' cannot be read: " + importer.GetErrorString();
+        *error =
+            "mesh file '" + std::string(path) + "' cannot be read: " + importer.GetErrorString();
       }
       return false;
     }
