@@ -46,6 +46,7 @@ from ._massprops import (  # noqa: F401  (re-exported)
     principal_moments,
     read,
     read_all,
+    repair_inertia,
     rules,
 )
 from . import _massprops
@@ -55,7 +56,7 @@ __all__ = [
     "FixResult", "Geometry", "Inertial", "Joint", "Link", "Model", "PatchError", "Pose",
     "PrincipalSolver", "ReadError", "Repair", "RotationalInertia", "SourceLocation",
     "SpatialInertia", "UnitInertia", "WeldedGroup", "check", "fix", "is_physically_valid",
-    "principal_moments", "read", "read_all", "report", "rules",
+    "principal_moments", "read", "read_all", "repair_inertia", "report", "rules",
 ]
 
 PathOrText = Union[str, bytes, "os.PathLike[str]"]

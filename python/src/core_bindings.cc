@@ -135,9 +135,9 @@ Batch ReadBatch(const py::array_t<double, py::array::c_style | py::array::forcec
 // The six entries of matrix k, triangles averaged as FromMatrix does; false (and *bad set) when
 // the matrix is not symmetric by FromMatrix's test.
 bool SixEntries(const double* m, double e[6]) {
-  const double scale = std::max({std::abs(m[0]), std::abs(m[1]), std::abs(m[2]), std::abs(m[3]),
-                                 std::abs(m[4]), std::abs(m[5]), std::abs(m[6]), std::abs(m[7]),
-                                 std::abs(m[8])});
+  const double scale =
+      std::max({std::abs(m[0]), std::abs(m[1]), std::abs(m[2]), std::abs(m[3]), std::abs(m[4]),
+                std::abs(m[5]), std::abs(m[6]), std::abs(m[7]), std::abs(m[8])});
   const double tolerance = 8 * std::numeric_limits<double>::epsilon() * scale;
   const int pairs[3][2] = {{1, 3}, {2, 6}, {5, 7}};
   for (const auto& p : pairs) {
@@ -309,8 +309,7 @@ array([2., 3., 4.])
       .def(py::self + py::self, "The sum (about the same point, in the same frame).")
       .def(
           "__sub__", [](const RI& a, const RI& b) { return Checked(a - b, "operator-"); },
-          py::is_operator(),
-          "The difference; raises ValueError if it is not physically valid.")
+          py::is_operator(), "The difference; raises ValueError if it is not physically valid.")
       .def(
           "__mul__",
           [](const RI& I, double s) {
@@ -476,8 +475,7 @@ I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
           "triaxially_symmetric",
           [](double I) { return Checked(UI::TriaxiallySymmetric(I), "triaxially_symmetric()"); },
           py::arg("I_triaxial"), "Ixx = Iyy = Izz = I_triaxial.")
-      .def_static("solid_ellipsoid", &UI::SolidEllipsoid, py::arg("a"), py::arg("b"),
-                  py::arg("c"),
+      .def_static("solid_ellipsoid", &UI::SolidEllipsoid, py::arg("a"), py::arg("b"), py::arg("c"),
                   "Solid ellipsoid with semi-axes a, b, c: ((b²+c²)/5, (a²+c²)/5, (a²+b²)/5).")
       .def_static("solid_sphere", &UI::SolidSphere, py::arg("r"),
                   "Solid sphere of radius r about its center: 2/5·r².")
@@ -509,11 +507,11 @@ I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
                   "K·1 + (J − K)·b·bᵀ. ValueError if J > 2K, J or K negative, or not unit.")
       .def_static("straight_line", &UI::StraightLine, py::arg("K"), py::arg("unit_vector"),
                   "axially_symmetric with J = 0.")
-      .def_static("solid_tetrahedron_about_vertex", &UI::SolidTetrahedronAboutVertex,
-                  py::arg("p1"), py::arg("p2"), py::arg("p3"),
+      .def_static("solid_tetrahedron_about_vertex", &UI::SolidTetrahedronAboutVertex, py::arg("p1"),
+                  py::arg("p2"), py::arg("p3"),
                   "Solid tetrahedron with vertices A (the origin), p1, p2, p3, about A.")
-      .def_static("solid_tetrahedron_about_point", &UI::SolidTetrahedronAboutPoint,
-                  py::arg("p0"), py::arg("p1"), py::arg("p2"), py::arg("p3"),
+      .def_static("solid_tetrahedron_about_point", &UI::SolidTetrahedronAboutPoint, py::arg("p0"),
+                  py::arg("p1"), py::arg("p2"), py::arg("p3"),
                   "Solid tetrahedron with vertices p0..p3 (from a point A), about A.")
       .def("__repr__", [](const UI& G) { return "UnitInertia(" + Entries(G) + ")"; })
       .def(py::pickle(
@@ -613,8 +611,7 @@ the center of mass. Constructors check validity (ValueError) unless skip_validit
       .def("__eq__", &SpatialEqual, py::is_operator(),
            "Exact equality of mass, center of mass and unit inertia.")
       .def(
-          "__ne__", [](const SI& a, const SI& b) { return !SpatialEqual(a, b); },
-          py::is_operator())
+          "__ne__", [](const SI& a, const SI& b) { return !SpatialEqual(a, b); }, py::is_operator())
       .def("__repr__",
            [](const SI& M) {
              return "SpatialInertia(mass=" + Repr(M.get_mass()) +
@@ -625,17 +622,16 @@ the center of mass. Constructors check validity (ValueError) unless skip_validit
       .def(py::pickle(
           [](const SI& M) {
             const UI& G = M.get_unit_inertia();
-            return py::make_tuple(M.get_mass(), M.get_com(),
-                                  py::make_tuple(G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2),
-                                                 G(1, 2)));
+            return py::make_tuple(
+                M.get_mass(), M.get_com(),
+                py::make_tuple(G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2), G(1, 2)));
           },
           [](const py::tuple& t) {
             if (t.size() != 3) throw py::value_error("SpatialInertia: bad pickle state");
             const py::tuple g = t[2].cast<py::tuple>();
             return SI(t[0].cast<double>(), t[1].cast<Vector3d>(),
-                      UI(RawInertia(g[0].cast<double>(), g[1].cast<double>(),
-                                    g[2].cast<double>(), g[3].cast<double>(),
-                                    g[4].cast<double>(), g[5].cast<double>())),
+                      UI(RawInertia(g[0].cast<double>(), g[1].cast<double>(), g[2].cast<double>(),
+                                    g[3].cast<double>(), g[4].cast<double>(), g[5].cast<double>())),
                       true);
           }));
   c.attr("__hash__") = py::none();

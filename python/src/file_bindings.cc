@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <set>
@@ -202,8 +203,8 @@ struct FixResult {
 // Text as str, bytes that are not UTF-8 kept as surrogate escapes (they encode back unchanged
 // with errors="surrogateescape").
 py::str Text(const std::string& text) {
-  PyObject* s = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()),
-                                     "surrogateescape");
+  PyObject* s =
+      PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "surrogateescape");
   if (s == nullptr) throw py::error_already_set();
   return py::reinterpret_steal<py::str>(s);
 }
@@ -364,8 +365,7 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
     throw py::value_error("fix: repair must be 'project' or 'balance', got '" + repair + "'");
   }
   if (!(density > 0) || !std::isfinite(density)) {
-    throw py::value_error("fix: density must be a positive number of kg/m³, got " +
-                          Repr(density));
+    throw py::value_error("fix: density must be a positive number of kg/m³, got " + Repr(density));
   }
   if (!(tolerance >= 0 && tolerance < 1)) {
     throw py::value_error("fix: tolerance must be at least 0 and less than 1, got " +
@@ -398,8 +398,8 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
   const std::vector<Model> models = ReadModels(text_source, model_paths, &read);
 
   RepairOptions options;
-  options.method = repair == "balance" ? InertiaRepairMethod::kBalance
-                                       : InertiaRepairMethod::kProject;
+  options.method =
+      repair == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject;
   options.fix_units = fix_units;
   options.density = density;
   options.from_geometry_all = from_geometry_all;
@@ -427,8 +427,7 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
     std::vector<Finding> findings = CheckModel(model, check_options);
     findings.erase(std::remove_if(findings.begin(), findings.end(),
                                   [&](const Finding& f) {
-                                    return f.severity != Severity::kError &&
-                                           !applied.count(f.rule);
+                                    return f.severity != Severity::kError && !applied.count(f.rule);
                                   }),
                    findings.end());
     std::vector<Repair> planned = PlanRepairs(model, findings, options);
@@ -436,12 +435,10 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
   }
   for (const std::string& link : from_geometry_links) {
     if (std::find(known_links.begin(), known_links.end(), link) == known_links.end()) {
-      throw py::value_error("fix: from_geometry: " + source.path + " has no link '" + link +
-                            "'");
+      throw py::value_error("fix: from_geometry: " + source.path + " has no link '" + link + "'");
     }
-    const bool repaired =
-        std::any_of(result.changes.begin(), result.changes.end(),
-                    [&](const Repair& r) { return r.link == link; });
+    const bool repaired = std::any_of(result.changes.begin(), result.changes.end(),
+                                      [&](const Repair& r) { return r.link == link; });
     if (repaired) continue;
     for (const Model& model : models) {
       const int index = model.FindLink(link);
@@ -454,20 +451,20 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
       result.warnings.push_back("from_geometry: link '" + link + "' is left as it is: " + why);
     }
   }
-  const PatchResult patched = PatchModelText(result.original, models.front().format,
-                                             result.changes);
+  const PatchResult patched =
+      PatchModelText(result.original, models.front().format, result.changes);
   result.text = patched.text;
   result.patch_errors = patched.errors;
   // Repairs that could not be written are not changes.
-  result.changes.erase(
-      std::remove_if(result.changes.begin(), result.changes.end(),
-                     [&](const Repair& r) {
-                       return std::any_of(patched.errors.begin(), patched.errors.end(),
-                                          [&](const PatchError& e) {
-                                            return e.link == r.link && e.line == r.link_line;
-                                          });
-                     }),
-      result.changes.end());
+  result.changes.erase(std::remove_if(result.changes.begin(), result.changes.end(),
+                                      [&](const Repair& r) {
+                                        return std::any_of(
+                                            patched.errors.begin(), patched.errors.end(),
+                                            [&](const PatchError& e) {
+                                              return e.link == r.link && e.line == r.link_line;
+                                            });
+                                      }),
+                       result.changes.end());
   result.changed = result.text != result.original;
 
   // Never write something worse: the output must read back; its remaining errors are listed.
@@ -497,8 +494,7 @@ py::object Report(const py::handle& source_arg, const std::map<std::string, doub
   MassReportOptions options;
   for (const auto& [name, value] : joints) {
     if (!std::isfinite(value)) {
-      throw py::value_error("report: joints['" + name + "'] = " + Repr(value) +
-                            " is not finite");
+      throw py::value_error("report: joints['" + name + "'] = " + Repr(value) + " is not finite");
     }
     options.joint_values[name] = value;
   }
@@ -556,9 +552,9 @@ void BindModelClasses(py::module_& m) {
       .def("__repr__", [](const Pose& X) {
         std::ostringstream out;
         out.precision(17);
-        out << "Pose(p_AB=[" << X.p_AB(0) << ", " << X.p_AB(1) << ", " << X.p_AB(2)
-            << "], R_AB=[[" << X.R_AB(0, 0) << ", " << X.R_AB(0, 1) << ", " << X.R_AB(0, 2)
-            << "], [" << X.R_AB(1, 0) << ", " << X.R_AB(1, 1) << ", " << X.R_AB(1, 2) << "], ["
+        out << "Pose(p_AB=[" << X.p_AB(0) << ", " << X.p_AB(1) << ", " << X.p_AB(2) << "], R_AB=[["
+            << X.R_AB(0, 0) << ", " << X.R_AB(0, 1) << ", " << X.R_AB(0, 2) << "], ["
+            << X.R_AB(1, 0) << ", " << X.R_AB(1, 1) << ", " << X.R_AB(1, 2) << "], ["
             << X.R_AB(2, 0) << ", " << X.R_AB(2, 1) << ", " << X.R_AB(2, 2) << "]])";
         return out.str();
       });
@@ -686,8 +682,8 @@ void BindModelClasses(py::module_& m) {
       .def_readonly("axis", &Joint::axis, "Unit axis in the child frame.")
       .def_readonly("location", &Joint::location)
       .def("__repr__", [](const Joint& j) {
-        return "Joint(" + Quote(j.name) + ", " + Quote(j.type_name) + ", parent=" +
-               Quote(j.parent) + ", child=" + Quote(j.child) + ")";
+        return "Joint(" + Quote(j.name) + ", " + Quote(j.type_name) +
+               ", parent=" + Quote(j.parent) + ", child=" + Quote(j.child) + ")";
       });
 
   py::class_<Composite>(m, "CompositeInertia",
@@ -707,8 +703,7 @@ void BindModelClasses(py::module_& m) {
           [](const Composite& c) { return c.inertia.CalcInertiaAboutOrigin(); },
           "The inertia about F's origin, in F.")
       .def(
-          "rotational_inertia",
-          [](const Composite& c) { return Unchecked(c.inertia.I_SScm_R); },
+          "rotational_inertia", [](const Composite& c) { return Unchecked(c.inertia.I_SScm_R); },
           "The central inertia as a RotationalInertia (not checked).")
       .def_readonly("unreachable_links", &Composite::unreachable_links,
                     "Links left out (not reachable from the root through joints).")
@@ -731,8 +726,8 @@ void BindModelClasses(py::module_& m) {
       .def_readonly("composite", &PyWeldedGroup::composite)
       .def("__repr__", [](const PyWeldedGroup& g) {
         return "WeldedGroup(root_link=" + Quote(g.root_link) + ", " +
-               std::to_string(g.links.size()) + " links, mass=" +
-               Repr(g.composite.inertia.mass) + ")";
+               std::to_string(g.links.size()) + " links, mass=" + Repr(g.composite.inertia.mass) +
+               ")";
       });
 
   py::class_<Model>(m, "Model",
@@ -741,11 +736,11 @@ void BindModelClasses(py::module_& m) {
                     ">>> [link.name for link in model.links]")
       .def_readonly("name", &Model::name)
       .def_property_readonly(
-          "format", [](const Model& model) { return FormatName(model.format); },
-          "'urdf' or 'sdf'.")
+          "format", [](const Model& model) { return FormatName(model.format); }, "'urdf' or 'sdf'.")
       .def_readonly("file", &Model::file)
       .def_property_readonly(
-          "links", [](py::object self) { return ReferenceList(self, self.cast<const Model&>().links); },
+          "links",
+          [](py::object self) { return ReferenceList(self, self.cast<const Model&>().links); },
           "The links, in file order.")
       .def_property_readonly(
           "joints",
@@ -773,7 +768,8 @@ void BindModelClasses(py::module_& m) {
               PyWeldedGroup p;
               p.root_link = g.root_link;
               p.link_indices = g.links;
-              for (int i : g.links) p.links.push_back(model.links[static_cast<std::size_t>(i)].name);
+              for (int i : g.links)
+                p.links.push_back(model.links[static_cast<std::size_t>(i)].name);
               p.X_RL = g.X_RL;
               if (g.parent_joint >= 0) {
                 p.parent_joint = model.joints[static_cast<std::size_t>(g.parent_joint)].name;
@@ -797,8 +793,8 @@ void BindModelClasses(py::module_& m) {
           },
           "The whole model's composite at the zero configuration, in the root link's frame.")
       .def("__repr__", [](const Model& model) {
-        return "Model(" + Quote(model.name) + ", format=" + Quote(FormatName(model.format)) +
-               ", " + std::to_string(model.links.size()) + " links, " +
+        return "Model(" + Quote(model.name) + ", format=" + Quote(FormatName(model.format)) + ", " +
+               std::to_string(model.links.size()) + " links, " +
                std::to_string(model.joints.size()) + " joints)";
       });
 }
@@ -919,8 +915,7 @@ void BindFindingClasses(py::module_& m) {
       .def_readonly("reads_back", &FixResult::reads_back,
                     "The repaired text reads back (else nothing is ever written).")
       .def_readonly("changes", &FixResult::changes, "The Repairs written, one per link.")
-      .def_readonly("patch_errors", &FixResult::patch_errors,
-                    "Repairs that could not be written.")
+      .def_readonly("patch_errors", &FixResult::patch_errors, "Repairs that could not be written.")
       .def_readonly("remaining_errors", &FixResult::remaining_errors,
                     "Error findings of the repaired text (no repair exists for them).")
       .def_readonly("warnings", &FixResult::warnings, "Notes about from_geometry links.")
@@ -988,6 +983,33 @@ file cannot be read or parsed.
   m.def("_report", &Report, py::arg("path_or_text"), py::arg("joints"), py::arg("frame"),
         py::arg("only"), py::arg("subtree"), py::arg("geometry"), py::arg("package_paths"),
         py::arg("model_paths"), "The engine of massprops.report (use that).");
+  m.def(
+      "repair_inertia",
+      [](const Eigen::Matrix3d& I, const std::string& method, double tolerance) {
+        if (method != "project" && method != "balance") {
+          throw py::value_error("repair_inertia: method must be 'project' or 'balance', got '" +
+                                method + "'");
+        }
+        if (!(tolerance >= 0 && tolerance < 1)) {
+          throw py::value_error("repair_inertia: tolerance must be at least 0 and less than 1");
+        }
+        if ((I - I.transpose()).cwiseAbs().maxCoeff() >
+            8 * std::numeric_limits<double>::epsilon() * I.cwiseAbs().maxCoeff()) {
+          throw py::value_error("repair_inertia: the matrix is not symmetric");
+        }
+        return RepairInertia(
+            I, method == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject,
+            tolerance);
+      },
+      py::arg("I"), py::arg("method") = "project", py::arg("tolerance") = 1e-6,
+      R"doc(The nearest physically valid inertia to the symmetric 3x3 matrix I (what `massprops fix`
+writes for inertia-not-physical), as a numpy array. method: 'project' (default; the nearest valid
+inertia in the Frobenius norm with the same principal axes) or 'balance' (principal moments set
+to their mean, MuJoCo's balanceinertia). A valid I (at `tolerance` relative to the trace) is
+returned unchanged.
+
+>>> massprops.repair_inertia(numpy.diag([0.1, 0.2, 0.5]))   # moments move by 0.2/3
+)doc");
   m.def(
       "rules",
       [] {

@@ -203,3 +203,21 @@ def test_docstrings_everywhere():
             if name.startswith("_") or not callable(member):
                 continue
             assert member.__doc__ and len(member.__doc__.strip()) > 20, f"{cls.__name__}.{name}"
+
+
+def test_repair_inertia_by_hand():
+    # docs/fix.md: diag(0.1, 0.2, 0.5) violates 0.1 + 0.2 >= 0.5 by 0.2; the nearest valid
+    # inertia moves each moment by 0.2/3 along (1, 1, −1) (plus a 1e-9 floor); balance sets the
+    # three moments to their mean 0.8/3.
+    fixed = massprops.repair_inertia(np.diag([0.1, 0.2, 0.5]))
+    np.testing.assert_allclose(np.diag(fixed), [0.1 + 0.2 / 3, 0.2 + 0.2 / 3, 0.5 - 0.2 / 3],
+                               rtol=1e-8)
+    assert massprops.is_physically_valid(fixed[None], 0.0)[0]
+    balanced = massprops.repair_inertia(np.diag([0.1, 0.2, 0.5]), "balance")
+    np.testing.assert_allclose(balanced, np.eye(3) * 0.8 / 3, rtol=1e-15, atol=1e-17)
+    valid = np.diag([1.0, 2.0, 2.5])
+    np.testing.assert_array_equal(massprops.repair_inertia(valid), valid)
+    with pytest.raises(ValueError, match="method"):
+        massprops.repair_inertia(valid, "nearest")
+    with pytest.raises(ValueError, match="symmetric"):
+        massprops.repair_inertia(np.triu(np.ones((3, 3))))

@@ -164,10 +164,10 @@ def test_fix_dry_run_writes_nothing_and_repairs_only_errors_by_default(tmp_path,
     assert path.read_bytes() == before and path.stat().st_mtime_ns == mtime
     assert result.written is None and result.changed and result.reads_back
     changed_links = {change.link for change in result.changes}
-    # Errors only: forearm (inertia-not-physical) and camera_link (inertial-missing, an error
-    # when the link has geometry); upper_arm's unit slip is a warning, a guess: not applied.
+    # Errors only: forearm (inertia-not-physical); upper_arm's unit slip (units-suspect) and
+    # camera_link's missing inertial (inertial-missing) are warnings, guesses: not applied.
     assert "forearm" in changed_links
-    assert "upper_arm" not in changed_links
+    assert "upper_arm" not in changed_links and "camera_link" not in changed_links
     forearm = next(c for c in result.changes if c.link == "forearm")
     assert forearm.rule == "inertia-not-physical" and forearm.method == "project"
     assert forearm.changes and all(ch.element == "inertia" for ch in forearm.changes)
