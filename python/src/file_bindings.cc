@@ -563,14 +563,20 @@ void BindModelClasses(py::module_& m) {
                        "An <inertial> exactly as written: mass, the pose X_BBi of the inertial "
                        "frame in the link frame, and the six numbers about the center of mass "
                        "in Bi (ixy = -∫xy dm, as URDF and SDF write them).")
-      .def_readonly("mass", &Inertial::mass)
+      .def_readonly("mass", &Inertial::mass, "The <mass> (kg) as written.")
       .def_readonly("X_BBi", &Inertial::X_BBi, "URDF <origin> / SDF <pose> of the inertial.")
-      .def_readonly("ixx", &Inertial::ixx)
-      .def_readonly("iyy", &Inertial::iyy)
-      .def_readonly("izz", &Inertial::izz)
-      .def_readonly("ixy", &Inertial::ixy)
-      .def_readonly("ixz", &Inertial::ixz)
-      .def_readonly("iyz", &Inertial::iyz)
+      .def_readonly("ixx", &Inertial::ixx,
+                    "<inertia ixx> as written (kg·m², about the center of mass, in Bi).")
+      .def_readonly("iyy", &Inertial::iyy,
+                    "<inertia iyy> as written (kg·m², about the center of mass, in Bi).")
+      .def_readonly("izz", &Inertial::izz,
+                    "<inertia izz> as written (kg·m², about the center of mass, in Bi).")
+      .def_readonly("ixy", &Inertial::ixy,
+                    "<inertia ixy> as written (kg·m², about the center of mass, in Bi).")
+      .def_readonly("ixz", &Inertial::ixz,
+                    "<inertia ixz> as written (kg·m², about the center of mass, in Bi).")
+      .def_readonly("iyz", &Inertial::iyz,
+                    "<inertia iyz> as written (kg·m², about the center of mass, in Bi).")
       .def_property_readonly("inertia", &InertiaAsWritten,
                              "The 3x3 inertia matrix as written (about the center of mass, in "
                              "Bi).")
@@ -597,7 +603,7 @@ void BindModelClasses(py::module_& m) {
       .def_readonly("scale", &Geometry::scale, "mesh: the scale.")
       .def_readonly("X_BG", &Geometry::X_BG, "Pose of the geometry in the link frame.")
       .def_readonly("is_collision", &Geometry::is_collision, "False for <visual>.")
-      .def_readonly("location", &Geometry::location)
+      .def_readonly("location", &Geometry::location, "The <collision>/<visual> element.")
       .def("__repr__", [](const Geometry& g) {
         return "Geometry(type=" + Quote(GeometryTypeName(g.type)) +
                (g.is_collision ? ", collision" : ", visual") +
@@ -608,7 +614,7 @@ void BindModelClasses(py::module_& m) {
                    "A link: its name, its <inertial> (or None), geometries and source line.\n\n"
                    ">>> link = massprops.read('robot.urdf').link('arm')\n"
                    ">>> link.mass, link.com, link.inertia")
-      .def_readonly("name", &Link::name)
+      .def_readonly("name", &Link::name, "The link's name (SDF: scoped, 'inner::link').")
       .def_readonly("inertial", &Link::inertial, "The Inertial as written, or None.")
       .def_property_readonly(
           "mass",
@@ -674,13 +680,13 @@ void BindModelClasses(py::module_& m) {
       });
 
   py::class_<Joint>(m, "Joint", "A joint: name, type, parent and child links, origin, axis.")
-      .def_readonly("name", &Joint::name)
+      .def_readonly("name", &Joint::name, "The joint's name.")
       .def_readonly("type", &Joint::type_name, "As written: 'revolute', 'fixed', ...")
       .def_readonly("parent", &Joint::parent, "Parent link name ('world' for SDF world joints).")
-      .def_readonly("child", &Joint::child)
+      .def_readonly("child", &Joint::child, "Child link name.")
       .def_readonly("X_PC", &Joint::X_PC, "Child frame in the parent frame at joint value 0.")
       .def_readonly("axis", &Joint::axis, "Unit axis in the child frame.")
-      .def_readonly("location", &Joint::location)
+      .def_readonly("location", &Joint::location, "The <joint> element.")
       .def("__repr__", [](const Joint& j) {
         return "Joint(" + Quote(j.name) + ", " + Quote(j.type_name) +
                ", parent=" + Quote(j.parent) + ", child=" + Quote(j.child) + ")";
@@ -716,14 +722,16 @@ void BindModelClasses(py::module_& m) {
   py::class_<PyWeldedGroup>(m, "WeldedGroup",
                             "Links joined by fixed joints (one rigid body), with their "
                             "composite in the root link's frame.")
-      .def_readonly("root_link", &PyWeldedGroup::root_link)
+      .def_readonly("root_link", &PyWeldedGroup::root_link, "The member nearest the model root.")
       .def_readonly("links", &PyWeldedGroup::links, "Names, root first.")
       .def_readonly("link_indices", &PyWeldedGroup::link_indices, "Indices into Model.links.")
       .def_readonly("X_RL", &PyWeldedGroup::X_RL, "Pose of each member in the root frame.")
       .def_readonly("parent_joint", &PyWeldedGroup::parent_joint,
                     "The non-fixed joint attaching the group, or None.")
-      .def_readonly("is_moving", &PyWeldedGroup::is_moving)
-      .def_readonly("composite", &PyWeldedGroup::composite)
+      .def_readonly("is_moving", &PyWeldedGroup::is_moving,
+                    "True when the group can move relative to its parent.")
+      .def_readonly("composite", &PyWeldedGroup::composite,
+                    "The group's CompositeInertia in the root link's frame.")
       .def("__repr__", [](const PyWeldedGroup& g) {
         return "WeldedGroup(root_link=" + Quote(g.root_link) + ", " +
                std::to_string(g.links.size()) + " links, mass=" + Repr(g.composite.inertia.mass) +
@@ -734,10 +742,10 @@ void BindModelClasses(py::module_& m) {
                     "A robot model read from a URDF or SDF file: links, joints, root link.\n\n"
                     ">>> model = massprops.read('robot.urdf')\n"
                     ">>> [link.name for link in model.links]")
-      .def_readonly("name", &Model::name)
+      .def_readonly("name", &Model::name, "The <robot>/<model> name.")
       .def_property_readonly(
           "format", [](const Model& model) { return FormatName(model.format); }, "'urdf' or 'sdf'.")
-      .def_readonly("file", &Model::file)
+      .def_readonly("file", &Model::file, "The path as given ('<string>' for text).")
       .def_property_readonly(
           "links",
           [](py::object self) { return ReferenceList(self, self.cast<const Model&>().links); },
@@ -746,8 +754,8 @@ void BindModelClasses(py::module_& m) {
           "joints",
           [](py::object self) { return ReferenceList(self, self.cast<const Model&>().joints); },
           "The joints, in file order.")
-      .def_readonly("root_link", &Model::root_link)
-      .def_readonly("location", &Model::location)
+      .def_readonly("root_link", &Model::root_link, "The link that is no joint's child.")
+      .def_readonly("location", &Model::location, "The <robot>/<model> element.")
       .def_readonly("is_static", &Model::is_static, "SDF <static>true</static>.")
       .def("find_link", &Model::FindLink, py::arg("name"), "Index of the link, or -1.")
       .def(
@@ -807,9 +815,10 @@ void BindFindingClasses(py::module_& m) {
                     "URDF attribute ('ixx', 'value', 'xyz') or SDF child element; '' for the "
                     "element's own text.")
       .def_readonly("line", &FieldChange::line, "Line in the original text (0: inserted).")
-      .def_readonly("first_token", &FieldChange::first_token)
-      .def_readonly("old_values", &FieldChange::old_values)
-      .def_readonly("new_values", &FieldChange::new_values)
+      .def_readonly("first_token", &FieldChange::first_token,
+                    "Index of the first number of the value that changes.")
+      .def_readonly("old_values", &FieldChange::old_values, "The numbers as written.")
+      .def_readonly("new_values", &FieldChange::new_values, "The numbers written instead.")
       .def("__repr__", [](const FieldChange& c) {
         std::string text = "FieldChange(" + Quote(c.element) + ", " + Quote(c.attribute) +
                            ", line=" + std::to_string(c.line) + ", old=[";
@@ -826,18 +835,21 @@ void BindFindingClasses(py::module_& m) {
   py::class_<Repair>(m, "Repair",
                      "The new mass properties of one link and how they differ from the file.")
       .def_readonly("rule", &Repair::rule, "The finding it answers first.")
-      .def_readonly("link", &Repair::link)
+      .def_readonly("link", &Repair::link, "The link's name.")
       .def_readonly("method", &Repair::method,
                     "'project', 'balance', 'negate-products', 'rescale-units', 'shift-to-com', "
                     "'from-geometry', ...")
       .def_readonly("before", &Repair::before, "The Inertial as written (None if missing).")
       .def_readonly("after", &Repair::after, "The repaired Inertial.")
-      .def_readonly("inserts_inertial", &Repair::inserts_inertial)
-      .def_readonly("inserts_origin", &Repair::inserts_origin)
+      .def_readonly("inserts_inertial", &Repair::inserts_inertial,
+                    "A new <inertial> is inserted (inertial-missing).")
+      .def_readonly("inserts_origin", &Repair::inserts_origin,
+                    "An <origin>/<pose> is inserted into the <inertial>.")
       .def_readonly("changes", &Repair::changes, "The FieldChanges.")
-      .def_readonly("link_line", &Repair::link_line)
-      .def_readonly("why", &Repair::why)
-      .def_readonly("relative_change", &Repair::relative_change)
+      .def_readonly("link_line", &Repair::link_line, "Line of the <link> start tag.")
+      .def_readonly("why", &Repair::why, "What was wrong and what the new numbers are.")
+      .def_readonly("relative_change", &Repair::relative_change,
+                    "‖I_after − I_before‖_F / ‖I_before‖_F (1 when nothing was there).")
       .def_readonly("resolves", &Repair::resolves, "Rules this repair resolves on its link.")
       .def("__str__", &DescribeRepair)
       .def("__repr__", [](const Repair& r) {
@@ -852,13 +864,14 @@ void BindFindingClasses(py::module_& m) {
       .def_property_readonly(
           "severity", [](const Finding& f) { return std::string(ToString(f.severity)); },
           "'error', 'warning' or 'note'.")
-      .def_readonly("model", &Finding::model)
+      .def_readonly("model", &Finding::model, "The model's name.")
       .def_readonly("link", &Finding::link, "The link ('' for the whole file).")
-      .def_property_readonly("file", &FindingFile)
+      .def_property_readonly("file", &FindingFile, "The file the finding points into.")
       .def_property_readonly(
           "line", [](const Finding& f) { return f.location.line; }, "1-based; 0 when unknown.")
-      .def_property_readonly("column", [](const Finding& f) { return f.location.column; })
-      .def_readonly("message", &Finding::message)
+      .def_property_readonly(
+          "column", [](const Finding& f) { return f.location.column; }, "1-based; 0 when unknown.")
+      .def_readonly("message", &Finding::message, "A sentence quoting the offending numbers.")
       .def_property_readonly(
           "values", [](const Finding& f) { return ValuesDict(f.values); },
           "The named measured values, a dict.")
@@ -894,9 +907,9 @@ void BindFindingClasses(py::module_& m) {
       });
 
   py::class_<PatchError>(m, "PatchError", "A repair that could not be written, and why.")
-      .def_readonly("link", &PatchError::link)
-      .def_readonly("line", &PatchError::line)
-      .def_readonly("message", &PatchError::message)
+      .def_readonly("link", &PatchError::link, "The link's name.")
+      .def_readonly("line", &PatchError::line, "Line of the link.")
+      .def_readonly("message", &PatchError::message, "Why the repair was not written.")
       .def("__repr__", [](const PatchError& e) {
         return "PatchError(link=" + Quote(e.link) + ", line=" + std::to_string(e.line) +
                ", message=" + Quote(e.message) + ")";
