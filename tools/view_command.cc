@@ -174,9 +174,9 @@ json MeshJson(const std::string& uri, const TriangleMesh& mesh, std::size_t orig
   for (const Eigen::Vector3d& v : mesh.vertices) {
     for (int k = 0; k < 3; ++k) {
       const double x = (v[k] - box.min()[k]) / step[k];
-      q.push_back(std::isfinite(x) ? static_cast<int>(std::clamp(std::lround(x), 0L,
-                                                                 long{kQuantization}))
-                                   : 0);
+      q.push_back(std::isfinite(x)
+                      ? static_cast<int>(std::clamp(std::lround(x), 0L, long{kQuantization}))
+                      : 0);
     }
   }
   std::vector<std::int32_t> t;
@@ -205,8 +205,8 @@ class MeshTable {
       *error = "the scale is not finite";
       return std::nullopt;
     }
-    const auto key = std::make_tuple(*path, geometry.scale.x(), geometry.scale.y(),
-                                     geometry.scale.z());
+    const auto key =
+        std::make_tuple(*path, geometry.scale.x(), geometry.scale.y(), geometry.scale.z());
     if (auto it = index_.find(key); it != index_.end()) return it->second;
     std::shared_ptr<const TriangleMesh> mesh = cache_.Load(*path, error);
     if (!mesh) return std::nullopt;
@@ -221,10 +221,9 @@ class MeshTable {
   // The table as JSON, decimated to the page's triangle budget.
   json ToJson() const {
     json out = json::array();
-    const std::size_t per_mesh =
-        meshes_.empty() ? kMaxMeshTriangles
-                        : std::clamp(kTriangleBudget / meshes_.size(), kMinMeshTriangles,
-                                     kMaxMeshTriangles);
+    const std::size_t per_mesh = meshes_.empty() ? kMaxMeshTriangles
+                                                 : std::clamp(kTriangleBudget / meshes_.size(),
+                                                              kMinMeshTriangles, kMaxMeshTriangles);
     for (const auto& [uri, mesh] : meshes_) {
       out.push_back(MeshJson(uri, Decimate(mesh, per_mesh), mesh.triangles.size()));
     }
@@ -238,12 +237,9 @@ class MeshTable {
 };
 
 json FindingJson(const Finding& finding) {
-  return {{"rule", finding.rule},
-          {"severity", ToString(finding.severity)},
-          {"message", finding.message},
-          {"file", finding.location.file},
-          {"line", finding.location.line},
-          {"fixed_by_repair", finding.repair.has_value()}};
+  return {{"rule", finding.rule},          {"severity", ToString(finding.severity)},
+          {"message", finding.message},    {"file", finding.location.file},
+          {"line", finding.location.line}, {"fixed_by_repair", finding.repair.has_value()}};
 }
 
 json GeometryJson(const Geometry& geometry, const Pose& X_WB, const MeshResolveOptions& resolve,
@@ -301,7 +297,8 @@ void AddBodyJson(const BodyMassProperties& body, const Pose& X_WF, json* out) {
   (*out)["principal_moments"] = Vec(body.principal_moments);
   (*out)["axes"] = Mat(X_WF.R_AB * body.principal_axes);
   (*out)["inertia_about_com"] = Mat(body.inertia_about_com);
-  const bool drawn = body.mass > 0 && std::isfinite(body.mass) && body.principal_moments.allFinite();
+  const bool drawn =
+      body.mass > 0 && std::isfinite(body.mass) && body.principal_moments.allFinite();
   (*out)["box_exists"] = body.equivalent_box.has_value();
   if (drawn) {
     (*out)["box"] = Vec(body.equivalent_box ? *body.equivalent_box
@@ -406,8 +403,8 @@ json ModelJson(const Model& model, const std::vector<Finding>& reader_findings,
     if (group.links.size() < 2) continue;
     const CompositeInertia composite = CalcCompositeInertia(model, group);
     const int root = group.links.front();
-    const BodyMassProperties body = MakeBodyMassProperties(
-        model.links[root].name, composite.mass, composite.p_RoScm_R, composite.I_SScm_R);
+    const BodyMassProperties body = MakeBodyMassProperties(model.links[root].name, composite.mass,
+                                                           composite.p_RoScm_R, composite.I_SScm_R);
     json entry = {{"root", model.links[root].name}, {"links", json::array()}};
     for (int member : group.links) entry["links"].push_back(model.links[member].name);
     AddBodyJson(body, X_WB[root], &entry);
@@ -438,11 +435,20 @@ std::string EscapeHtml(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -565,12 +571,18 @@ int RunView(const ViewArgs& args) {
   script += embedded::AsText(embedded::kOrbitControlsJs, embedded::kOrbitControlsJsSize);
   script += "\n";
   script += embedded::AsText(embedded::kViewJs, embedded::kViewJsSize);
-  const std::string page =
-      FillTemplate(embedded::AsText(embedded::kViewHtml, embedded::kViewHtmlSize),
-                   {{"TITLE", EscapeHtml(title)},
-                    {"CSS", std::string(embedded::AsText(embedded::kViewCss, embedded::kViewCssSize))},
-                    {"DATA", escaped},
-                    {"SCRIPT", script}});
+  // "</script" can only stand in a string, a comment or a regular expression of valid script,
+  // where "<\/script" means the same; the element cannot end early.
+  for (std::size_t at = script.find("</script"); at != std::string::npos;
+       at = script.find("</script", at)) {
+    script.insert(at + 1, "\\");
+  }
+  const std::string page = FillTemplate(
+      embedded::AsText(embedded::kViewHtml, embedded::kViewHtmlSize),
+      {{"TITLE", EscapeHtml(title)},
+       {"CSS", std::string(embedded::AsText(embedded::kViewCss, embedded::kViewCssSize))},
+       {"DATA", escaped},
+       {"SCRIPT", script}});
   if (!WriteOutput(args.output, page)) return kExitError;
   return failed ? kExitError : kExitOk;
 }

@@ -1,5 +1,5 @@
 // The script of the `massprops view` page (after three.js r111 and its OrbitControls in the same
-// <script>). It reads the JSON block #massprops-data (written by tools/view_command.cc; schema in
+// script element). It reads the JSON block #massprops-data (written by tools/view_command.cc; schema in
 // docs/view.md) and draws, in the model frame (the root link's frame, z up): each link's collision
 // geometry, its equivalent uniform box or ellipsoid at its center of mass along its principal
 // axes, COM markers, and on demand the welded groups' composite boxes. The link list, the details
@@ -7,7 +7,9 @@
 (function () {
   'use strict';
 
+  var timing = { script: performance.now() };
   var data = JSON.parse(document.getElementById('massprops-data').textContent);
+  timing.data = performance.now();
   var SEVERITY_RANK = { note: 0, warning: 1, error: 2 };
 
   // ------------------------------------------------------------------ helpers
@@ -114,8 +116,7 @@
     var parts = [];
     data.models.forEach(function (m) {
       parts.push(el('b', { text: m.name || '(unnamed)' }));
-      parts.push(' ' + m.links.length + ' links, total ' + fmt(m.total.mass) + ' kg, COM ' +
-                 fmtVec(m.total.com) + ' m (' + (m.root_link || 'root') + ' frame)  ');
+      parts.push(' · ' + m.links.length + ' links · ' + fmt(m.total.mass) + ' kg · ');
     });
     var counts = countBySeverity(allFindings);
     parts.push(counts.error + ' errors, ' + counts.warning + ' warnings');
@@ -334,7 +335,7 @@
 
   function initScene() {
     readColors();
-    renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    renderer = new THREE.WebGLRenderer({ antialias: true });
     renderer.setPixelRatio(window.devicePixelRatio || 1);
     renderer.setClearColor(colors.background, 1);
     view.appendChild(renderer.domElement);
@@ -551,8 +552,10 @@
   }
 
   setupToolbar();
+  timing.dom = performance.now();
   if (webglAvailable()) {
     initScene();
+    timing.scene = performance.now();
     setupPicking();
     state.webgl = true;
   } else {
@@ -564,5 +567,9 @@
   window.addEventListener('resize', resize);
   select(null);
   render();
+  timing.drawn = performance.now();
+  state.timing = timing;
+  // Milliseconds from the start of navigation to a drawn page (for docs/view.md's timing).
+  state.load_ms = window.performance ? performance.now() : null;
   state.ready = true;
 })();
