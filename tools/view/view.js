@@ -23,6 +23,10 @@
   function fmtVec(v) {
     return v ? v.map(fmt).join('  ') : '—';
   }
+  function fmtShort(x) {
+    if (typeof x !== 'number' || !isFinite(x)) return '—';
+    return x === 0 ? '0' : Number(x.toPrecision(3)).toExponential().replace(/\.?0*e/, 'e').replace('e+0', '').replace(/e\+?/, 'e');
+  }
   function el(tag, attrs, children) {
     var node = document.createElement(tag);
     if (attrs) {
@@ -131,7 +135,7 @@
     var row = el('tr', { 'data-link': l.name, 'data-model': rec.model.name, class: rec.drawn ? '' : 'massless' }, [
       el('td', { text: name }),
       el('td', { class: 'num', text: fmt(l.mass) }),
-      el('td', { class: 'num', text: rec.drawn ? fmtVec(l.principal_moments) : '' }),
+      el('td', { class: 'num', text: rec.drawn ? l.principal_moments.map(fmtShort).join(' ') : '' }),
       el('td', {}, badges(l.findings))
     ]);
     row.addEventListener('click', function () { select(rec); });
@@ -327,6 +331,13 @@
     return object;
   }
 
+  // Every surface is drawn with one kind of material (Lambert, one side), so that the page
+  // compiles one surface shader program (slow in a software WebGL) besides the lines' one.
+  // COM markers: unlit, by emission only.
+  function flatMaterial(color) {
+    return new THREE.MeshLambertMaterial({ color: 0x000000, emissive: color });
+  }
+
   function boxMaterial(rec) {
     return new THREE.MeshLambertMaterial({
       color: severityColor(rec.severity), transparent: true, opacity: 0.45, depthWrite: false
@@ -356,7 +367,7 @@
     ['ok', 'warning', 'error'].forEach(function (sev) {
       var c = colors.geometry.clone().lerp(sev === 'ok' ? colors.geometry : severityColor(sev), 0.45);
       geometryMaterials[sev] = new THREE.MeshLambertMaterial({
-        color: c, transparent: true, opacity: 0.35, depthWrite: false, side: THREE.DoubleSide
+        color: c, transparent: true, opacity: 0.35, depthWrite: false
       });
     });
 
@@ -411,7 +422,7 @@
     var markerRadius = size * 0.008;
     records.forEach(function (rec) {
       if (!rec.drawn) return;
-      rec.com = new THREE.Mesh(unitSphereLowRes, new THREE.MeshBasicMaterial({ color: severityColor(rec.severity) }));
+      rec.com = new THREE.Mesh(unitSphereLowRes, flatMaterial(severityColor(rec.severity)));
       rec.com.scale.setScalar(markerRadius);
       rec.com.position.fromArray(rec.link.com);
       rec.com.userData.record = rec;
@@ -419,7 +430,7 @@
     });
     data.models.forEach(function (m) {
       if (!(m.total.mass > 0)) return;
-      var total = new THREE.Mesh(unitSphereLowRes, new THREE.MeshBasicMaterial({ color: colors.fg }));
+      var total = new THREE.Mesh(unitSphereLowRes, flatMaterial(colors.fg));
       total.scale.setScalar(markerRadius * 2.2);
       total.position.fromArray(m.total.com);
       comLayer.add(total);
