@@ -35,6 +35,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
@@ -109,8 +110,17 @@ class ViewPageTest(unittest.TestCase):
         robots = os.path.join(ARGS.corpus, "example-robot-data", "robots")
         cls.clean = os.path.join(robots, "double_pendulum_description", "urdf", "double_pendulum.urdf")
         cls.errors = os.path.join(robots, "hyq_description", "robots", "hyq_no_sensors.urdf")
+        # Two 1 kg links 1 m apart (boxes of 0.1 m): neither hides the other in the view.
+        cls.apart = os.path.join(cls.tmp, "apart.urdf")
+        with open(cls.apart, "w") as f:
+            link = ('<link name="{0}"><inertial><mass value="1"/><inertia ixx="0.001" iyy="0.001" '
+                    'izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial></link>')
+            f.write('<robot name="apart">' + link.format("left") + link.format("right") +
+                    '<joint name="j" type="fixed"><origin xyz="0 1 0"/><parent link="left"/>'
+                    '<child link="right"/></joint></robot>')
         cls.pages = {}
-        for key, model in (("fixture", cls.fixture), ("clean", cls.clean), ("errors", cls.errors)):
+        for key, model in (("fixture", cls.fixture), ("clean", cls.clean), ("errors", cls.errors),
+                           ("apart", cls.apart)):
             out = os.path.join(cls.tmp, key + ".html")
             result = run_tool("view", model, "-o", out, "--package-path", ARGS.corpus)
             assert result.returncode == 0, result.stderr
@@ -204,6 +214,21 @@ class ViewPageTest(unittest.TestCase):
         self.driver.find_element(By.CSS_SELECTOR, 'tr[data-link="base"]').click()
         self.assertEqual(self.driver.execute_script("return window.massprops.selected"), "base")
         self.assertNotIn(findings[0]["message"], self.driver.find_element(By.ID, "details").text)
+
+    def test_clicking_a_box_in_the_view_selects_its_link_and_the_background_deselects(self):
+        self.open("apart")
+        view = self.driver.find_element(By.ID, "view")
+        size = view.size
+        for name in ("left", "right"):
+            x, y = self.driver.execute_script("return window.massprops.screenPosition(arguments[0])", name)
+            # ActionChains offsets are from the element's center.
+            ActionChains(self.driver).move_to_element_with_offset(
+                view, int(x - size["width"] / 2), int(y - size["height"] / 2)).click().perform()
+            self.assertEqual(self.driver.execute_script("return window.massprops.selected"), name)
+        # A corner of the view shows no link.
+        ActionChains(self.driver).move_to_element_with_offset(
+            view, -size["width"] // 2 + 3, -size["height"] // 2 + 3).click().perform()
+        self.assertIsNone(self.driver.execute_script("return window.massprops.selected"))
 
     def screenshot_stats(self, first, second):
         """Decodes two PNG screenshots in the browser: per image the number of distinct colours

@@ -99,6 +99,15 @@
     webgl: false,
     ready: false,
     scene: { boxes: 0, ellipsoids: 0, geometries: 0, meshes: 0, geometry_errors: 0 },
+    // Where a link's center of mass is drawn, in CSS pixels from the view's top-left corner
+    // (null without WebGL or for a link not drawn): for tests that click in the view.
+    screenPosition: function (name) {
+      var rec = records.filter(function (r) { return r.link.name === name && r.drawn; })[0];
+      if (!rec || !renderer) return null;
+      var v = new THREE.Vector3().fromArray(rec.link.com).project(camera);
+      var r = renderer.domElement.getBoundingClientRect();
+      return [(v.x + 1) / 2 * r.width, (1 - v.y) / 2 * r.height];
+    },
     select: function (name, model) {
       var rec = records.filter(function (r) {
         return r.link.name === name && (model === undefined || r.model.name === model);
