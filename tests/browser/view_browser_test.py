@@ -230,6 +230,19 @@ class ViewPageTest(unittest.TestCase):
             view, -size["width"] // 2 + 3, -size["height"] // 2 + 3).click().perform()
         self.assertIsNone(self.driver.execute_script("return window.massprops.selected"))
 
+    def test_dark_system_theme_gives_a_dark_page(self):
+        body = "return getComputedStyle(document.body).backgroundColor"
+        self.open("fixture")
+        self.assertEqual(self.driver.execute_script(body), "rgb(255, 255, 255)")  # view.css light
+        self.driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {
+            "features": [{"name": "prefers-color-scheme", "value": "dark"}]})
+        try:
+            self.open("fixture")
+            self.assertEqual(self.driver.execute_script(body), "rgb(13, 17, 23)")  # #0d1117
+            self.assertEqual(page_logs(self.driver), [])
+        finally:
+            self.driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {"features": []})
+
     def screenshot_stats(self, first, second):
         """Decodes two PNG screenshots in the browser: per image the number of distinct colours
         (4 bits per channel) and the fraction of pixels unlike the corner pixel (the background);
