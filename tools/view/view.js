@@ -347,6 +347,17 @@
     return new THREE.MeshLambertMaterial({ color: 0x000000, emissive: color });
   }
 
+  // The box of a drawn object: from its geometry's box (8 corners) for a mesh, rather than
+  // three's expandByObject, which visits every vertex.
+  function expandBounds(bounds, object) {
+    if (object.isMesh) {
+      if (!object.geometry.boundingBox) object.geometry.computeBoundingBox();
+      bounds.union(object.geometry.boundingBox.clone().applyMatrix4(object.matrixWorld));
+    } else {
+      bounds.expandByObject(object);
+    }
+  }
+
   function boxMaterial(rec) {
     return new THREE.MeshLambertMaterial({
       color: severityColor(rec.severity), transparent: true, opacity: 0.45, depthWrite: false
@@ -402,7 +413,7 @@
         pickables.push(object);
         rec.geometry.push(object);
         state.scene.geometries += 1;
-        bounds.expandByObject(object);
+        expandBounds(bounds, object);
       });
       if (!rec.drawn) return;
       rec.material = boxMaterial(rec);
@@ -421,7 +432,7 @@
       ellipsoidsLayer.add(rec.ellipsoid);
       state.scene.ellipsoids += 1;
       pickables.push(rec.box, rec.ellipsoid);
-      bounds.expandByObject(rec.box);
+      expandBounds(bounds, rec.box);
     });
     if (bounds.isEmpty()) bounds.set(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(0.5, 0.5, 0.5));
     var size = bounds.getSize(new THREE.Vector3()).length() || 1;
