@@ -137,8 +137,7 @@ bool Reader::ParseDom(const std::string& xml, XMLDocument* doc) {
 }
 
 // `<!-- massprops: ignore rule-id [rule-id...] -->` anywhere inside the link.
-void Reader::CollectIgnoreComments(const XMLNode* node, const std::string& link,
-                                   IndexedLink* out) {
+void Reader::CollectIgnoreComments(const XMLNode* node, const std::string& link, IndexedLink* out) {
   for (const XMLNode* child = node->FirstChild(); child != nullptr; child = child->NextSibling()) {
     if (const tinyxml2::XMLComment* comment = child->ToComment()) {
       std::string_view text(comment->Value());
@@ -583,7 +582,8 @@ void Reader::ReportNotLoadable(const std::vector<std::string>& errors) {
     // names the element, and the message before it says what in it was wrong.
     reason = said.back();
     line = LineOfNamed(reason);
-    const bool wrapper = reason.rfind("Malformed", 0) == 0 || reason.rfind("Could not parse", 0) == 0;
+    const bool wrapper =
+        reason.rfind("Malformed", 0) == 0 || reason.rfind("Could not parse", 0) == 0;
     if (wrapper && said.size() >= 2) reason += ": " + said[said.size() - 2];
   }
   ReadFinding finding;
@@ -606,15 +606,16 @@ std::optional<double> LenientNumber(std::string_view text) {
   return value;
 }
 
-// Three numbers separated by white space.
+// Three numbers separated by white space or commas ("0.07, 0, -0.69").
 std::optional<Eigen::Vector3d> LenientVector(std::string_view text) {
+  const auto separator = [](char c) { return IsSpace(c) || c == ','; };
   Eigen::Vector3d v;
   int count = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
-    while (pos < text.size() && IsSpace(text[pos])) ++pos;
+    while (pos < text.size() && separator(text[pos])) ++pos;
     const std::size_t start = pos;
-    while (pos < text.size() && !IsSpace(text[pos])) ++pos;
+    while (pos < text.size() && !separator(text[pos])) ++pos;
     if (pos == start) break;
     const std::optional<double> number = LenientNumber(text.substr(start, pos - start));
     if (!number || count == 3) return std::nullopt;
@@ -689,8 +690,9 @@ class LenientReader {
     finding.rule = kInertialUnreadable;
     finding.link = link->name;
     finding.location = Loc(element);
-    finding.message = "cannot read " + what + " of link '" + link->name +
-                      "' as a number; its mass properties are not checked";
+    finding.message = "neither ROS's URDF parser nor a lenient reading can read " + what +
+                      " of link '" + link->name +
+                      "' as numbers; its mass properties are not checked";
     result_->findings.push_back(std::move(finding));
     link->inertial.reset();
     link->inertial_unreadable = true;
@@ -754,8 +756,8 @@ class LenientReader {
           if (text == nullptr) continue;
           const std::optional<double> value = LenientNumber(text);
           if (!value) {
-            Unreadable(&link, inertia, std::string("<inertia ") + attribute + "=" + Quote(text) +
-                                           ">");
+            Unreadable(&link, inertia,
+                       std::string("<inertia ") + attribute + "=" + Quote(text) + ">");
             return link;
           }
           *target = *value;
@@ -850,8 +852,9 @@ class LenientReader {
     } else {
       result_->warnings.push_back(
           ReadError{Loc(origin), "<origin> of joint '" + joint.name + "'",
-                    "cannot read " + what + "; the joint is taken at the identity pose, so "
-                    "composite inertias across it are not what the author meant"});
+                    "cannot read " + what +
+                        "; the joint is taken at the identity pose, so "
+                        "composite inertias across it are not what the author meant"});
     }
     const XMLElement* axis = e->FirstChildElement("axis");
     const char* xyz = axis != nullptr ? axis->Attribute("xyz") : nullptr;
@@ -859,9 +862,9 @@ class LenientReader {
         joint.type != Joint::Type::kFloating) {
       const std::optional<Eigen::Vector3d> v = LenientVector(xyz);
       if (!v) {
-        result_->warnings.push_back(ReadError{Loc(axis), "<axis> of joint '" + joint.name + "'",
-                                              "cannot read xyz=" + Quote(xyz) +
-                                                  "; the URDF default (1, 0, 0) is used"});
+        result_->warnings.push_back(
+            ReadError{Loc(axis), "<axis> of joint '" + joint.name + "'",
+                      "cannot read xyz=" + Quote(xyz) + "; the URDF default (1, 0, 0) is used"});
       } else if (v->norm() > 0) {
         joint.axis = *v / v->norm();
       } else {

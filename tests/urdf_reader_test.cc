@@ -1,10 +1,11 @@
 // Tests of the URDF reader (include/massprops/urdf_reader.h) on small fixtures written for them
-// (testdata/urdf/) and on inline texts. The model comes from urdfdom (urdf::parseURDF); what urdfdom
-// does with each case is quoted from its source (urdfdom 3.0.1, urdf_parser/src/{model,link,joint,
-// pose}.cpp) in the test's comment. Expected line numbers are those of the fixtures as written
-// (hand-counted); expected numbers are the ones written in the fixtures; rotations are worked out
-// by hand from the URDF convention (rpy = fixed-axis roll about x, then pitch about y, then yaw
-// about z, i.e. R = Rz(yaw)·Ry(pitch)·Rx(roll); URDF XML specification, <origin> element).
+// (testdata/urdf/) and on inline texts. The model comes from urdfdom (urdf::parseURDF); what
+// urdfdom does with each case is quoted from its source (urdfdom 3.0.1,
+// urdf_parser/src/{model,link,joint, pose}.cpp) in the test's comment. Expected line numbers are
+// those of the fixtures as written (hand-counted); expected numbers are the ones written in the
+// fixtures; rotations are worked out by hand from the URDF convention (rpy = fixed-axis roll about
+// x, then pitch about y, then yaw about z, i.e. R = Rz(yaw)·Ry(pitch)·Rx(roll); URDF XML
+// specification, <origin> element).
 
 #include "massprops/urdf_reader.h"
 
@@ -268,8 +269,8 @@ TEST(UrdfReaderTest, AFileUrdfdomLoadsHasNoFindings) {
 TEST(UrdfReaderTest, NumbersUrdfdomCannotReadMakeTheInertialUnreadableWithTheText) {
   // urdfdom accepts the file (model.cpp ignores parseLink's result) but keeps a partly read
   // <inertial>: an error finding on that link, quoting the text; the other links are kept.
-  const ReadResult result = Read(TwoLinks("<inertial><mass value=\"1.0abc\"/>" +
-                                          std::string(kUnitInertia) + "</inertial>"));
+  const ReadResult result = Read(
+      TwoLinks("<inertial><mass value=\"1.0abc\"/>" + std::string(kUnitInertia) + "</inertial>"));
   ASSERT_TRUE(result.ok()) << AllErrors(result);
   ASSERT_EQ(result.models.size(), 1u);
   const std::vector<ReadFinding> f = FindingsOf(result, "inertial-unreadable");
@@ -317,17 +318,18 @@ TEST(UrdfReaderTest, EveryInertialTextUrdfdomRefusesIsNamed) {
     EXPECT_TRUE(result.models.at(0).links.at(1).inertial_unreadable) << inertial;
   }
   // Spaces around the numbers of a vector are fine for urdfdom.
-  const ReadResult spaces = Read(TwoLinks("<inertial><origin xyz=\"  1  2 3 \"/><mass value=\"1\"/>" +
-                                          std::string(kUnitInertia) + "</inertial>"));
+  const ReadResult spaces =
+      Read(TwoLinks("<inertial><origin xyz=\"  1  2 3 \"/><mass value=\"1\"/>" +
+                    std::string(kUnitInertia) + "</inertial>"));
   EXPECT_TRUE(spaces.findings.empty());
   EXPECT_EQ(spaces.models.at(0).links.at(1).inertial->X_BBi.p_AB, Eigen::Vector3d(1, 2, 3));
 }
 
 TEST(UrdfReaderTest, ValuesUrdfdomAcceptsAreKeptForTheChecks) {
   // Negative and zero masses, a zero axis: urdfdom reads them; the checks judge them.
-  const ReadResult result = Read(TwoLinks(
-      "<inertial><mass value=\"-2\"/>" + std::string(kUnitInertia) + "</inertial>",
-      "<axis xyz=\"0 0 0\"/><limit effort=\"1\" velocity=\"1\"/>", "revolute"));
+  const ReadResult result =
+      Read(TwoLinks("<inertial><mass value=\"-2\"/>" + std::string(kUnitInertia) + "</inertial>",
+                    "<axis xyz=\"0 0 0\"/><limit effort=\"1\" velocity=\"1\"/>", "revolute"));
   ASSERT_TRUE(result.ok()) << AllErrors(result);
   EXPECT_TRUE(result.findings.empty());
   const Model& model = result.models.at(0);
@@ -378,8 +380,9 @@ TEST(UrdfReaderTest, DroppedVisualsAndMaterialsSayNothing) {
 TEST(UrdfReaderTest, UrdfdomMessagesAreNeverPrinted) {
   testing::internal::CaptureStderr();
   testing::internal::CaptureStdout();
-  Read("<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/></geometry>"
-       "<material/></visual></link><joint name=\"j\" type=\"spherical\"/></robot>");
+  Read(
+      "<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/></geometry>"
+      "<material/></visual></link><joint name=\"j\" type=\"spherical\"/></robot>");
   const std::string out = testing::internal::GetCapturedStdout();
   const std::string err = testing::internal::GetCapturedStderr();
   EXPECT_EQ(out, "");
@@ -409,15 +412,16 @@ TEST(UrdfReaderTest, TheCallersConsoleHandlerAndLevelAreRestored) {
 }
 
 TEST(UrdfReaderTest, ReadsFromSeveralThreadsAtOnce) {
-  const std::string xml = TwoLinks("<inertial><mass value=\"3\"/>" + std::string(kUnitInertia) +
-                                   "</inertial>");
+  const std::string xml =
+      TwoLinks("<inertial><mass value=\"3\"/>" + std::string(kUnitInertia) + "</inertial>");
   std::vector<std::thread> threads;
   std::vector<double> masses(8, 0);
   for (std::size_t t = 0; t < masses.size(); ++t) {
     threads.emplace_back([&, t] {
       for (int k = 0; k < 20; ++k) {
-        const ReadResult r = Read(t % 2 == 0 ? xml : "<robot name=\"r\"><link name=\"a\"/>"
-                                                     "<link name=\"b\"/></robot>");
+        const ReadResult r = Read(t % 2 == 0 ? xml
+                                             : "<robot name=\"r\"><link name=\"a\"/>"
+                                               "<link name=\"b\"/></robot>");
         if (t % 2 == 0) masses[t] = r.models.at(0).links.at(1).inertial->mass;
         if (t % 2 == 1) masses[t] = static_cast<double>(r.findings.size());
       }
@@ -442,7 +446,8 @@ TEST(UrdfReaderTest, ADrakeStyleFileIsNotLoadableButItsInertialsAreRead) {
       "<collision><geometry><capsule radius=\"0.1\" length=\"1\"/></geometry></collision>\n"
       "</link>\n"
       "<joint name=\"shoulder\" type=\"revolute\">\n"
-      "<parent link=\"world\"/><child link=\"arm\"/><origin xyz=\"1 2 3\" rpy=\"0 0 1.5707963267948966\"/>\n"
+      "<parent link=\"world\"/><child link=\"arm\"/><origin xyz=\"1 2 3\" rpy=\"0 0 "
+      "1.5707963267948966\"/>\n"
       "<axis xyz=\"0 0 2\"/><limit lower=\"-1\" upper=\"1\" effort=\"5\"/>\n"
       "</joint>\n"
       "</robot>\n";
@@ -551,14 +556,14 @@ TEST(UrdfReaderTest, EveryReasonUrdfdomRefusesIsAFindingAtTheElementItNames) {
 TEST(UrdfReaderTest, TheLenientReadingKeepsATreeOfTheFirstDefinitions) {
   // Duplicate names keep the first; a second parent joint and a joint closing a loop are left
   // out, so that the checks always see a forest.
-  const ReadResult result =
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>"
-           "<link name=\"a\"><inertial><mass value=\"9\"/></inertial></link>"
-           "<joint name=\"ab\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
-           "<joint name=\"bc\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>"
-           "<joint name=\"ac\" type=\"fixed\"><parent link=\"a\"/><child link=\"c\"/></joint>"
-           "<joint name=\"ca\" type=\"fixed\"><parent link=\"c\"/><child link=\"a\"/></joint>"
-           "</robot>");
+  const ReadResult result = Read(
+      "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>"
+      "<link name=\"a\"><inertial><mass value=\"9\"/></inertial></link>"
+      "<joint name=\"ab\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
+      "<joint name=\"bc\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>"
+      "<joint name=\"ac\" type=\"fixed\"><parent link=\"a\"/><child link=\"c\"/></joint>"
+      "<joint name=\"ca\" type=\"fixed\"><parent link=\"c\"/><child link=\"a\"/></joint>"
+      "</robot>");
   ASSERT_EQ(result.models.size(), 1u);
   const Model& model = result.models[0];
   ASSERT_EQ(model.links.size(), 3u);

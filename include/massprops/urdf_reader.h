@@ -3,8 +3,10 @@
 /// Reading URDF into a massprops Model through urdfdom (ROS's URDF parser, `urdf::parseURDF`), so
 /// that massprops judges exactly the model that robot_state_publisher, MoveIt and the URDF
 /// importers of Gazebo and Drake load. A light tinyxml2 index of the same text adds the line of
-/// every <link>, <joint>, <inertial>, <mass>, <inertia>, <origin>, <collision> and <visual>, and the
-/// `<!-- massprops: ignore ... -->` comments of each link; the index decides nothing about validity.
+/// every <link>, <joint>, <inertial>, <mass>, <inertia>, <origin>, <collision> and <visual>, and
+/// the
+/// `<!-- massprops: ignore ... -->` comments of each link; the index decides nothing about
+/// validity.
 ///
 /// What urdfdom says while it reads (through console_bridge) is captured, never printed:
 /// - urdfdom refuses the file: a ReadFinding "urdf-not-loadable" quoting urdfdom's reason, located
