@@ -661,6 +661,7 @@ class LenientReader {
       return i;
     };
     std::vector<bool> has_parent(model.links.size(), false);
+    std::vector<bool> has_link_parent(model.links.size(), false);
     for (const XMLElement* e = robot->FirstChildElement("joint"); e != nullptr;
          e = e->NextSiblingElement("joint")) {
       std::optional<Joint> joint = ReadJoint(e);
@@ -672,12 +673,14 @@ class LenientReader {
         const int a = find(parent->second), b = find(child->second);
         if (a == b) continue;  // would close a loop
         set[b] = a;
+        has_link_parent[child->second] = true;
       }
       has_parent[child->second] = true;
       model.joints.push_back(std::move(*joint));
     }
+    // As for SDF: the first link that no joint from another link has as child.
     for (std::size_t i = 0; i < model.links.size() && model.root_link.empty(); ++i) {
-      if (!has_parent[i]) model.root_link = model.links[i].name;
+      if (!has_link_parent[i]) model.root_link = model.links[i].name;
     }
     return model;
   }
