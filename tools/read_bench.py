@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """`massprops check FILE` end to end against urdf::parseURDF alone on the same file, one process
-per run, on chains of 1 000, 10 000 and 100 000 links (tools/gen_chain.py): wall time (best of
-RUNS) and peak resident set of each process. Prints the Markdown table of docs/urdf.md.
+per run, on chains of 1 000, 10 000 and 100 000 links (tools/gen_chain.py): CPU time (user +
+system, best of RUNS; on a shared machine it is much steadier than wall time) and peak resident
+set of each process. Prints the Markdown table of docs/urdf.md.
 
 Usage: tools/read_bench.py [BUILD_DIR] [RUNS]   (BUILD_DIR defaults to build/, RUNS to 3)
 Needs BUILD_DIR/massprops and BUILD_DIR/bench/read_bench (`read_bench --once urdfdom FILE` runs
@@ -10,7 +11,6 @@ import os
 import subprocess
 import sys
 import tempfile
-import time
 
 here = os.path.dirname(os.path.abspath(__file__))
 build = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(here, "..", "build")
@@ -20,13 +20,12 @@ bench = os.path.join(build, "bench", "read_bench")
 
 
 def measure(cmd):
-    """Best wall time (s) and the largest peak resident set (KiB) over `runs` runs."""
+    """Best CPU time (s) and the largest peak resident set (KiB) over `runs` runs."""
     best, peak = float("inf"), 0
     for _ in range(runs):
-        start = time.perf_counter()
         proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         _, status, usage = os.wait4(proc.pid, 0)
-        elapsed = time.perf_counter() - start
+        elapsed = usage.ru_utime + usage.ru_stime
         code = os.waitstatus_to_exitcode(status)
         if code not in (0, 1):
             sys.exit(f"{' '.join(cmd)} exited with {code}")
@@ -34,7 +33,7 @@ def measure(cmd):
     return best, peak
 
 
-print("| links | MB | urdfdom `parseURDF` | `massprops check` | time ratio | urdfdom peak | "
+print("| links | MB | urdfdom `parseURDF` (CPU) | `massprops check` (CPU) | time ratio | urdfdom peak | "
       "`massprops check` peak | memory ratio |")
 print("|---:|---:|---:|---:|---:|---:|---:|---:|")
 with tempfile.TemporaryDirectory() as tmp:
