@@ -40,10 +40,9 @@ std::string DescribeShape(const Geometry& g) {
 
 }  // namespace
 
-std::optional<AutoInertiaResult> CalcAutoInertial(const std::vector<AutoInertiaCollision>& collisions,
-                                                  std::optional<double> mass,
-                                                  const MeshResolveOptions& mesh_options,
-                                                  std::string* error) {
+std::optional<AutoInertiaResult> CalcAutoInertial(
+    const std::vector<AutoInertiaCollision>& collisions, std::optional<double> mass,
+    const MeshResolveOptions& mesh_options, std::string* error) {
   auto fail = [&](const std::string& why) -> std::optional<AutoInertiaResult> {
     if (error) *error = why;
     return std::nullopt;
@@ -77,8 +76,8 @@ std::optional<AutoInertiaResult> CalcAutoInertial(const std::vector<AutoInertiaC
     first_moment += part.mass * part.p_BoPcm_B;
     parts.push_back(part);
     if (!list.empty()) list += ", ";
-    list += "'" + c.name + "' " + DescribeShape(c.geometry) + " at " + Num(c.density) +
-            " kg/m³ (" + c.density_source + ")";
+    list += "'" + c.name + "' " + DescribeShape(c.geometry) + " at " + Num(c.density) + " kg/m³ (" +
+            c.density_source + ")";
   }
   if (!(total > 0) || !std::isfinite(total)) {
     return fail("the collisions give a total mass of " + Num(total) + " kg");

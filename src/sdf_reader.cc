@@ -23,16 +23,17 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
-#include <set>
 #include <unordered_set>
 #include <utility>
 
@@ -389,8 +390,15 @@ class Reader {
       } else if (tag == "frame") {
         ReadFrame(c, kWorld, ctx);
       } else if (tag == "joint") {
-        Warning(ctx.file, c, "<joint> '" + Attr(c, "name") + "'",
-                "joints directly in a <world> are not read (only joints of models)");
+        if (ctx.version.AtLeast(1, 10)) {  // World joints: SDF 1.10 (sdf/1.10/world.sdf).
+          const size_t before = nodes_.size();
+          ReadJoint(c, kWorld, ctx);
+          if (nodes_.size() > before) world_joints_.push_back(static_cast<int>(before));
+        } else {
+          Warning(ctx.file, c, "<joint> '" + Attr(c, "name") + "'",
+                  "joints directly in a <world> exist from SDF 1.10; not read in SDF " +
+                      std::to_string(ctx.version.major) + "." + std::to_string(ctx.version.minor));
+        }
       }
     }
   }
@@ -687,7 +695,13 @@ class Reader {
     return kNotFound;
   }
 
-  void BuildModel(int top);
+  void BuildModels();
+  void BuildModel(const std::vector<int>& tops, const std::vector<int>& world_joints);
+  int TopOf(int i) const {
+    if (i < 0) return i;
+    while (nodes_[i].scope != kWorld) i = nodes_[i].scope;
+    return i;
+  }
   void ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link);
   bool ResolveInLink(const XMLElement* pose, int link_index, int top, const Pose& X_TB,
                      const Context& ctx, const std::string& what, Pose* X_BF);
@@ -724,6 +738,8 @@ class Reader {
   std::unordered_map<std::string, std::string> canonical_;
   std::unordered_map<std::string, std::unique_ptr<XMLDocument>> included_docs_;
   std::unique_ptr<MeshCache> mesh_cache_;
+  std::string current_model_name_;  // The Model being built (for findings).
+  std::vector<int> world_joints_;   // <joint> nodes directly in a <world> (SDF 1.10+).
   std::string top_file_;
   std::vector<std::string> search_paths_;
   ReadResult result_;
@@ -958,8 +974,8 @@ int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx
   const std::string saved_file = include_file_;
   include_version_ = ctx.version;
   include_file_ = ctx.file;
-  const int index =
-      merged ? ReadMergedModel(model, scope, inner, include) : ReadModel(model, scope, inner, include);
+  const int index = merged ? ReadMergedModel(model, scope, inner, include)
+                           : ReadModel(model, scope, inner, include);
   include_version_ = saved_version;
   include_file_ = saved_file;
   include_sites_.pop_back();
@@ -973,8 +989,8 @@ std::string Reader::OutermostInclude() const {
   std::string text = "<include> '" + s.uri + "' at " + s.file + ":" + std::to_string(s.line);
   if (include_sites_.size() > 1) {
     const IncludeSite& last = include_sites_.back();
-    text += " (innermost: '" + last.uri + "' at " + last.file + ":" + std::to_string(last.line) +
-            ")";
+    text +=
+        " (innermost: '" + last.uri + "' at " + last.file + ":" + std::to_string(last.line) + ")";
   }
   return text;
 }
@@ -1001,8 +1017,8 @@ void Reader::ReportUnresolvedInclude(const XMLElement* include, int scope, const
   f.model = top == kWorld ? "" : nodes_[top].name;
   f.location = {ctx.file, include->GetLineNum(), 0};
   const bool remote = uri.rfind("http://", 0) == 0 || uri.rfind("https://", 0) == 0;
-  f.message = "<include> '" + uri + "' cannot be resolved: " + why +
-              "; the model '" + name + "' is not checked, and joints naming its links are "
+  f.message = "<include> '" + uri + "' cannot be resolved: " + why + "; the model '" + name +
+              "' is not checked, and joints naming its links are "
               "left out. " +
               (remote ? "Download the model (e.g. `gz fuel download -u URL`) and point massprops "
                         "at the folder that holds it"
@@ -1030,7 +1046,7 @@ void Reader::ReportUnresolvedReference(int i, const std::string& ref, const std:
   while (nodes_[top].scope != kWorld) top = nodes_[top].scope;
   ReadFinding f;
   f.rule = "include-unresolved";
-  f.model = nodes_[top].name;
+  f.model = current_model_name_.empty() ? nodes_[top].name : current_model_name_;
   f.location = n.location;
   f.message = Describe(n) + " names '" + ref + "', which lies in the unresolved <include> " +
               which + "; it is left out";
@@ -1116,8 +1132,8 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
   const std::string lname = "'" + link->name + "'";
   const XMLElement* in = e->FirstChildElement("inertial");
   const std::string auto_attr = in ? Attr(in, "auto") : "";
-  const bool is_auto = in != nullptr && ctx.version.AtLeast(1, 11) &&
-                       (auto_attr == "true" || auto_attr == "1");
+  const bool is_auto =
+      in != nullptr && ctx.version.AtLeast(1, 11) && (auto_attr == "true" || auto_attr == "1");
   if (in != nullptr && !is_auto) {
     // A bad number or pose here costs this link only (inertial-unreadable), not the file.
     diversion_ = Diversion();
@@ -1126,8 +1142,7 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
     inertial.location = {ctx.file, in->GetLineNum(), 0};
     const XMLElement* pose = in->FirstChildElement("pose");
     if (pose != nullptr) inertial.pose_location = {ctx.file, pose->GetLineNum(), 0};
-    ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname,
-                  &inertial.X_BBi);
+    ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname, &inertial.X_BBi);
     const XMLElement* mass = in->FirstChildElement("mass");
     if (mass != nullptr) inertial.mass_location = {ctx.file, mass->GetLineNum(), 0};
     // SDF defaults (sdf/1.x/inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
@@ -1149,7 +1164,7 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
       link->inertial_unreadable = true;
       ReadFinding f;
       f.rule = "inertial-unreadable";
-      f.model = nodes_[top].name;
+      f.model = current_model_name_;
       f.link = link->name;
       f.location = diversion_.location;
       f.message = diversion_.element + ": " + diversion_.message +
@@ -1215,7 +1230,7 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
   }
 }
 
-void Reader::ReadAutoInertial(const XMLElement* in, int link_index, int top, const Pose& X_TB,
+void Reader::ReadAutoInertial(const XMLElement* in, int link_index, int /*top*/, const Pose& X_TB,
                               const Context& ctx, Link* link) {
   (void)X_TB;
   const XMLElement* e = nodes_[link_index].element;
@@ -1224,7 +1239,7 @@ void Reader::ReadAutoInertial(const XMLElement* in, int link_index, int top, con
     link->inertial_unreadable = true;
     ReadFinding f;
     f.rule = "inertial-unreadable";
-    f.model = nodes_[top].name;
+    f.model = current_model_name_;
     f.link = link->name;
     f.location = where;
     f.message = "<inertial auto=\"true\"> of link " + lname + " cannot be computed: " + why +
@@ -1294,11 +1309,11 @@ void Reader::ReadAutoInertial(const XMLElement* in, int link_index, int top, con
   link->inertial = inertial;
   ReadFinding f;
   f.rule = "inertial-auto";
-  f.model = nodes_[top].name;
+  f.model = current_model_name_;
   f.link = link->name;
   f.location = in_location;
-  f.message = "link " + lname + ": <inertial auto=\"true\"> (SDF 1.11) computed as " +
-              computed->summary;
+  f.message =
+      "link " + lname + ": <inertial auto=\"true\"> (SDF 1.11) computed as " + computed->summary;
   f.values = {{"mass", inertial.mass},
               {"com_x", inertial.X_BBi.p_AB.x()},
               {"com_y", inertial.X_BBi.p_AB.y()},
@@ -1324,24 +1339,85 @@ Joint::Type JointType(const std::string& t) {
   return Joint::Type::kOther;  // revolute2, gearbox, ...
 }
 
-void Reader::BuildModel(int top) {
+/// Groups the top-level models joined by world joints (SDF 1.10+) and builds one Model per group:
+/// a lone model as before; models joined by a world joint as one Model named "A+B" whose links
+/// and joints keep their scoped names ("A::link") and whose frame is the world's. A world joint
+/// whose parent is "world" (or in the child's own model) goes into the child's model.
+void Reader::BuildModels() {
+  std::unordered_map<int, int> group;  // top -> representative top
+  for (int top : top_models_) group[top] = top;
+  std::function<int(int)> find = [&](int t) {
+    while (group[t] != t) t = group[t] = group[group[t]];
+    return t;
+  };
+  std::vector<std::pair<int, int>> joint_child_top;  // (joint node, child's top)
+  for (int j : world_joints_) {
+    const Node& n = nodes_[j];
+    std::string which;
+    const int c = AttachedLink(Lookup(n.child, kWorld), 0);
+    const int p = n.parent == "world" ? kWorld : AttachedLink(Lookup(n.parent, kWorld), 0);
+    if (c < 0 || (n.parent != "world" && p < 0)) {
+      const std::string& bad = c < 0 ? n.child : n.parent;
+      if (InUnresolvedInclude(bad, kWorld, &which)) {
+        ReportUnresolvedReference(j, bad, which);
+      } else {
+        Error(n.location.file, n.element, Describe(n),
+              "the " + std::string(c < 0 ? "child" : "parent") + " '" + bad +
+                  "' is not a link, a model or a frame of the world");
+      }
+      continue;
+    }
+    const int ct = TopOf(c);
+    const int pt = p == kWorld ? kWorld : TopOf(p);
+    if (!group.count(ct) || (pt != kWorld && !group.count(pt))) continue;
+    if (pt != kWorld && find(pt) != find(ct)) group[find(pt)] = find(ct);
+    joint_child_top.emplace_back(j, ct);
+  }
+  if (!result_.errors.empty()) return;
+  std::vector<int> roots;
+  std::unordered_map<int, std::vector<int>> members, joints;
+  for (int top : top_models_) {
+    const int r = find(top);
+    if (!members.count(r)) roots.push_back(r);
+    members[r].push_back(top);
+  }
+  for (const auto& [j, ct] : joint_child_top) joints[find(ct)].push_back(j);
+  for (int r : roots) BuildModel(members[r], joints[r]);
+}
+
+void Reader::BuildModel(const std::vector<int>& tops, const std::vector<int>& world_joints) {
   const size_t errors_before = result_.errors.size();
+  const bool single = tops.size() == 1;
+  const int top = single ? tops[0] : kWorld;  // The model frame: the model's, or the world's.
   Model model;
   model.format = Model::Format::kSdf;
   model.file = top_file_;
-  const std::string prefix = nodes_[top].name + "::";
-  model.name = nodes_[top].name;
-  model.location = nodes_[top].location;
-  model.is_static = nodes_[top].is_static;
-  auto local_name = [&](int i) { return nodes_[i].name.substr(prefix.size()); };
-  auto inside = [&](int i) { return nodes_[i].name.rfind(prefix, 0) == 0; };
+  const std::string prefix = single ? nodes_[top].name + "::" : "";
+  model.is_static = true;
+  for (int t : tops) {
+    model.name += (model.name.empty() ? "" : "+") + nodes_[t].name;
+    model.is_static = model.is_static && nodes_[t].is_static;
+  }
+  model.location = nodes_[tops[0]].location;
+  current_model_name_ = model.name;
+  auto local_name = [&](int i) {
+    const std::string& name = nodes_[i].name;
+    return name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
+  };
+  std::vector<int> order;  // The nodes of the models, in file order (each contiguous).
+  for (int t : tops) {
+    const std::string own = nodes_[t].name + "::";
+    order.push_back(t);
+    for (int i = t + 1; i < static_cast<int>(nodes_.size()) && nodes_[i].name.rfind(own, 0) == 0;
+         ++i) {
+      order.push_back(i);
+    }
+  }
+  auto inside = [&](int i) { return std::find(tops.begin(), tops.end(), TopOf(i)) != tops.end(); };
 
-  std::unordered_map<int, Pose> X_TB;  // Link poses in the top model frame.
+  std::unordered_map<int, Pose> X_TB;  // Link poses in the model frame T.
   SdfModelFrames frames;
-  // The nodes of one top-level model are contiguous (read depth-first).
-  int end = top + 1;
-  while (end < static_cast<int>(nodes_.size()) && inside(end)) ++end;
-  for (int i = top; i < end; ++i) {
+  for (int i : order) {
     if (nodes_[i].kind != Node::Kind::kLink) continue;
     const std::optional<Pose> X = PoseInScope(i, top, 0);
     if (!X) continue;
@@ -1355,13 +1431,27 @@ void Reader::BuildModel(int top) {
   }
   // Every frame is resolved, used or not, so that cycles and dangling names are reported as
   // libsdformat reports them.
-  for (int i = top; i < end; ++i) Resolve(i, 0);
+  for (int i : order) Resolve(i, 0);
+  for (int j : world_joints) Resolve(j, 0);
   if (result_.errors.size() != errors_before) return;
-  std::optional<Pose> X_WT = PoseInScope(top, kWorld, 0);
+  std::optional<Pose> X_WT = single ? PoseInScope(top, kWorld, 0) : std::optional<Pose>(Pose());
   if (X_WT) frames.X_WM = *X_WT;
-  for (int i = top; i < end; ++i) {
+  // A frame's pose in T; for a frame outside the model (a world joint's) through the world.
+  auto pose_in_model = [&](int f) -> std::optional<Pose> {
+    if (f == kNotFound) return std::nullopt;
+    if (top == kWorld) return PoseInScope(f, kWorld, 0);
+    if (f != kWorld && TopOf(f) == top) return PoseInScope(f, top, 0);
+    const std::optional<Pose> X_WF = f == kWorld ? Pose() : PoseInScope(f, kWorld, 0);
+    if (!X_WF || !X_WT) return std::nullopt;
+    return X_WT->Inverse() * *X_WF;
+  };
+  std::vector<int> joint_nodes;
+  for (int i : order) {
+    if (nodes_[i].kind == Node::Kind::kJoint) joint_nodes.push_back(i);
+  }
+  joint_nodes.insert(joint_nodes.end(), world_joints.begin(), world_joints.end());
+  for (int i : joint_nodes) {
     const Node& n = nodes_[i];
-    if (n.kind != Node::Kind::kJoint) continue;
     Joint joint;
     joint.name = local_name(i);
     joint.location = n.location;
@@ -1407,7 +1497,8 @@ void Reader::BuildModel(int top) {
     int expressed_in = i;  // The joint frame.
     const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
     if (!e.empty()) {
-      expressed_in = Lookup(e == "__model__" && !n.merge_proxy.empty() ? n.merge_proxy : e, n.scope);
+      expressed_in =
+          Lookup(e == "__model__" && !n.merge_proxy.empty() ? n.merge_proxy : e, n.scope);
     }
     if (!n.version.AtLeast(1, 7) && axis != nullptr) {
       // The 1.6->1.7 converter maps use_parent_model_frame=true to expressed_in="__model__".
@@ -1416,8 +1507,7 @@ void Reader::BuildModel(int top) {
         expressed_in = n.scope;
       }
     }
-    const std::optional<Pose> X_TE =
-        expressed_in == kNotFound ? std::nullopt : PoseInScope(expressed_in, top, 0);
+    const std::optional<Pose> X_TE = pose_in_model(expressed_in);
     if (!X_TE) {
       Error(n.location.file, xyz, "<axis><xyz> of " + what,
             "the frame named by expressed_in is not found");
@@ -1439,7 +1529,7 @@ void Reader::BuildModel(int top) {
     if (j.parent != "world") children.insert(j.child);
   }
   auto is_child = [&](const std::string& name) { return children.count(name) > 0; };
-  const int canonical = AttachedLink(top, 0);
+  const int canonical = AttachedLink(tops[0], 0);
   if (canonical >= 0 && inside(canonical) && !is_child(local_name(canonical))) {
     model.root_link = local_name(canonical);
   } else {
@@ -1506,7 +1596,7 @@ ReadResult Reader::Read(const std::string& xml, const std::string& file_name,
     Warning(file_name, root, "<sdf>", "the file holds no <model>");
   }
   if (result_.errors.empty()) {
-    for (int top : top_models_) BuildModel(top);
+    BuildModels();
   }
   if (!result_.errors.empty()) {
     result_.models.clear();

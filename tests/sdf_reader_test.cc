@@ -265,12 +265,50 @@ TEST(SdfReaderTest, MergedIncludesPutTheirLinksJointsAndNestedIncludesIntoTheEnc
   ExpectPose(JointNamed(m, "wrist").X_PC, {0, 0.25, 0.5}, Rz90());
 }
 
+// SDF 1.10 world joints (sdf/1.10/world.sdf: <joint> in <world>, parent and child scoped names or
+// "world"). Hand-derived: the arm at z = 1, the gripper at z = 3; weld gives palm in hand's frame
+// at (0, 0, 2); anchor fixes the arm's canonical link (hand) to the world at (0, 0, 1).
+TEST(SdfReaderTest, WorldJointsJoinTheirModelsIntoOneModelWithScopedNames) {
+  std::vector<SdfModelFrames> frames;
+  const ReadResult r = ReadSdfFile(kDir + "/world_joint.sdf", FixtureOptions(), &frames);
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  ASSERT_EQ(r.models.size(), 1u);
+  const Model& m = r.models[0];
+  EXPECT_EQ(m.name, "arm+gripper");
+  ASSERT_EQ(m.links.size(), 2u);
+  EXPECT_EQ(m.links[0].name, "arm::hand");
+  EXPECT_EQ(m.links[1].name, "gripper::palm");
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  ExpectPose(frames[0].X_MB[1], {0, 0, 3}, I);  // the model frame is the world's
+  ASSERT_EQ(m.joints.size(), 2u);
+  const Joint& weld = JointNamed(m, "weld");
+  EXPECT_EQ(weld.parent, "arm::hand");
+  EXPECT_EQ(weld.child, "gripper::palm");
+  EXPECT_EQ(weld.type, Joint::Type::kFixed);
+  ExpectPose(weld.X_PC, {0, 0, 2}, I);
+  const Joint& anchor = JointNamed(m, "anchor");
+  EXPECT_EQ(anchor.parent, "world");
+  EXPECT_EQ(anchor.child, "arm::hand");
+  ExpectPose(anchor.X_PC, {0, 0, 1}, I);
+  EXPECT_EQ(anchor.location.line, 19);
+  // Before SDF 1.10 such a joint is not read, with a warning.
+  const ReadResult old = ReadSdfString(
+      "<sdf version='1.9'><world name='w'><model name='a'><link name='l'/></model>\n"
+      "<joint name='j' type='fixed'><parent>world</parent><child>a</child></joint>"
+      "</world></sdf>",
+      "old.sdf", FixtureOptions());
+  ASSERT_TRUE(old.ok());
+  EXPECT_TRUE(old.models.at(0).joints.empty());
+  ASSERT_EQ(old.warnings.size(), 1u);
+  EXPECT_EQ(old.warnings[0].location.line, 2);
+}
+
 TEST(SdfReaderTest, AnUnresolvedIncludeCostsOnlyWhatItNamesAndSaysHowToPointMasspropsAtIt) {
   const ReadResult r = ReadSdfFile(kDir + "/unresolved_include.sdf", FixtureOptions());
   ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
   ASSERT_EQ(r.models.size(), 1u);
   const Model& m = r.models[0];
-  EXPECT_EQ(m.links.size(), 2u);  // base and arm
+  EXPECT_EQ(m.links.size(), 2u);   // base and arm
   ASSERT_EQ(m.joints.size(), 1u);  // shoulder; grip names the missing model
   EXPECT_EQ(m.joints[0].name, "shoulder");
   ASSERT_EQ(r.findings.size(), 2u);
@@ -278,9 +316,9 @@ TEST(SdfReaderTest, AnUnresolvedIncludeCostsOnlyWhatItNamesAndSaysHowToPointMass
   EXPECT_EQ(r.findings[0].model, "robot");
   EXPECT_EQ(r.findings[0].location.file, kDir + "/unresolved_include.sdf");
   EXPECT_EQ(r.findings[0].location.line, 12);
-  for (const char* text : {"massprops_no_such_gripper", "--model-path", "SDF_PATH",
-                           "GZ_SIM_RESOURCE_PATH", "IGN_GAZEBO_RESOURCE_PATH",
-                           "models/massprops_no_such_gripper"}) {
+  for (const char* text :
+       {"massprops_no_such_gripper", "--model-path", "SDF_PATH", "GZ_SIM_RESOURCE_PATH",
+        "IGN_GAZEBO_RESOURCE_PATH", "models/massprops_no_such_gripper"}) {
     EXPECT_NE(r.findings[0].message.find(text), std::string::npos) << text;
   }
   EXPECT_EQ(r.findings[1].rule, "include-unresolved");

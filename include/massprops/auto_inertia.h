@@ -26,9 +26,9 @@ inline constexpr double kSdfDefaultDensity = 1000.0;
 
 /// One collision of an auto-inertial link.
 struct AutoInertiaCollision {
-  std::string name;     ///< The <collision> name attribute (for messages).
-  Geometry geometry;    ///< With X_BG, its pose in the link frame B.
-  double density = 0;   ///< kg/m³, already chosen (collision, link, or default).
+  std::string name;            ///< The <collision> name attribute (for messages).
+  Geometry geometry;           ///< With X_BG, its pose in the link frame B.
+  double density = 0;          ///< kg/m³, already chosen (collision, link, or default).
   std::string density_source;  ///< "collision", "inertial" or "default" (for messages).
 };
 
@@ -46,9 +46,8 @@ struct AutoInertiaResult {
 /// collision, a geometry cannot be computed (an unsupported shape, a mesh that cannot be read,
 /// a zero volume), a density is not positive and finite, or the total mass is zero. Never
 /// throws. Cost: about 100 flops per primitive; meshes linear in their triangles.
-std::optional<AutoInertiaResult> CalcAutoInertial(const std::vector<AutoInertiaCollision>& collisions,
-                                                  std::optional<double> mass,
-                                                  const MeshResolveOptions& mesh_options,
-                                                  std::string* error);
+std::optional<AutoInertiaResult> CalcAutoInertial(
+    const std::vector<AutoInertiaCollision>& collisions, std::optional<double> mass,
+    const MeshResolveOptions& mesh_options, std::string* error);
 
 }  // namespace massprops
