@@ -657,6 +657,8 @@ const std::vector<RuleInfo>& AllRules() {
        "A number of a link's <inertial> cannot be read; the other links are still checked."},
       {kIncludeUnresolved, Severity::kWarning, true,
        "An SDF <include> cannot be resolved; the rest of the file is still checked."},
+      {"inertial-auto", Severity::kNote, true,
+       "An SDF 1.11 <inertial auto=\"true\"> was computed from the link's collisions."},
   };
   // The geometry rules (geometry_checks.h) run only with --geometry; listed here so that every
   // rule id is known to the tool, the configuration file and SARIF.

@@ -23,17 +23,21 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
+
+#include "massprops/auto_inertia.h"
 
 namespace massprops {
 namespace {
@@ -77,6 +81,9 @@ struct Node {
   // kModel: the link and model nodes directly inside, in file order.
   std::vector<int> members;
   bool axis_in_model_frame_1_4 = false;  // kJoint of a top-level SDF 1.4 model.
+  // Read from a model merged into its parent (<include merge="true">): "__model__" of the merged
+  // model means this proxy frame of the parent scope.
+  std::string merge_proxy;
 };
 
 std::string Describe(const Node& node) {
@@ -142,7 +149,8 @@ Eigen::Matrix3d RotationFromRpy(double roll, double pitch, double yaw) {
 /// State of one read: the pose graph, the errors, the include stack.
 class Reader {
  public:
-  Reader(const SdfReadOptions& options, std::string top_file) : top_file_(std::move(top_file)) {
+  Reader(const SdfReadOptions& options, std::string top_file)
+      : options_(options), top_file_(std::move(top_file)) {
     search_paths_ = options.model_paths;
     if (options.use_environment) {
       for (const char* var :
@@ -166,11 +174,31 @@ class Reader {
     std::string file;
     Version version;
     int depth = 0;
+    std::string merge_proxy;  // Reading the children of a merged include (see Node).
+  };
+
+  // While a link's <inertial> is read, number and pose errors are diverted here: they cost the
+  // link (inertial-unreadable), not the file.
+  struct Diversion {
+    bool active = false;
+    bool failed = false;
+    SourceLocation location;
+    std::string element;
+    std::string message;
   };
 
   // ------------------------------------------------------------ errors
   void Error(const std::string& file, const XMLElement* e, const std::string& element,
              const std::string& message) {
+    if (diversion_.active) {
+      if (!diversion_.failed) {
+        diversion_.failed = true;
+        diversion_.location = {file, e ? e->GetLineNum() : 0, 0};
+        diversion_.element = element;
+        diversion_.message = message;
+      }
+      return;
+    }
     result_.errors.push_back(MakeError(file, e ? e->GetLineNum() : 0, element, message));
   }
   void Warning(const std::string& file, const XMLElement* e, const std::string& element,
@@ -194,8 +222,13 @@ class Reader {
       if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
       double value = 0;
       const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-      if (r.ec == std::errc::result_out_of_range) {
-        *why = "number '" + std::string(token) + "' is out of the range of double";
+      // Magnitudes beyond the largest double, and below the smallest normal one (1e-400 and
+      // subnormals such as 1e-310), are refused: libsdformat 12 (std::stod) rejects both.
+      if (r.ec == std::errc::result_out_of_range ||
+          (r.ec == std::errc() && std::fpclassify(value) == FP_SUBNORMAL)) {
+        *why = "number '" + std::string(token) +
+               "' is out of the range of double (beyond 1.8e308 or below 2.2e-308 in "
+               "magnitude)";
         return false;
       }
       if (r.ec != std::errc() || r.ptr != digits.data() + digits.size() || digits.empty()) {
@@ -296,6 +329,20 @@ class Reader {
   std::string Prefix(int scope) const { return scope == kWorld ? "" : nodes_[scope].name + "::"; }
 
   int AddNode(Node node, const Context& ctx) {
+    if (aborted_) return kNotFound;
+    if (include_stack_.size() > 1 && ++included_elements_ > options_.max_included_elements) {
+      aborted_ = true;
+      const IncludeSite& outer = include_sites_.front();
+      result_.errors.push_back(MakeError(
+          outer.file, outer.line, "<include> '" + outer.uri + "'",
+          "the includes bring in more than " + std::to_string(options_.max_included_elements) +
+              " elements (links, joints, frames, models; the limit max_included_elements): " +
+              OutermostInclude() + " expands without bound (models that include others " +
+              "several times grow exponentially); reading stopped at " + Describe(node) + " of " +
+              ctx.file));
+      return kNotFound;
+    }
+    if (!ctx.merge_proxy.empty()) ApplyMerge(&node, ctx.merge_proxy);
     const int index = static_cast<int>(nodes_.size());
     auto [it, inserted] = by_name_.emplace(node.name, index);
     if (!inserted) {
@@ -314,6 +361,23 @@ class Reader {
     return index;
   }
 
+  /// A node read from a model merged into the enclosing one: its references to the merged model's
+  /// frame ("__model__", or the default) name the proxy frame instead (libsdformat's
+  /// "_merged__NAME__model__").
+  static void ApplyMerge(Node* node, const std::string& proxy) {
+    node->merge_proxy = proxy;
+    for (std::string* ref : {&node->relative_to, &node->attached_to, &node->parent, &node->child}) {
+      if (*ref == "__model__") *ref = proxy;
+    }
+    if (node->relative_to.empty()) {
+      if (node->kind == Node::Kind::kLink || node->kind == Node::Kind::kModel) {
+        node->relative_to = proxy;
+      } else if (node->kind == Node::Kind::kFrame && node->attached_to.empty()) {
+        node->attached_to = proxy;
+      }
+    }
+  }
+
   void ReadWorld(const XMLElement* world, const Context& ctx) {
     for (const XMLElement* c = world->FirstChildElement(); c; c = c->NextSiblingElement()) {
       const std::string tag = c->Name();
@@ -326,8 +390,15 @@ class Reader {
       } else if (tag == "frame") {
         ReadFrame(c, kWorld, ctx);
       } else if (tag == "joint") {
-        Warning(ctx.file, c, "<joint> '" + Attr(c, "name") + "'",
-                "joints directly in a <world> are not read (only joints of models)");
+        if (ctx.version.AtLeast(1, 10)) {  // World joints: SDF 1.10 (sdf/1.10/world.sdf).
+          const size_t before = nodes_.size();
+          ReadJoint(c, kWorld, ctx);
+          if (nodes_.size() > before) world_joints_.push_back(static_cast<int>(before));
+        } else {
+          Warning(ctx.file, c, "<joint> '" + Attr(c, "name") + "'",
+                  "joints directly in a <world> exist from SDF 1.10; not read in SDF " +
+                      std::to_string(ctx.version.major) + "." + std::to_string(ctx.version.minor));
+        }
       }
     }
   }
@@ -335,6 +406,7 @@ class Reader {
   /// Reads a <model>; `include` (may be null) is the <include> that brought it in, whose <name>,
   /// <pose> and <placement_frame> override the model's own. Returns the node index or kNotFound.
   int ReadModel(const XMLElement* model, int scope, const Context& ctx, const XMLElement* include) {
+    if (aborted_) return kNotFound;
     if (ctx.depth > kMaxNestingDepth) {
       Error(ctx.file, model, "<model>",
             "models nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
@@ -387,23 +459,30 @@ class Reader {
     if (index < 0) return index;
     if (scope != kWorld) nodes_[scope].members.push_back(index);
 
+    Context own = ctx;  // Inside the model, "__model__" is this model again.
+    own.merge_proxy.clear();
+    ReadModelChildren(model, index, own);
+    return index;
+  }
+
+  void ReadModelChildren(const XMLElement* model, int scope, const Context& ctx) {
     Context inner = ctx;
     inner.depth = ctx.depth + 1;
-    for (const XMLElement* c = model->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    for (const XMLElement* c = model->FirstChildElement(); c && !aborted_;
+         c = c->NextSiblingElement()) {
       const std::string tag = c->Name();
       if (tag == "link") {
-        ReadLink(c, index, ctx);
+        ReadLink(c, scope, ctx);
       } else if (tag == "joint") {
-        ReadJoint(c, index, ctx);
+        ReadJoint(c, scope, ctx);
       } else if (tag == "frame") {
-        ReadFrame(c, index, ctx);
+        ReadFrame(c, scope, ctx);
       } else if (tag == "model") {
-        ReadModel(c, index, inner, nullptr);
+        ReadModel(c, scope, inner, nullptr);
       } else if (tag == "include") {
-        ReadInclude(c, index, inner);
+        ReadInclude(c, scope, inner);
       }
     }
-    return index;
   }
 
   void ReadFrame(const XMLElement* frame, int scope, const Context& ctx) {
@@ -540,6 +619,12 @@ class Reader {
       if (n.kind == Node::Kind::kJoint) ref = n.child;
     }
     int target = ref.empty() ? n.scope : Lookup(ref, n.scope);
+    std::string which;
+    if (target == kNotFound && InUnresolvedInclude(ref, n.scope, &which)) {
+      ReportUnresolvedReference(i, ref, which);
+      nodes_[i].state = 3;
+      return std::nullopt;
+    }
     if (target == kNotFound) {
       Error(
           file, n.element, Describe(n),
@@ -610,11 +695,51 @@ class Reader {
     return kNotFound;
   }
 
-  void BuildModel(int top);
+  void BuildModels();
+  void BuildModel(const std::vector<int>& tops, const std::vector<int>& world_joints);
+  int TopOf(int i) const {
+    if (i < 0) return i;
+    while (nodes_[i].scope != kWorld) i = nodes_[i].scope;
+    return i;
+  }
   void ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link);
   bool ResolveInLink(const XMLElement* pose, int link_index, int top, const Pose& X_TB,
                      const Context& ctx, const std::string& what, Pose* X_BF);
 
+  struct IncludeSite {
+    std::string file;
+    int line = 0;
+    std::string uri;
+  };
+  struct Unresolved {
+    std::string scoped;  // The name the missing model would have had, scoped from the root.
+    std::string uri;
+    std::string file;
+    int line = 0;
+  };
+  std::string OutermostInclude() const;
+  void ReportUnresolvedInclude(const XMLElement* include, int scope, const Context& ctx,
+                               const std::string& uri, const std::string& why);
+  bool InUnresolvedInclude(const std::string& ref, int scope, std::string* which) const;
+  void ReportUnresolvedReference(int i, const std::string& ref, const std::string& which);
+  int ReadMergedModel(const XMLElement* model, int scope, const Context& ctx,
+                      const XMLElement* include);
+  void ReadAutoInertial(const XMLElement* inertial, int link_index, int top, const Pose& X_TB,
+                        const Context& ctx, Link* link);
+
+  SdfReadOptions options_;
+  Diversion diversion_;
+  bool aborted_ = false;
+  long included_elements_ = 0;
+  std::vector<IncludeSite> include_sites_;
+  std::vector<Unresolved> unresolved_;
+  std::set<int> reported_unresolved_;
+  std::unordered_map<std::string, std::pair<std::optional<std::string>, std::string>> resolved_;
+  std::unordered_map<std::string, std::string> canonical_;
+  std::unordered_map<std::string, std::unique_ptr<XMLDocument>> included_docs_;
+  std::unique_ptr<MeshCache> mesh_cache_;
+  std::string current_model_name_;  // The Model being built (for findings).
+  std::vector<int> world_joints_;   // <joint> nodes directly in a <world> (SDF 1.10+).
   std::string top_file_;
   std::vector<std::string> search_paths_;
   ReadResult result_;
@@ -740,12 +865,27 @@ std::optional<std::string> Reader::FindModelFile(const std::string& uri_in,
     *why = "the folder '" + c.string() + "' has no model.config <sdf> file and no model.sdf";
     return std::nullopt;
   }
-  *why = "not found in the including file's folder or the model paths (" +
-         std::to_string(search_paths_.size()) + " searched)";
+  std::string searched;
+  for (const fs::path& c : candidates) {
+    if (searched.size() > 400) {
+      searched += ", ...";
+      break;
+    }
+    searched += (searched.empty() ? "'" : ", '") + c.string() + "'";
+  }
+  if (searched.empty()) {
+    *why = "no model path is set (model:// URIs are looked up only on the model paths)";
+    return std::nullopt;
+  }
+  *why = "massprops looked for " + searched +
+         " (the including file's folder for a relative path, then " +
+         std::to_string(search_paths_.size()) + " model path" +
+         (search_paths_.size() == 1 ? "" : "s") + ")";
   return std::nullopt;
 }
 
 int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx) {
+  if (aborted_) return kNotFound;
   const XMLElement* uri_element = include->FirstChildElement("uri");
   const std::string uri = Text(uri_element);
   const std::string what = "<include> '" + uri + "'";
@@ -758,33 +898,57 @@ int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx
           "includes nested deeper than " + std::to_string(kMaxNestingDepth) + " levels");
     return kNotFound;
   }
+  // include_stack_ holds the top file, then one entry per include being expanded.
+  if (static_cast<int>(include_stack_.size()) > options_.max_include_depth) {
+    Error(ctx.file, include, what,
+          "includes nested deeper than " + std::to_string(options_.max_include_depth) +
+              " files (the limit max_include_depth), starting at " + OutermostInclude());
+    aborted_ = true;
+    return kNotFound;
+  }
   const std::string base_dir =
       ctx.file == "-" ? std::string(".") : fs::path(ctx.file).parent_path().string();
   std::string why;
-  const std::optional<std::string> path = FindModelFile(uri, base_dir, &why);
+  const std::string cache_key = base_dir + '\n' + uri;
+  auto found = resolved_.find(cache_key);
+  if (found == resolved_.end()) {
+    std::optional<std::string> path = FindModelFile(uri, base_dir, &why);
+    found = resolved_.emplace(cache_key, std::make_pair(path, why)).first;
+  }
+  const std::optional<std::string> path = found->second.first;
+  why = found->second.second;
   if (!path) {
-    Warning(ctx.file, include, what, "cannot resolve the include (skipped): " + why);
+    ReportUnresolvedInclude(include, scope, ctx, uri, why);
     return kNotFound;
   }
   std::error_code ec;
-  fs::path canonical = fs::weakly_canonical(*path, ec);
-  const std::string key = ec ? *path : canonical.string();
+  auto canonical_it = canonical_.find(*path);
+  if (canonical_it == canonical_.end()) {
+    fs::path canonical = fs::weakly_canonical(*path, ec);
+    canonical_it = canonical_.emplace(*path, ec ? *path : canonical.string()).first;
+  }
+  const std::string& key = canonical_it->second;
   if (std::find(include_stack_.begin(), include_stack_.end(), key) != include_stack_.end()) {
     Error(ctx.file, include, what, "recursive include: '" + *path + "' includes itself");
     return kNotFound;
   }
-  std::string text;
-  if (!ReadWholeFile(*path, &text, &why)) {
-    Error(*path, nullptr, what, why);
-    return kNotFound;
+  // Each included file is read and parsed once per read, however often it is included.
+  auto doc_it = included_docs_.find(key);
+  if (doc_it == included_docs_.end()) {
+    std::string text;
+    if (!ReadWholeFile(*path, &text, &why)) {
+      Error(*path, nullptr, what, why);
+      return kNotFound;
+    }
+    auto doc = std::make_unique<XMLDocument>();
+    int line = 0;
+    if (!ParseXml(text, doc.get(), &why, &line)) {
+      result_.errors.push_back(MakeError(*path, line, what, why));
+      return kNotFound;
+    }
+    doc_it = included_docs_.emplace(key, std::move(doc)).first;
   }
-  auto doc = std::make_unique<XMLDocument>();
-  int line = 0;
-  if (!ParseXml(text, doc.get(), &why, &line)) {
-    result_.errors.push_back(MakeError(*path, line, what, why));
-    return kNotFound;
-  }
-  const XMLElement* root = doc->RootElement();
+  const XMLElement* root = doc_it->second->RootElement();
   Context inner = ctx;
   inner.file = *path;
   if (root == nullptr || std::string(root->Name()) != "sdf" ||
@@ -797,16 +961,148 @@ int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx
     Warning(ctx.file, include, what, "the included file '" + *path + "' has no <model> (skipped)");
     return kNotFound;
   }
-  documents_.push_back(std::move(doc));
+  const std::string merge = ctx.version.AtLeast(1, 9) ? Attr(include, "merge") : "";
+  const bool merged = merge == "true" || merge == "1";
+  if (merged && scope == kWorld) {
+    Error(ctx.file, include, what,
+          "merge=\"true\" needs an enclosing <model> (libsdformat refuses it in a <world>)");
+    return kNotFound;
+  }
   include_stack_.push_back(key);
+  include_sites_.push_back({ctx.file, include->GetLineNum(), uri});
   const Version saved_version = include_version_;
   const std::string saved_file = include_file_;
   include_version_ = ctx.version;
   include_file_ = ctx.file;
-  const int index = ReadModel(model, scope, inner, include);
+  const int index = merged ? ReadMergedModel(model, scope, inner, include)
+                           : ReadModel(model, scope, inner, include);
   include_version_ = saved_version;
   include_file_ = saved_file;
+  include_sites_.pop_back();
   include_stack_.pop_back();
+  return index;
+}
+
+std::string Reader::OutermostInclude() const {
+  if (include_sites_.empty()) return "";
+  const IncludeSite& s = include_sites_.front();
+  std::string text = "<include> '" + s.uri + "' at " + s.file + ":" + std::to_string(s.line);
+  if (include_sites_.size() > 1) {
+    const IncludeSite& last = include_sites_.back();
+    text +=
+        " (innermost: '" + last.uri + "' at " + last.file + ":" + std::to_string(last.line) + ")";
+  }
+  return text;
+}
+
+void Reader::ReportUnresolvedInclude(const XMLElement* include, int scope, const Context& ctx,
+                                     const std::string& uri, const std::string& why) {
+  // The name the missing model would have had: the include's <name>, else the last part of the
+  // URI (model://create -> "create"), which is the folder name libsdformat would look up.
+  std::string name = Text(include->FirstChildElement("name"));
+  if (name.empty()) {
+    std::string rest = uri;
+    while (!rest.empty() && rest.back() == '/') rest.pop_back();
+    const size_t slash = rest.find_last_of('/');
+    name = slash == std::string::npos ? rest : rest.substr(slash + 1);
+    const size_t dot = name.rfind(".sdf");
+    if (dot != std::string::npos && dot + 4 == name.size()) name = name.substr(0, dot);
+  }
+  const std::string scoped = Prefix(scope) + name;
+  unresolved_.push_back({scoped, uri, ctx.file, include->GetLineNum()});
+  ReadFinding f;
+  f.rule = "include-unresolved";
+  int top = scope;
+  while (top != kWorld && nodes_[top].scope != kWorld) top = nodes_[top].scope;
+  f.model = top == kWorld ? "" : nodes_[top].name;
+  f.location = {ctx.file, include->GetLineNum(), 0};
+  const bool remote = uri.rfind("http://", 0) == 0 || uri.rfind("https://", 0) == 0;
+  f.message = "<include> '" + uri + "' cannot be resolved: " + why + "; the model '" + name +
+              "' is not checked, and joints naming its links are "
+              "left out. " +
+              (remote ? "Download the model (e.g. `gz fuel download -u URL`) and point massprops "
+                        "at the folder that holds it"
+                      : "Point massprops at the folder that holds it") +
+              " with --model-path DIR or the SDF_PATH, GZ_SIM_RESOURCE_PATH or "
+              "IGN_GAZEBO_RESOURCE_PATH environment variable";
+  result_.findings.push_back(std::move(f));
+}
+
+bool Reader::InUnresolvedInclude(const std::string& ref, int scope, std::string* which) const {
+  const std::string scoped = Prefix(scope) + ref;
+  for (const Unresolved& u : unresolved_) {
+    if (scoped == u.scoped || scoped.rfind(u.scoped + "::", 0) == 0) {
+      *which = "'" + u.uri + "' (" + u.file + ":" + std::to_string(u.line) + ")";
+      return true;
+    }
+  }
+  return false;
+}
+
+void Reader::ReportUnresolvedReference(int i, const std::string& ref, const std::string& which) {
+  if (!reported_unresolved_.insert(i).second) return;
+  const Node& n = nodes_[i];
+  int top = i;
+  while (nodes_[top].scope != kWorld) top = nodes_[top].scope;
+  ReadFinding f;
+  f.rule = "include-unresolved";
+  f.model = current_model_name_.empty() ? nodes_[top].name : current_model_name_;
+  f.location = n.location;
+  f.message = Describe(n) + " names '" + ref + "', which lies in the unresolved <include> " +
+              which + "; it is left out";
+  result_.findings.push_back(std::move(f));
+}
+
+int Reader::ReadMergedModel(const XMLElement* model, int scope, const Context& ctx,
+                            const XMLElement* include) {
+  std::string name = Attr(model, "name");
+  if (const XMLElement* n = include->FirstChildElement("name")) name = Text(n);
+  if (name.empty()) {
+    Error(ctx.file, model, "<model>", "a <model> needs a name attribute");
+    return kNotFound;
+  }
+  // libsdformat 12 (SDF 1.9 //include/@merge): the merged model's frame becomes the frame
+  // "_merged__NAME__model__" of the enclosing model, attached to the merged model's canonical
+  // link and placed by the include's (else the model's) <pose>; the merged model's links,
+  // joints, frames and nested models become the enclosing model's, and what was relative to
+  // the merged model's frame is relative to that frame.
+  const std::string proxy = "_merged__" + name + "__model__";
+  Node frame;
+  frame.kind = Node::Kind::kFrame;
+  frame.name = Prefix(scope) + proxy;
+  frame.scope = scope;
+  frame.version = ctx.version;
+  frame.element = model;
+  frame.location = {ctx.file, model->GetLineNum(), 0};
+  const XMLElement* pose = model->FirstChildElement("pose");
+  Context pose_ctx = ctx;
+  if (const XMLElement* p = include->FirstChildElement("pose")) {
+    pose = p;
+    pose_ctx.version = include_version_;
+    pose_ctx.file = include_file_;
+  }
+  frame.X_raw = ParsePose(pose, pose_ctx, "<pose> of merged <model> '" + name + "'");
+  frame.relative_to = RelativeTo(pose, pose_ctx.version);
+  if (frame.relative_to.empty()) frame.relative_to = "__model__";
+  std::string canonical = Attr(model, "canonical_link");
+  if (canonical.empty()) {
+    if (const XMLElement* l = model->FirstChildElement("link")) canonical = Attr(l, "name");
+  }
+  if (canonical.empty()) {
+    if (const XMLElement* m = model->FirstChildElement("model")) canonical = Attr(m, "name");
+  }
+  frame.attached_to = canonical;
+  if (include->FirstChildElement("placement_frame") != nullptr ||
+      model->Attribute("placement_frame") != nullptr) {
+    Warning(ctx.file, include, "<include> of '" + name + "'",
+            "placement_frame of a merged include is not read (the <pose> places the model "
+            "frame)");
+  }
+  const int index = AddNode(std::move(frame), ctx);
+  if (index < 0) return index;
+  Context children = ctx;
+  children.merge_proxy = proxy;
+  ReadModelChildren(model, scope, children);
   return index;
 }
 
@@ -834,34 +1130,48 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
   const Context& ctx = link_files_.at(link_index);
   const XMLElement* e = nodes_[link_index].element;
   const std::string lname = "'" + link->name + "'";
-  if (const XMLElement* in = e->FirstChildElement("inertial")) {
-    const std::string auto_attr = Attr(in, "auto");
-    if (ctx.version.AtLeast(1, 11) && (auto_attr == "true" || auto_attr == "1")) {
-      Warning(ctx.file, in, "<inertial> of link " + lname,
-              "auto-computed inertial (auto=\"true\") is recorded as absent");
+  const XMLElement* in = e->FirstChildElement("inertial");
+  const std::string auto_attr = in ? Attr(in, "auto") : "";
+  const bool is_auto =
+      in != nullptr && ctx.version.AtLeast(1, 11) && (auto_attr == "true" || auto_attr == "1");
+  if (in != nullptr && !is_auto) {
+    // A bad number or pose here costs this link only (inertial-unreadable), not the file.
+    diversion_ = Diversion();
+    diversion_.active = true;
+    Inertial inertial;
+    inertial.location = {ctx.file, in->GetLineNum(), 0};
+    const XMLElement* pose = in->FirstChildElement("pose");
+    if (pose != nullptr) inertial.pose_location = {ctx.file, pose->GetLineNum(), 0};
+    ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname, &inertial.X_BBi);
+    const XMLElement* mass = in->FirstChildElement("mass");
+    if (mass != nullptr) inertial.mass_location = {ctx.file, mass->GetLineNum(), 0};
+    // SDF defaults (sdf/1.x/inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
+    inertial.mass = Number(mass, 1.0, ctx, "<mass> of link " + lname);
+    const XMLElement* inertia = in->FirstChildElement("inertia");
+    if (inertia != nullptr) inertial.inertia_location = {ctx.file, inertia->GetLineNum(), 0};
+    auto moment = [&](const char* tag, double fallback) {
+      return Number(inertia ? inertia->FirstChildElement(tag) : nullptr, fallback, ctx,
+                    std::string("<") + tag + "> of link " + lname);
+    };
+    inertial.ixx = moment("ixx", 1.0);
+    inertial.iyy = moment("iyy", 1.0);
+    inertial.izz = moment("izz", 1.0);
+    inertial.ixy = moment("ixy", 0.0);
+    inertial.ixz = moment("ixz", 0.0);
+    inertial.iyz = moment("iyz", 0.0);
+    diversion_.active = false;
+    if (diversion_.failed) {
+      link->inertial_unreadable = true;
+      ReadFinding f;
+      f.rule = "inertial-unreadable";
+      f.model = current_model_name_;
+      f.link = link->name;
+      f.location = diversion_.location;
+      f.message = diversion_.element + ": " + diversion_.message +
+                  "; the mass properties of link " + lname +
+                  " are unknown, so its welded group is not checked";
+      result_.findings.push_back(std::move(f));
     } else {
-      Inertial inertial;
-      inertial.location = {ctx.file, in->GetLineNum(), 0};
-      const XMLElement* pose = in->FirstChildElement("pose");
-      if (pose != nullptr) inertial.pose_location = {ctx.file, pose->GetLineNum(), 0};
-      ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname,
-                    &inertial.X_BBi);
-      const XMLElement* mass = in->FirstChildElement("mass");
-      if (mass != nullptr) inertial.mass_location = {ctx.file, mass->GetLineNum(), 0};
-      // SDF defaults (sdf/1.x/inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
-      inertial.mass = Number(mass, 1.0, ctx, "<mass> of link " + lname);
-      const XMLElement* inertia = in->FirstChildElement("inertia");
-      if (inertia != nullptr) inertial.inertia_location = {ctx.file, inertia->GetLineNum(), 0};
-      auto moment = [&](const char* tag, double fallback) {
-        return Number(inertia ? inertia->FirstChildElement(tag) : nullptr, fallback, ctx,
-                      std::string("<") + tag + "> of link " + lname);
-      };
-      inertial.ixx = moment("ixx", 1.0);
-      inertial.iyy = moment("iyy", 1.0);
-      inertial.izz = moment("izz", 1.0);
-      inertial.ixy = moment("ixy", 0.0);
-      inertial.ixz = moment("ixz", 0.0);
-      inertial.iyz = moment("iyz", 0.0);
       link->inertial = inertial;
     }
   }
@@ -900,6 +1210,7 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
     }
     link->geometries.push_back(std::move(g));
   }
+  if (is_auto) ReadAutoInertial(in, link_index, top, X_TB, ctx, link);
   // <!-- massprops: ignore rule-id ... --> anywhere inside the link.
   std::vector<const XMLNode*> stack{e};
   while (!stack.empty()) {
@@ -919,6 +1230,104 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
   }
 }
 
+void Reader::ReadAutoInertial(const XMLElement* in, int link_index, int /*top*/, const Pose& X_TB,
+                              const Context& ctx, Link* link) {
+  (void)X_TB;
+  const XMLElement* e = nodes_[link_index].element;
+  const std::string lname = "'" + link->name + "'";
+  auto unreadable = [&](const SourceLocation& where, const std::string& why) {
+    link->inertial_unreadable = true;
+    ReadFinding f;
+    f.rule = "inertial-unreadable";
+    f.model = current_model_name_;
+    f.link = link->name;
+    f.location = where;
+    f.message = "<inertial auto=\"true\"> of link " + lname + " cannot be computed: " + why +
+                "; its mass properties are unknown, so its welded group is not checked";
+    result_.findings.push_back(std::move(f));
+  };
+  const SourceLocation in_location{ctx.file, in->GetLineNum(), 0};
+  if (!options_.compute_auto_inertials) {
+    unreadable(in_location, "auto inertials are not computed (compute_auto_inertials is off)");
+    return;
+  }
+  diversion_ = Diversion();
+  diversion_.active = true;
+  // Density precedence (libsdformat 14, Collision::CalculateInertial): the collision's
+  // <density>, else the link's <inertial><density>, else 1000 kg/m³.
+  const XMLElement* link_density = in->FirstChildElement("density");
+  const double inertial_density =
+      Number(link_density, kSdfDefaultDensity, ctx, "<inertial><density> of link " + lname);
+  std::optional<double> mass;
+  const XMLElement* mass_element = in->FirstChildElement("mass");
+  if (mass_element != nullptr) mass = Number(mass_element, 0.0, ctx, "<mass> of link " + lname);
+  std::vector<AutoInertiaCollision> collisions;
+  size_t g = 0;
+  for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    const std::string tag = c->Name();
+    if (tag != "collision" && tag != "visual") continue;
+    const size_t index = g++;
+    if (tag != "collision" || index >= link->geometries.size()) continue;
+    AutoInertiaCollision collision;
+    collision.name = Attr(c, "name");
+    collision.geometry = link->geometries[index];
+    const XMLElement* density = c->FirstChildElement("density");
+    if (density != nullptr) {
+      collision.density = Number(density, kSdfDefaultDensity, ctx,
+                                 "<density> of <collision> '" + collision.name + "'");
+      collision.density_source = "collision <density>";
+    } else if (link_density != nullptr) {
+      collision.density = inertial_density;
+      collision.density_source = "<inertial><density>";
+    } else {
+      collision.density = kSdfDefaultDensity;
+      collision.density_source = "default density";
+    }
+    collisions.push_back(std::move(collision));
+  }
+  diversion_.active = false;
+  if (diversion_.failed) {
+    unreadable(diversion_.location, diversion_.element + ": " + diversion_.message);
+    return;
+  }
+  if (!mesh_cache_) mesh_cache_ = std::make_unique<MeshCache>();
+  MeshResolveOptions mesh_options;
+  mesh_options.model_paths = options_.model_paths;
+  mesh_options.use_environment = options_.use_environment;
+  mesh_options.model_file = ctx.file;
+  mesh_options.cache = mesh_cache_.get();
+  std::string why;
+  const std::optional<AutoInertiaResult> computed =
+      CalcAutoInertial(collisions, mass, mesh_options, &why);
+  if (!computed) {
+    unreadable(in_location, why);
+    return;
+  }
+  Inertial inertial = computed->inertial;
+  inertial.location = in_location;
+  if (mass_element != nullptr) inertial.mass_location = {ctx.file, mass_element->GetLineNum(), 0};
+  link->inertial = inertial;
+  ReadFinding f;
+  f.rule = "inertial-auto";
+  f.model = current_model_name_;
+  f.link = link->name;
+  f.location = in_location;
+  f.message =
+      "link " + lname + ": <inertial auto=\"true\"> (SDF 1.11) computed as " + computed->summary;
+  f.values = {{"mass", inertial.mass},
+              {"com_x", inertial.X_BBi.p_AB.x()},
+              {"com_y", inertial.X_BBi.p_AB.y()},
+              {"com_z", inertial.X_BBi.p_AB.z()},
+              {"ixx", inertial.ixx},
+              {"iyy", inertial.iyy},
+              {"izz", inertial.izz},
+              {"ixy", inertial.ixy},
+              {"ixz", inertial.ixz},
+              {"iyz", inertial.iyz},
+              {"collisions", static_cast<double>(collisions.size())}};
+  result_.findings.push_back(std::move(f));
+}
+
 Joint::Type JointType(const std::string& t) {
   if (t == "fixed") return Joint::Type::kFixed;
   if (t == "revolute") return Joint::Type::kRevolute;
@@ -930,24 +1339,85 @@ Joint::Type JointType(const std::string& t) {
   return Joint::Type::kOther;  // revolute2, gearbox, ...
 }
 
-void Reader::BuildModel(int top) {
+/// Groups the top-level models joined by world joints (SDF 1.10+) and builds one Model per group:
+/// a lone model as before; models joined by a world joint as one Model named "A+B" whose links
+/// and joints keep their scoped names ("A::link") and whose frame is the world's. A world joint
+/// whose parent is "world" (or in the child's own model) goes into the child's model.
+void Reader::BuildModels() {
+  std::unordered_map<int, int> group;  // top -> representative top
+  for (int top : top_models_) group[top] = top;
+  std::function<int(int)> find = [&](int t) {
+    while (group[t] != t) t = group[t] = group[group[t]];
+    return t;
+  };
+  std::vector<std::pair<int, int>> joint_child_top;  // (joint node, child's top)
+  for (int j : world_joints_) {
+    const Node& n = nodes_[j];
+    std::string which;
+    const int c = AttachedLink(Lookup(n.child, kWorld), 0);
+    const int p = n.parent == "world" ? kWorld : AttachedLink(Lookup(n.parent, kWorld), 0);
+    if (c < 0 || (n.parent != "world" && p < 0)) {
+      const std::string& bad = c < 0 ? n.child : n.parent;
+      if (InUnresolvedInclude(bad, kWorld, &which)) {
+        ReportUnresolvedReference(j, bad, which);
+      } else {
+        Error(n.location.file, n.element, Describe(n),
+              "the " + std::string(c < 0 ? "child" : "parent") + " '" + bad +
+                  "' is not a link, a model or a frame of the world");
+      }
+      continue;
+    }
+    const int ct = TopOf(c);
+    const int pt = p == kWorld ? kWorld : TopOf(p);
+    if (!group.count(ct) || (pt != kWorld && !group.count(pt))) continue;
+    if (pt != kWorld && find(pt) != find(ct)) group[find(pt)] = find(ct);
+    joint_child_top.emplace_back(j, ct);
+  }
+  if (!result_.errors.empty()) return;
+  std::vector<int> roots;
+  std::unordered_map<int, std::vector<int>> members, joints;
+  for (int top : top_models_) {
+    const int r = find(top);
+    if (!members.count(r)) roots.push_back(r);
+    members[r].push_back(top);
+  }
+  for (const auto& [j, ct] : joint_child_top) joints[find(ct)].push_back(j);
+  for (int r : roots) BuildModel(members[r], joints[r]);
+}
+
+void Reader::BuildModel(const std::vector<int>& tops, const std::vector<int>& world_joints) {
   const size_t errors_before = result_.errors.size();
+  const bool single = tops.size() == 1;
+  const int top = single ? tops[0] : kWorld;  // The model frame: the model's, or the world's.
   Model model;
   model.format = Model::Format::kSdf;
   model.file = top_file_;
-  const std::string prefix = nodes_[top].name + "::";
-  model.name = nodes_[top].name;
-  model.location = nodes_[top].location;
-  model.is_static = nodes_[top].is_static;
-  auto local_name = [&](int i) { return nodes_[i].name.substr(prefix.size()); };
-  auto inside = [&](int i) { return nodes_[i].name.rfind(prefix, 0) == 0; };
+  const std::string prefix = single ? nodes_[top].name + "::" : "";
+  model.is_static = true;
+  for (int t : tops) {
+    model.name += (model.name.empty() ? "" : "+") + nodes_[t].name;
+    model.is_static = model.is_static && nodes_[t].is_static;
+  }
+  model.location = nodes_[tops[0]].location;
+  current_model_name_ = model.name;
+  auto local_name = [&](int i) {
+    const std::string& name = nodes_[i].name;
+    return name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
+  };
+  std::vector<int> order;  // The nodes of the models, in file order (each contiguous).
+  for (int t : tops) {
+    const std::string own = nodes_[t].name + "::";
+    order.push_back(t);
+    for (int i = t + 1; i < static_cast<int>(nodes_.size()) && nodes_[i].name.rfind(own, 0) == 0;
+         ++i) {
+      order.push_back(i);
+    }
+  }
+  auto inside = [&](int i) { return std::find(tops.begin(), tops.end(), TopOf(i)) != tops.end(); };
 
-  std::unordered_map<int, Pose> X_TB;  // Link poses in the top model frame.
+  std::unordered_map<int, Pose> X_TB;  // Link poses in the model frame T.
   SdfModelFrames frames;
-  // The nodes of one top-level model are contiguous (read depth-first).
-  int end = top + 1;
-  while (end < static_cast<int>(nodes_.size()) && inside(end)) ++end;
-  for (int i = top; i < end; ++i) {
+  for (int i : order) {
     if (nodes_[i].kind != Node::Kind::kLink) continue;
     const std::optional<Pose> X = PoseInScope(i, top, 0);
     if (!X) continue;
@@ -961,13 +1431,27 @@ void Reader::BuildModel(int top) {
   }
   // Every frame is resolved, used or not, so that cycles and dangling names are reported as
   // libsdformat reports them.
-  for (int i = top; i < end; ++i) Resolve(i, 0);
+  for (int i : order) Resolve(i, 0);
+  for (int j : world_joints) Resolve(j, 0);
   if (result_.errors.size() != errors_before) return;
-  std::optional<Pose> X_WT = PoseInScope(top, kWorld, 0);
+  std::optional<Pose> X_WT = single ? PoseInScope(top, kWorld, 0) : std::optional<Pose>(Pose());
   if (X_WT) frames.X_WM = *X_WT;
-  for (int i = top; i < end; ++i) {
+  // A frame's pose in T; for a frame outside the model (a world joint's) through the world.
+  auto pose_in_model = [&](int f) -> std::optional<Pose> {
+    if (f == kNotFound) return std::nullopt;
+    if (top == kWorld) return PoseInScope(f, kWorld, 0);
+    if (f != kWorld && TopOf(f) == top) return PoseInScope(f, top, 0);
+    const std::optional<Pose> X_WF = f == kWorld ? Pose() : PoseInScope(f, kWorld, 0);
+    if (!X_WF || !X_WT) return std::nullopt;
+    return X_WT->Inverse() * *X_WF;
+  };
+  std::vector<int> joint_nodes;
+  for (int i : order) {
+    if (nodes_[i].kind == Node::Kind::kJoint) joint_nodes.push_back(i);
+  }
+  joint_nodes.insert(joint_nodes.end(), world_joints.begin(), world_joints.end());
+  for (int i : joint_nodes) {
     const Node& n = nodes_[i];
-    if (n.kind != Node::Kind::kJoint) continue;
     Joint joint;
     joint.name = local_name(i);
     joint.location = n.location;
@@ -975,6 +1459,16 @@ void Reader::BuildModel(int top) {
     joint.type = JointType(joint.type_name);
     const std::string what = Describe(n);
     const int c = AttachedLink(Lookup(n.child, n.scope), 0);
+    std::string which;
+    if (c < 0 && InUnresolvedInclude(n.child, n.scope, &which)) {
+      ReportUnresolvedReference(i, n.child, which);
+      continue;
+    }
+    if (n.parent != "world" && AttachedLink(Lookup(n.parent, n.scope), 0) < 0 &&
+        InUnresolvedInclude(n.parent, n.scope, &which)) {
+      ReportUnresolvedReference(i, n.parent, which);
+      continue;
+    }
     if (n.child == "world" || c < 0 || !X_TB.count(c)) {
       Error(n.location.file, n.element, what, "the child '" + n.child + "' is not a link");
       continue;
@@ -995,14 +1489,17 @@ void Reader::BuildModel(int top) {
       joint.X_PC = X_TB[p].Inverse() * X_TC;
     }
     // Axis: <axis><xyz> (default 0 0 1) in the frame E it is expressed in.
-    Context ctx{n.location.file, n.version, 0};
+    Context ctx{n.location.file, n.version, 0, n.merge_proxy};
     const XMLElement* axis = n.element->FirstChildElement("axis");
     const XMLElement* xyz = axis ? axis->FirstChildElement("xyz") : nullptr;
     const Eigen::Vector3d axis_E =
         Vector(xyz, Eigen::Vector3d::UnitZ(), ctx, "<axis><xyz> of " + what);
     int expressed_in = i;  // The joint frame.
     const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
-    if (!e.empty()) expressed_in = Lookup(e, n.scope);
+    if (!e.empty()) {
+      expressed_in =
+          Lookup(e == "__model__" && !n.merge_proxy.empty() ? n.merge_proxy : e, n.scope);
+    }
     if (!n.version.AtLeast(1, 7) && axis != nullptr) {
       // The 1.6->1.7 converter maps use_parent_model_frame=true to expressed_in="__model__".
       const std::string f = Text(axis->FirstChildElement("use_parent_model_frame"));
@@ -1010,8 +1507,7 @@ void Reader::BuildModel(int top) {
         expressed_in = n.scope;
       }
     }
-    const std::optional<Pose> X_TE =
-        expressed_in == kNotFound ? std::nullopt : PoseInScope(expressed_in, top, 0);
+    const std::optional<Pose> X_TE = pose_in_model(expressed_in);
     if (!X_TE) {
       Error(n.location.file, xyz, "<axis><xyz> of " + what,
             "the frame named by expressed_in is not found");
@@ -1033,7 +1529,7 @@ void Reader::BuildModel(int top) {
     if (j.parent != "world") children.insert(j.child);
   }
   auto is_child = [&](const std::string& name) { return children.count(name) > 0; };
-  const int canonical = AttachedLink(top, 0);
+  const int canonical = AttachedLink(tops[0], 0);
   if (canonical >= 0 && inside(canonical) && !is_child(local_name(canonical))) {
     model.root_link = local_name(canonical);
   } else {
@@ -1100,7 +1596,7 @@ ReadResult Reader::Read(const std::string& xml, const std::string& file_name,
     Warning(file_name, root, "<sdf>", "the file holds no <model>");
   }
   if (result_.errors.empty()) {
-    for (int top : top_models_) BuildModel(top);
+    BuildModels();
   }
   if (!result_.errors.empty()) {
     result_.models.clear();

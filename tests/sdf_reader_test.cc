@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@ namespace massprops {
 namespace {
 
 const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/sdf";
+constexpr double kPi = 3.14159265358979323846;
 
 SdfReadOptions FixtureOptions() {
   SdfReadOptions options;
@@ -220,10 +222,161 @@ TEST(SdfReaderTest, IncludesResolveThroughModelPathsWithNameAndPoseOverrides) {
   ASSERT_EQ(cart.links.size(), 2u);
   EXPECT_EQ(cart.links[1].name, "cargo::body");
   ExpectPose(cart.joints.at(0).X_PC, {0, 0, 2}, I);
-  // The missing include is a warning naming it, with its line; the rest is read.
-  ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_NE(r.warnings[0].element.find("massprops_no_such_model"), std::string::npos);
-  EXPECT_EQ(r.warnings[0].location.line, 31);
+  // The missing include is an include-unresolved finding naming it, with its line; the rest is
+  // read.
+  EXPECT_TRUE(r.warnings.empty());
+  ASSERT_EQ(r.findings.size(), 1u);
+  EXPECT_EQ(r.findings[0].rule, "include-unresolved");
+  EXPECT_NE(r.findings[0].message.find("massprops_no_such_model"), std::string::npos);
+  EXPECT_EQ(r.findings[0].location.line, 31);
+}
+
+// Hand-derived from the fixture: the include's <pose> 1 0 0 replaces the arm's own <pose> 0 0 7,
+// so the merged frame is at (1, 0, 0) in robot's frame; upper at (1, 0, 0.5); the frame tip at
+// (1, 0, 1) turned 90° about z; hand (box.sdf, its own pose replaced by the include's
+// relative_to tip 0.25 0 0) at tip + Rz90·(0.25, 0, 0) = (1, 0.25, 1), turned like tip; its link
+// body at the hand model's frame.
+TEST(SdfReaderTest, MergedIncludesPutTheirLinksJointsAndNestedIncludesIntoTheEnclosingModel) {
+  std::vector<SdfModelFrames> frames;
+  const ReadResult r = ReadSdfFile(kDir + "/merge_include.sdf", FixtureOptions(), &frames);
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  ASSERT_EQ(r.models.size(), 1u);
+  const Model& m = r.models[0];
+  ASSERT_EQ(m.links.size(), 3u);
+  EXPECT_EQ(m.links[0].name, "base");
+  EXPECT_EQ(m.links[1].name, "upper");
+  EXPECT_EQ(m.links[2].name, "hand::body");
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  ExpectPose(frames[0].X_MB[1], {1, 0, 0.5}, I);
+  ExpectPose(frames[0].X_MB[2], {1, 0.25, 1}, Rz90());
+  // Elements of included files carry those files' paths and lines.
+  EXPECT_EQ(m.links[1].location.file, kDir + "/models/massprops_arm/model.sdf");
+  EXPECT_EQ(m.links[1].location.line, 8);
+  EXPECT_EQ(m.links[1].inertial->location.file, kDir + "/models/massprops_arm/model.sdf");
+  EXPECT_EQ(m.links[1].inertial->mass_location.line, 11);
+  EXPECT_EQ(m.links[2].location.file, kDir + "/models/massprops_box/box.sdf");
+  EXPECT_EQ(m.links[2].inertial->mass_location.line, 7);
+  // The joints: mount (base -> upper, in robot's file) and wrist (upper -> hand::body, scoped).
+  ASSERT_EQ(m.joints.size(), 2u);
+  EXPECT_EQ(JointNamed(m, "mount").child, "upper");
+  EXPECT_EQ(JointNamed(m, "wrist").parent, "upper");
+  EXPECT_EQ(JointNamed(m, "wrist").child, "hand::body");
+  EXPECT_EQ(JointNamed(m, "wrist").location.file, kDir + "/models/massprops_arm/model.sdf");
+  ExpectPose(JointNamed(m, "wrist").X_PC, {0, 0.25, 0.5}, Rz90());
+}
+
+// SDF 1.10 world joints (sdf/1.10/world.sdf: <joint> in <world>, parent and child scoped names or
+// "world"). Hand-derived: the arm at z = 1, the gripper at z = 3; weld gives palm in hand's frame
+// at (0, 0, 2); anchor fixes the arm's canonical link (hand) to the world at (0, 0, 1).
+TEST(SdfReaderTest, WorldJointsJoinTheirModelsIntoOneModelWithScopedNames) {
+  std::vector<SdfModelFrames> frames;
+  const ReadResult r = ReadSdfFile(kDir + "/world_joint.sdf", FixtureOptions(), &frames);
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  ASSERT_EQ(r.models.size(), 1u);
+  const Model& m = r.models[0];
+  EXPECT_EQ(m.name, "arm+gripper");
+  ASSERT_EQ(m.links.size(), 2u);
+  EXPECT_EQ(m.links[0].name, "arm::hand");
+  EXPECT_EQ(m.links[1].name, "gripper::palm");
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  ExpectPose(frames[0].X_MB[1], {0, 0, 3}, I);  // the model frame is the world's
+  ASSERT_EQ(m.joints.size(), 2u);
+  const Joint& weld = JointNamed(m, "weld");
+  EXPECT_EQ(weld.parent, "arm::hand");
+  EXPECT_EQ(weld.child, "gripper::palm");
+  EXPECT_EQ(weld.type, Joint::Type::kFixed);
+  ExpectPose(weld.X_PC, {0, 0, 2}, I);
+  const Joint& anchor = JointNamed(m, "anchor");
+  EXPECT_EQ(anchor.parent, "world");
+  EXPECT_EQ(anchor.child, "arm::hand");
+  ExpectPose(anchor.X_PC, {0, 0, 1}, I);
+  EXPECT_EQ(anchor.location.line, 19);
+  // Before SDF 1.10 such a joint is not read, with a warning.
+  const ReadResult old = ReadSdfString(
+      "<sdf version='1.9'><world name='w'><model name='a'><link name='l'/></model>\n"
+      "<joint name='j' type='fixed'><parent>world</parent><child>a</child></joint>"
+      "</world></sdf>",
+      "old.sdf", FixtureOptions());
+  ASSERT_TRUE(old.ok());
+  EXPECT_TRUE(old.models.at(0).joints.empty());
+  ASSERT_EQ(old.warnings.size(), 1u);
+  EXPECT_EQ(old.warnings[0].location.line, 2);
+}
+
+TEST(SdfReaderTest, AnUnresolvedIncludeCostsOnlyWhatItNamesAndSaysHowToPointMasspropsAtIt) {
+  const ReadResult r = ReadSdfFile(kDir + "/unresolved_include.sdf", FixtureOptions());
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  ASSERT_EQ(r.models.size(), 1u);
+  const Model& m = r.models[0];
+  EXPECT_EQ(m.links.size(), 2u);   // base and arm
+  ASSERT_EQ(m.joints.size(), 1u);  // shoulder; grip names the missing model
+  EXPECT_EQ(m.joints[0].name, "shoulder");
+  ASSERT_EQ(r.findings.size(), 2u);
+  EXPECT_EQ(r.findings[0].rule, "include-unresolved");
+  EXPECT_EQ(r.findings[0].model, "robot");
+  EXPECT_EQ(r.findings[0].location.file, kDir + "/unresolved_include.sdf");
+  EXPECT_EQ(r.findings[0].location.line, 12);
+  for (const char* text :
+       {"massprops_no_such_gripper", "--model-path", "SDF_PATH", "GZ_SIM_RESOURCE_PATH",
+        "IGN_GAZEBO_RESOURCE_PATH", "models/massprops_no_such_gripper"}) {
+    EXPECT_NE(r.findings[0].message.find(text), std::string::npos) << text;
+  }
+  EXPECT_EQ(r.findings[1].rule, "include-unresolved");
+  EXPECT_EQ(r.findings[1].location.line, 16);
+  EXPECT_NE(r.findings[1].message.find("gripper::palm"), std::string::npos);
+  // A Fuel URL is named as remote.
+  const ReadResult fuel = ReadSdfString(
+      "<sdf version='1.7'><world name='w'>\n<include><uri>https://fuel.gazebosim.org/1.0/o/"
+      "models/m</uri></include></world></sdf>",
+      "fuel.sdf", FixtureOptions());
+  ASSERT_TRUE(fuel.ok());
+  ASSERT_EQ(fuel.findings.size(), 1u);
+  EXPECT_EQ(fuel.findings[0].location.line, 2);
+  EXPECT_NE(fuel.findings[0].message.find("remote"), std::string::npos);
+}
+
+// Models that include the next one twice: 2^depth links. The limits stop the read with an error
+// naming the outermost include (hostile-input issue #15 runs the 17-file version).
+TEST(SdfReaderTest, IncludeDepthAndExpandedSizeAreBoundedWithAnErrorNamingTheInclude) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "massprops_sdf_reader_test_bomb";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const int kFiles = 12;
+  for (int k = 0; k < kFiles; ++k) {
+    std::ofstream out((dir / ("m" + std::to_string(k) + ".sdf")).string());
+    out << "<sdf version='1.7'><model name='m" << k << "'><link name='l'/>";
+    if (k + 1 < kFiles) {
+      for (const char* name : {"a", "b"}) {
+        out << "<include><uri>m" << k + 1 << ".sdf</uri><name>" << name << "</name></include>";
+      }
+    }
+    out << "</model></sdf>";
+  }
+  const std::string top = (dir / "m0.sdf").string();
+  SdfReadOptions options = FixtureOptions();
+  // Unbounded here: 2^12 - 1 = 4095 links.
+  options.max_included_elements = 1000000;
+  const ReadResult all = ReadSdfFile(top, options);
+  ASSERT_TRUE(all.ok()) << all.errors.front().ToString();
+  EXPECT_EQ(all.models.at(0).links.size(), 4095u);
+  options.max_included_elements = 1000;
+  const ReadResult big = ReadSdfFile(top, options);
+  ASSERT_FALSE(big.ok());
+  EXPECT_TRUE(big.models.empty());
+  EXPECT_EQ(big.errors.size(), 1u);
+  EXPECT_EQ(big.errors[0].location.file, top);
+  EXPECT_NE(big.errors[0].message.find("more than 1000 elements"), std::string::npos)
+      << big.errors[0].ToString();
+  EXPECT_NE(big.errors[0].element.find("m1.sdf"), std::string::npos) << big.errors[0].element;
+  options.max_included_elements = 1000000;
+  options.max_include_depth = 5;
+  const ReadResult deep = ReadSdfFile(top, options);
+  ASSERT_FALSE(deep.ok());
+  EXPECT_NE(deep.errors[0].message.find("deeper than 5 files"), std::string::npos)
+      << deep.errors[0].ToString();
+  EXPECT_NE(deep.errors[0].message.find("m1.sdf"), std::string::npos);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(SdfReaderTest, ARecursiveIncludeIsAnErrorNotAnInfiniteLoop) {
@@ -270,19 +423,109 @@ TEST(SdfReaderTest, DegreesAndQuaternionPosesOfSdf19GiveTheSameRotation) {
   EXPECT_EQ(in.iyz, 0.0);
 }
 
-TEST(SdfReaderTest, AutoInertialOfSdf111IsRecordedAsAbsentWithAWarning) {
+// ---------------------------------------------------------------- SDF 1.11 auto inertials
+
+void ExpectAuto(const Model& m, const std::string& link, double mass, const Eigen::Vector3d& com,
+                const Eigen::Vector3d& moments, const Eigen::Vector3d& products,
+                double tol = 1e-12) {
+  SCOPED_TRACE(link);
+  const Link& l = LinkNamed(m, link);
+  ASSERT_TRUE(l.inertial.has_value());
+  const Inertial& in = *l.inertial;
+  const double scale = std::max(1.0, moments.norm());
+  EXPECT_NEAR(in.mass, mass, tol * mass);
+  EXPECT_LT((in.X_BBi.p_AB - com).norm(), tol * std::max(1.0, com.norm())) << in.X_BBi.p_AB;
+  EXPECT_TRUE(in.X_BBi.R_AB.isIdentity(0));
+  EXPECT_NEAR(in.ixx, moments.x(), tol * scale);
+  EXPECT_NEAR(in.iyy, moments.y(), tol * scale);
+  EXPECT_NEAR(in.izz, moments.z(), tol * scale);
+  EXPECT_NEAR(in.ixy, products.x(), tol * scale);
+  EXPECT_NEAR(in.ixz, products.y(), tol * scale);
+  EXPECT_NEAR(in.iyz, products.z(), tol * scale);
+}
+
+// Expected values: the solid-body formulas of the SDFormat 1.11 auto-inertia proposal and of
+// gz-math (box m/12·(b²+c²); cylinder m·r²/2 about its axis, m·(3r²+L²)/12 across; sphere
+// 2/5·m·r²; ellipsoid m/5·(b²+c²); capsule: the cylinder plus two hemispheres, each 2/5·r²·m_h
+// about the axis and m_h·(2/5·r² + L²/4 + 3Lr/8) across, its center of mass 3r/8 from its flat
+// face), densities by libsdformat 14's precedence (collision, else <inertial><density>, else
+// 1000 kg/m³), and a <mass> beside auto="true" scaling the sum (Link::ResolveAutoInertials).
+TEST(SdfReaderTest, AutoInertialsAreComputedFromEachCollisionShapeAsSdformat14Does) {
+  const ReadResult r = ReadSdfFile(kDir + "/auto_inertia.sdf", FixtureOptions());
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  const Model& m = r.models.at(0);
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  // Box 2 × 1 × 0.5 m, density 10 (collision): 10 kg at the collision pose (0, 0, 1); the visual
+  // (ten times larger) plays no part.
+  ExpectAuto(m, "box", 10, {0, 0, 1},
+             {10.0 / 12 * (1 + 0.25), 10.0 / 12 * (4 + 0.25), 10.0 / 12 * (4 + 1)}, zero);
+  // Cylinder r 0.5, L 2, default density 1000: m = 1000·π·0.25·2 = 500π; rolled 90° about x, so
+  // its axis is y: iyy = m·r²/2, ixx = izz = m·(3r² + L²)/12.
+  const double mc = 500 * kPi;
+  ExpectAuto(m, "cylinder", mc, zero, {mc * 4.75 / 12, mc * 0.125, mc * 4.75 / 12}, zero);
+  // Sphere r 0.1 with the link's <inertial><density> 2000: m = 2000·4/3·π·0.001 = 8π/3.
+  const double ms = 8 * kPi / 3;
+  ExpectAuto(m, "sphere", ms, zero, {0.4 * ms * 0.01, 0.4 * ms * 0.01, 0.4 * ms * 0.01}, zero);
+  // Capsule r 0.5, L 1, density 1: cylinder part π/4 kg, caps π/6 kg; izz = π/4·r²/2 +
+  // π/6·2/5·r² = 23π/480; ixx = π/4·(3r² + L²)/12 + π/6·(2/5·r² + L²/4 + 3Lr/8) = 121π/960.
+  ExpectAuto(m, "capsule", 5 * kPi / 12, zero, {121 * kPi / 960, 121 * kPi / 960, 23 * kPi / 480},
+             zero);
+  // Ellipsoid radii 1, 2, 3 at density 3/(4π) (to 15 digits): volume 4/3·π·6 = 8π, mass 6;
+  // (b² + c²)/5·6 = 15.6, (a² + c²)/5·6 = 12, (a² + b²)/5·6 = 6.
+  ExpectAuto(m, "ellipsoid", 6, zero, {15.6, 12, 6}, zero);
+  // Mesh: the closed box 0.1 × 0.2 × 0.3 m of testdata/mesh/box_ascii.stl (corner at the
+  // origin), default density: 6 kg, center (0.05, 0.1, 0.15), box formulas. Assimp holds the
+  // vertices as 32-bit floats (mesh_loader.h: up to 6e-8 relative), hence 1e-6 here.
+  ExpectAuto(m, "mesh", 6, {0.05, 0.1, 0.15},
+             {6.0 / 12 * (0.04 + 0.09), 6.0 / 12 * (0.01 + 0.09), 6.0 / 12 * (0.01 + 0.04)}, zero,
+             1e-6);
+  // Two 1 m cubes of density 1 (their own <density> wins over the link's 7) at x = ±1: 2 kg,
+  // about the center ixx = 2·1/6, iyy = izz = 2·(1/6 + 1²); <mass> 4 doubles them.
+  ExpectAuto(m, "two_cubes", 4, zero, {2 * 2.0 / 6, 2 * (2.0 / 6 + 2), 2 * (2.0 / 6 + 2)}, zero);
+  // One inertial-auto note per computed link, at its <inertial> line, naming the collisions.
+  int notes = 0;
+  for (const ReadFinding& f : r.findings) {
+    if (f.rule != "inertial-auto") continue;
+    ++notes;
+    EXPECT_EQ(f.location.line, LinkNamed(m, f.link).inertial->location.line);
+    EXPECT_NE(f.message.find("collision"), std::string::npos);
+  }
+  EXPECT_EQ(notes, 7);
+  // No collision to compute from: inertial-unreadable (libsdformat 14 refuses the file).
+  const Link& none = LinkNamed(m, "no_collision");
+  EXPECT_FALSE(none.inertial.has_value());
+  EXPECT_TRUE(none.inertial_unreadable);
+  EXPECT_EQ(r.findings.back().rule, "inertial-unreadable");
+  EXPECT_EQ(r.findings.back().link, "no_collision");
+  EXPECT_EQ(r.findings.back().location.line, 70);
+}
+
+// The corpus file named by issue 14: four 1 m cubes of density 6 (given on the collision or on
+// the inertial) -> each link 6 kg, diag(6/12·2, ...) = diag(1, 1, 1) kg·m² about its center.
+TEST(SdfReaderTest, InertialStatsAutoOfTheCorpusGivesFourSixKilogramCubes) {
+  const std::string path =
+      std::string(MASSPROPS_CORPUS_DIR) + "/sdformat/test/sdf/inertial_stats_auto.sdf";
+  if (!std::ifstream(path)) GTEST_SKIP() << "no corpus";
+  const ReadResult r = ReadSdfFile(path, FixtureOptions());
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  ASSERT_EQ(r.models.at(0).links.size(), 4u);
+  for (const Link& l : r.models[0].links) {
+    ExpectAuto(r.models[0], l.name, 6, Eigen::Vector3d::Zero(), {1, 1, 1}, Eigen::Vector3d::Zero());
+  }
+}
+
+TEST(SdfReaderTest, AutoInOlderSdfVersionsIsNotReadAsAuto) {
+  // The attribute exists from SDF 1.11 (sdf/1.11/inertial.sdf); libsdformat ignores unknown
+  // attributes of older versions, so the SDF defaults apply (mass 1, diag(1, 1, 1)).
   const ReadResult r = ReadSdfString(
-      "<sdf version='1.11'><model name='m'>\n<link name='a'>\n<inertial auto='true'/></link>\n"
-      "<link name='b'><inertial><mass>2</mass></inertial></link></model></sdf>",
+      "<sdf version='1.10'><model name='m'>\n<link name='a'>\n<inertial auto='true'/>"
+      "<collision name='c'><geometry><box><size>1 1 1</size></box></geometry></collision>"
+      "</link></model></sdf>",
       "auto.sdf", FixtureOptions());
   ASSERT_TRUE(r.ok());
-  EXPECT_FALSE(r.models[0].links[0].inertial.has_value());
-  ASSERT_TRUE(r.models[0].links[1].inertial.has_value());
-  EXPECT_EQ(r.models[0].links[1].inertial->mass, 2.0);
-  EXPECT_EQ(r.models[0].links[1].inertial->ixx, 1.0);  // <inertia> absent: SDF default ixx = 1
-  ASSERT_EQ(r.warnings.size(), 1u);
-  EXPECT_EQ(r.warnings[0].location.line, 3);
-  EXPECT_NE(r.warnings[0].message.find("auto"), std::string::npos);
+  ASSERT_TRUE(r.models[0].links[0].inertial.has_value());
+  EXPECT_EQ(r.models[0].links[0].inertial->mass, 1.0);
+  EXPECT_TRUE(r.findings.empty());
 }
 
 // SDF spec (model.sdf): <static> "If set to true, the model is immovable"; an <include>'s own
@@ -323,14 +566,57 @@ std::string MassFile(const std::string& mass) {
          "</mass>\n</inertial>\n</link>\n</model>\n</sdf>\n";
 }
 
-TEST(SdfReaderTest, NonNumericNonFiniteAndOverflowingNumbersAreErrorsQuotingTheText) {
-  ExpectError(ReadOne(MassFile("1,5")), "'1,5' is not a number", 5);
-  ExpectError(ReadOne(MassFile("abc")), "'abc' is not a number", 5);
-  ExpectError(ReadOne(MassFile("nan")), "'nan' is not a finite number", 5);
-  ExpectError(ReadOne(MassFile("-inf")), "'-inf' is not a finite number", 5);
-  ExpectError(ReadOne(MassFile("1e400")), "'1e400' is out of the range of double", 5);
-  ExpectError(ReadOne(MassFile("1 2")), "expected 1 numbers", 5);
-  EXPECT_EQ(ReadOne(MassFile("1,5")).errors[0].element, "<mass> of link 'l'");
+void ExpectUnreadable(const ReadResult& r, const std::string& text, int line) {
+  SCOPED_TRACE(text);
+  ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
+  ASSERT_EQ(r.models.size(), 1u);
+  const Link& l = r.models[0].links.at(0);
+  EXPECT_TRUE(l.inertial_unreadable);
+  EXPECT_FALSE(l.inertial.has_value());
+  ASSERT_EQ(r.findings.size(), 1u);
+  EXPECT_EQ(r.findings[0].rule, "inertial-unreadable");
+  EXPECT_EQ(r.findings[0].link, "l");
+  EXPECT_EQ(r.findings[0].location.file, "bad.sdf");
+  EXPECT_EQ(r.findings[0].location.line, line);
+  EXPECT_NE(r.findings[0].message.find(text), std::string::npos) << r.findings[0].message;
+}
+
+// A bad number of an <inertial> costs its link (inertial-unreadable, quoting the text); any other
+// bad number is a read error. 1e-400 and subnormals (1e-310) are out of the range libsdformat 12
+// accepts (its std::stod throws std::out_of_range for them: checked with libsdformat 12.7).
+TEST(SdfReaderTest, NonNumericNonFiniteAndOutOfRangeNumbersQuoteTheText) {
+  ExpectUnreadable(ReadOne(MassFile("1,5")), "'1,5' is not a number", 5);
+  ExpectUnreadable(ReadOne(MassFile("abc")), "'abc' is not a number", 5);
+  ExpectUnreadable(ReadOne(MassFile("nan")), "'nan' is not a finite number", 5);
+  ExpectUnreadable(ReadOne(MassFile("-inf")), "'-inf' is not a finite number", 5);
+  ExpectUnreadable(ReadOne(MassFile("1e400")), "'1e400' is out of the range of double", 5);
+  ExpectUnreadable(ReadOne(MassFile("1e-400")), "'1e-400' is out of the range of double", 5);
+  ExpectUnreadable(ReadOne(MassFile("1e-310")), "'1e-310' is out of the range of double", 5);
+  ExpectUnreadable(ReadOne(MassFile("1 2")), "expected 1 numbers", 5);
+  EXPECT_NE(ReadOne(MassFile("1,5")).findings[0].message.find("<mass> of link 'l'"),
+            std::string::npos);
+  // The smallest normal double and zero written with a huge exponent are read.
+  EXPECT_EQ(ReadOne(MassFile("2.2250738585072014e-308")).models[0].links[0].inertial->mass,
+            2.2250738585072014e-308);
+  EXPECT_EQ(ReadOne(MassFile("0e-999")).models[0].links[0].inertial->mass, 0.0);
+  // A bad inertial <pose> costs the link too.
+  ExpectUnreadable(ReadOne("<sdf version='1.7'><model name='m'><link name='l'><inertial>\n"
+                           "<pose>0 0 x 0 0 0</pose></inertial></link></model></sdf>"),
+                   "'x' is not a number", 2);
+  // The fixture: link a has <iyy>1e-400</iyy> (line 11), link b is read.
+  const ReadResult fixture = ReadSdfFile(kDir + "/bad_number.sdf", FixtureOptions());
+  ASSERT_TRUE(fixture.ok());
+  EXPECT_TRUE(fixture.models.at(0).links.at(0).inertial_unreadable);
+  ASSERT_EQ(fixture.findings.size(), 1u);
+  EXPECT_EQ(fixture.findings[0].location.line, 11);
+  EXPECT_NE(fixture.findings[0].message.find("'1e-400'"), std::string::npos);
+  ASSERT_TRUE(fixture.models[0].links.at(1).inertial.has_value());
+  EXPECT_EQ(fixture.models[0].links[1].inertial->mass, 3.0);
+  // Numbers outside <inertial> stay read errors (a collision box size).
+  ExpectError(ReadOne("<sdf version='1.7'><model name='m'><link name='l'><collision name='c'>\n"
+                      "<geometry><box><size>1 1 1e-400</size></box></geometry></collision></link>"
+                      "</model></sdf>"),
+              "out of the range", 2);
   // A pose of 5 numbers.
   ExpectError(ReadOne("<sdf version='1.7'><model name='m'>\n<link name='l'><pose>1 2 3 4 5</pose>"
                       "</link></model></sdf>"),
