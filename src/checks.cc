@@ -13,6 +13,7 @@
 #include "massprops/geometry_checks.h"
 #include "massprops/principal_axes.h"
 #include "massprops/rotational_inertia.h"
+#include "massprops/target_profile.h"
 #include "massprops/welded_groups.h"
 
 namespace massprops {
@@ -663,6 +664,7 @@ const std::vector<RuleInfo>& AllRules() {
   static const std::vector<RuleInfo> kAll = [] {
     std::vector<RuleInfo> all = kRules;
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
+    all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
     return all;
   }();
   return kAll;

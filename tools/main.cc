@@ -23,11 +23,13 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
+#include "target_cli.h"
 #include "massprops/checks.h"
 #include "massprops/config.h"
 #include "massprops/model.h"
 #include "massprops/model_reader.h"
 #include "massprops/reporters.h"
+#include "massprops/target_profile.h"
 
 namespace {
 
@@ -60,6 +62,7 @@ struct CheckArgs {
   std::vector<std::string> model_paths;
   bool quiet = false;
   bool list_rules = false;
+  std::string target;  // --target; "" when not given
 };
 
 // A command-line mistake found after CLI11 has parsed the arguments.
@@ -199,6 +202,7 @@ class ConfigCache {
 };
 
 struct Settings {
+  massprops::Target target = massprops::Target::kGeneric;
   CheckOptions options;
   Severity fail_on = Severity::kError;
   std::vector<std::string> model_paths;
@@ -227,6 +231,13 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
   auto settings_for = [&](const fs::path& dir) {
     Settings settings;
     const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
+    // The target profile first; the configuration and the command line override it.
+    if (!args.target.empty()) {
+      settings.target = *massprops::ParseTarget(args.target);
+    } else if (config && config->target) {
+      settings.target = *config->target;
+    }
+    massprops::ApplyTargetProfile(settings.target, &settings.options);
     if (config) {
       massprops::ApplyConfig(*config, settings.options);
       if (config->fail_on) settings.fail_on = *config->fail_on;
@@ -305,6 +316,10 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
       std::vector<Finding> findings = massprops::CheckModel(model, check_options);
       massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
                                           &findings);
+      if (settings[i].target != massprops::Target::kGeneric) {
+        massprops::AddTargetFindings(model, settings[i].target, check_options,
+                                     massprops::cli::ReadMujocoOptions(file), &findings);
+      }
       result.findings.insert(result.findings.end(), findings.begin(), findings.end());
     }
     if (!result.errors.empty()) read_failed = true;
@@ -398,6 +413,7 @@ int main(int argc, char** argv) {
                    "Folder searched for SDF model:// URIs (repeatable)")
       ->type_name("DIR")
       ->allow_extra_args(false);
+  massprops::cli::AddTargetOption(check, &args.target);
   check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
   check->add_flag("--list-rules", args.list_rules, "List the rules and their default severities");
   massprops::cli::AddGeometryCheckOptions(check);
