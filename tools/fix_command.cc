@@ -216,7 +216,7 @@ int RunFix(const FixArgs& args) {
   int remaining_errors = 0;
   for (const Model& model : reread.models) {
     std::vector<Finding> remaining = CheckModel(model, check_options);
-    AddTargetFindings(model, fix_target, check_options, mujoco_options, &remaining);
+    AddTargetFindings(model, fix_target, check_options, mujoco_options, &remaining, text);
     for (const Finding& f : remaining) {
       if (f.severity != Severity::kError) continue;
       ++remaining_errors;

@@ -317,8 +317,9 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
       massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
                                           &findings);
       if (settings[i].target != massprops::Target::kGeneric) {
+        const std::string text = massprops::cli::ReadTextForTarget(file);
         massprops::AddTargetFindings(model, settings[i].target, check_options,
-                                     massprops::cli::ReadMujocoOptions(file), &findings);
+                                     massprops::ReadMujocoCompilerOptions(text), &findings, text);
       }
       result.findings.insert(result.findings.end(), findings.begin(), findings.end());
     }

@@ -11,8 +11,9 @@ namespace massprops::cli {
 /// Adds `--target NAME` to a subcommand; `*target` stays "" when it is not given.
 CLI::Option* AddTargetOption(CLI::App* command, std::string* target);
 
-/// The <mujoco><compiler> settings of the URDF file at `path` (MuJoCo's URDF defaults when the
-/// file is "-", cannot be read, or has none). Never throws.
-MujocoCompilerOptions ReadMujocoOptions(const std::string& path);
+/// The text of the model file at `path`, for what the target profiles read from it (MuJoCo's
+/// <mujoco><compiler>, Gazebo's lumping tags); "" for "-" or a file that cannot be read.
+/// Never throws.
+std::string ReadTextForTarget(const std::string& path);
 
 }  // namespace massprops::cli

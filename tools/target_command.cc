@@ -15,13 +15,13 @@ CLI::Option* AddTargetOption(CLI::App* command, std::string* target) {
       ->check(CLI::IsMember({"generic", "mujoco", "drake", "gazebo"}));
 }
 
-MujocoCompilerOptions ReadMujocoOptions(const std::string& path) {
+std::string ReadTextForTarget(const std::string& path) {
   if (path.empty() || path == "-") return {};
   std::ifstream in(path, std::ios::binary);
   if (!in) return {};
   std::ostringstream text;
   text << in.rdbuf();
-  return ReadMujocoCompilerOptions(text.str());
+  return text.str();
 }
 
 }  // namespace massprops::cli

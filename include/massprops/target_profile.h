@@ -25,6 +25,7 @@
 #include "massprops/checks.h"
 #include "massprops/model.h"
 #include "massprops/repair.h"
+#include "massprops/welded_groups.h"
 
 namespace massprops {
 
@@ -136,13 +137,30 @@ MujocoPrediction PredictMujoco(const Model& model, const MujocoCompilerOptions& 
 /// The target's own findings for `model` (empty for generic), with the severities of `options`
 /// (overrides; a rule turned off is dropped; link ignore comments are honoured).
 /// `mujoco` holds the file's <mujoco><compiler> settings. Never throws.
+/// `text` is the file's text (for Gazebo's <gazebo> lumping tags; may be empty).
 std::vector<Finding> CheckTarget(const Model& model, Target target, const CheckOptions& options,
-                                 const MujocoCompilerOptions& mujoco = {});
+                                 const MujocoCompilerOptions& mujoco = {},
+                                 std::string_view text = {});
 
 /// Adds to the generic `findings` what the target decides about them (e.g. "MuJoCo accepts
 /// it"); appends CheckTarget's findings; keeps the order by line, then rule.
 void AddTargetFindings(const Model& model, Target target, const CheckOptions& options,
-                       const MujocoCompilerOptions& mujoco, std::vector<Finding>* findings);
+                       const MujocoCompilerOptions& mujoco, std::vector<Finding>* findings,
+                       std::string_view text = {});
+
+// ------------------------------------------------------------------------------- Gazebo
+
+/// One body as Gazebo simulates a URDF: a welded group of links joined by fixed joints that are
+/// not kept by <gazebo reference="JOINT"><disableFixedJointLumping>true</...> or
+/// <preserveFixedJoint>true</...> (libsdformat's URDF conversion lumps the others). SDF models
+/// are not lumped (one body per link).
+struct GazeboBody {
+  std::string name;          ///< The body's (root link's) name.
+  std::vector<int> links;    ///< Indices into Model::links, root first.
+  CompositeInertia inertia;  ///< Composite in the root link's frame.
+};
+/// The bodies, in the order of their root links. `urdf_text` is the file (for the tags).
+std::vector<GazeboBody> GazeboBodies(const Model& model, std::string_view urdf_text);
 
 /// Repairs that make the target accept the model, on top of `repairs` (the generic ones, which
 /// are applied first): for MuJoCo, the nearest valid inertia for a triangle refusal and a floor
