@@ -243,3 +243,99 @@ TEST(MujocoProfileTest, CheckCommandTakesTheTarget) {
 
 }  // namespace
 }  // namespace massprops
+
+namespace massprops {
+namespace {
+
+std::vector<Finding> TargetFindings(const std::string& urdf, Target target) {
+  const ReadResult read = ReadModelString(urdf, "t.urdf");
+  EXPECT_EQ(read.models.size(), 1u);
+  if (read.models.empty()) return {};
+  CheckOptions options;
+  ApplyTargetProfile(target, &options);
+  std::vector<Finding> findings = CheckModel(read.models.front(), options);
+  AddTargetFindings(read.models.front(), target, options, ReadMujocoCompilerOptions(urdf),
+                    &findings, urdf);
+  return findings;
+}
+
+int Count(const std::vector<Finding>& findings, const std::string& rule) {
+  int n = 0;
+  for (const Finding& f : findings) n += f.rule == rule ? 1 : 0;
+  return n;
+}
+
+// Drake accepts a massless body when mass lies outboard of it (the yaw link of a two-axis joint),
+// and refuses one with nothing outboard (a massless tip).
+TEST(DrakeProfileTest, MasslessBodyIsAcceptedOnlyWithMassOutboard) {
+  const std::string two_axis = Robot(Link("yaw", "") + Link("pitch", Inertial(1, 0.01, 0.01, 0.01)) +
+                                     Joint("j1", "revolute", "base", "yaw") +
+                                     Joint("j2", "revolute", "yaw", "pitch"));
+  EXPECT_EQ(Count(TargetFindings(two_axis, Target::kDrake), "drake-rejects-massless-body"), 0);
+  const std::string tip = Robot(Link("tip", "") + Joint("j1", "revolute", "base", "tip"));
+  const std::vector<Finding> findings = TargetFindings(tip, Target::kDrake);
+  EXPECT_EQ(Count(findings, "drake-rejects-massless-body"), 1);
+  EXPECT_EQ(Count(findings, "massless-moving-body"), 0);  // the Drake rule decides
+}
+
+// A point mass on the axis of a revolute joint has no moment about it: singular for Drake. The
+// same mass 0.1 m off the axis has m·d² = 0.01 kg·m² about it: fine.
+TEST(DrakeProfileTest, NoMomentAboutTheRevoluteAxisIsRefused) {
+  const std::string on_axis =
+      Robot(Link("p", Inertial(1, 0, 0, 0)) + Joint("j1", "revolute", "base", "p"));
+  EXPECT_EQ(Count(TargetFindings(on_axis, Target::kDrake), "drake-rejects-massless-body"), 1);
+  const std::string off_axis =
+      Robot(Link("p", Inertial(1, 0, 0, 0, "0.1 0 0")) + Joint("j1", "revolute", "base", "p"));
+  EXPECT_EQ(Count(TargetFindings(off_axis, Target::kDrake), "drake-rejects-massless-body"), 0);
+}
+
+// Drake's tolerance is 16·eps·max(1, tr/2) (absolute below 1 kg·m²): 1 + 1 < 2 + 1e-15 is
+// within it (1e-15 < 3.55e-15), 1 + 1 < 2.001 is not.
+TEST(DrakeProfileTest, ValidityUsesDrakesTolerance) {
+  EXPECT_EQ(Count(TargetFindings(Robot(Link("a", Inertial(1, 0.1, 0.1, 0.2 + 1e-15)) +
+                                       Joint("j", "revolute", "base", "a")),
+                                 Target::kDrake),
+                  "drake-rejects-invalid-inertia"),
+            0);
+  EXPECT_EQ(Count(TargetFindings(Robot(Link("a", Inertial(1, 0.1, 0.1, 0.201)) +
+                                       Joint("j", "revolute", "base", "a")),
+                                 Target::kDrake),
+                  "drake-rejects-invalid-inertia"),
+            1);
+}
+
+// Gazebo lumps links across fixed joints unless the joint is preserved; an invalid member of a
+// valid lumped body is a warning, not an error.
+TEST(GazeboProfileTest, LumpsFixedJointsUnlessPreserved) {
+  // The member's moments (0.1, 0.1, 0.3) break the triangle inequality; lumped 1 m from a 10 kg
+  // base, the composite about its center of mass is valid (by the parallel-axis term
+  // m_b·m_a/(m_b+m_a)·1² = 10/11 kg·m² on two axes).
+  const std::string body = Link("member", Inertial(1, 0.1, 0.1, 0.3)) +
+                           "<joint name=\"weld\" type=\"fixed\"><parent link=\"base\"/><child "
+                           "link=\"member\"/><origin xyz=\"1 0 0\"/></joint>";
+  const std::string heavy =
+      "<robot name=\"r\"><link name=\"base\"><inertial><mass value=\"10\"/><inertia ixx=\"1\" "
+      "iyy=\"1\" izz=\"1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link>" +
+      body + "</robot>";
+  const std::vector<Finding> lumped = TargetFindings(heavy, Target::kGazebo);
+  EXPECT_EQ(Count(lumped, "gazebo-lumps-fixed-joint"), 1);
+  int member_findings = 0;
+  for (const Finding& f : lumped) {
+    if (f.rule == "inertia-not-physical" && f.link == "member") {
+      ++member_findings;
+      EXPECT_EQ(f.severity, Severity::kWarning) << f.message;
+    }
+  }
+  EXPECT_EQ(member_findings, 1);
+  const std::string preserved =
+      heavy.substr(0, heavy.size() - 8) +
+      "<gazebo reference=\"weld\"><preserveFixedJoint>true</preserveFixedJoint></gazebo></robot>";
+  const ReadResult read = ReadModelString(preserved, "t.urdf");
+  ASSERT_EQ(read.models.size(), 1u);
+  EXPECT_EQ(GazeboBodies(read.models.front(), preserved).size(), 2u);
+  EXPECT_EQ(GazeboBodies(read.models.front(), heavy).size(), 1u);
+  EXPECT_EQ(Count(TargetFindings(preserved, Target::kGazebo), "gazebo-lumps-fixed-joint"), 0);
+}
+
+}  // namespace
+}  // namespace massprops
