@@ -160,9 +160,12 @@ std::array<double, 6> RotateDiagonalInertia(const Vec3& local, const Quat& q) {
 
 // Parallel-axis term m·(|d|²·1 − d·dᵀ) as {xx, yy, zz, xy, xz, yz} (mjuu_offcenter).
 std::array<double, 6> OffCenter(double mass, const Vec3& d) {
-  return {mass * (d[1] * d[1] + d[2] * d[2]), mass * (d[0] * d[0] + d[2] * d[2]),
-          mass * (d[0] * d[0] + d[1] * d[1]), -mass * d[0] * d[1],
-          -mass * d[0] * d[2],                -mass * d[1] * d[2]};
+  return {mass * (d[1] * d[1] + d[2] * d[2]),
+          mass * (d[0] * d[0] + d[2] * d[2]),
+          mass * (d[0] * d[0] + d[1] * d[1]),
+          -mass * d[0] * d[1],
+          -mass * d[0] * d[2],
+          -mass * d[1] * d[2]};
 }
 
 // Pose composition: (pos, quat) ← (pos, quat) ∘ (add_pos, add_quat) (mjuu_frameaccum).
@@ -186,7 +189,8 @@ Quat MatrixToQuat(const Eigen::Matrix3d& R) {
 }  // namespace
 
 MujocoEigen MujocoEig3(const std::array<double, 6>& full) {
-  const Mat3 mat = {full[0], full[3], full[4], full[3], full[1], full[5], full[4], full[5], full[2]};
+  const Mat3 mat = {full[0], full[3], full[4], full[3], full[1],
+                    full[5], full[4], full[5], full[2]};
   constexpr double kEigEps = 1e-12;
   MujocoEigen out;
   Quat quat = {1, 0, 0, 0};
@@ -517,8 +521,8 @@ class MujocoEmulator {
       body.pos = {joint.X_PC.p_AB.x(), joint.X_PC.p_AB.y(), joint.X_PC.p_AB.z()};
       body.quat = MatrixToQuat(joint.X_PC.R_AB);
       const std::string& type = joint.type_name;
-      if (type == "revolute" || type == "continuous" || type == "prismatic" ||
-          type == "floating" || type == "planar") {
+      if (type == "revolute" || type == "continuous" || type == "prismatic" || type == "floating" ||
+          type == "planar") {
         body.moving = true;
       } else if (type != "fixed") {
         out_.unsupported.push_back("joint '" + joint.name + "' has type '" + type +
@@ -582,7 +586,8 @@ class MujocoEmulator {
     const Link& link = model_.links[body.link];
     const bool from_geoms =
         options_.inertiafromgeom == MujocoCompilerOptions::InertiaFromGeom::kTrue ||
-        (!link.inertial && options_.inertiafromgeom == MujocoCompilerOptions::InertiaFromGeom::kAuto);
+        (!link.inertial &&
+         options_.inertiafromgeom == MujocoCompilerOptions::InertiaFromGeom::kAuto);
     if (link.inertial) {
       // mjXURDF::Body: the six numbers through mju_eig3; the inertial frame turned by its
       // principal axes.
@@ -752,7 +757,9 @@ class MujocoEmulator {
       if (enough(body)) continue;
       bool ok = false;
       for (int c : body.children) ok = ok || (!bodies_[c].moving && enough(bodies_[c]));
-      if (!ok) Error(kMujocoMinValRule, "mass and inertia of moving bodies must be larger than mjMINVAL", b);
+      if (!ok)
+        Error(kMujocoMinValRule, "mass and inertia of moving bodies must be larger than mjMINVAL",
+              b);
     }
   }
 
@@ -767,7 +774,6 @@ class MujocoEmulator {
 MujocoPrediction PredictMujoco(const Model& model, const MujocoCompilerOptions& options) {
   return MujocoEmulator(model, options).Run();
 }
-
 
 // ------------------------------------------------------------------------------- the layer
 
@@ -856,7 +862,8 @@ std::string ExplainMujocoError(const Model& model, const MujocoError& e, const M
   if (e.rule == kMujocoTriangle) {
     const std::array<double, 3>& m = e.inertia;
     text = "its principal moments, as MuJoCo's eigen-solver computes them, are " + Moments(m) +
-           ": " + Num(m[1]) + " + " + Num(m[2]) + " < " + Num(m[0]) + " (MuJoCo's test is exact, "
+           ": " + Num(m[1]) + " + " + Num(m[2]) + " < " + Num(m[0]) +
+           " (MuJoCo's test is exact, "
            "without tolerance). ";
     if (link && link->inertial && PhysicallyValid(WrittenMatrixOf(*link->inertial), tolerance)) {
       text += "Physics disagrees: the inertia is valid within " + Num(tolerance) +
@@ -865,31 +872,37 @@ std::string ExplainMujocoError(const Model& model, const MujocoError& e, const M
       text += "Physics agrees: no real body has this inertia. ";
     }
     const double mean = (m[0] + m[1] + m[2]) / 3;
-    text += "Accepted with <mujoco><compiler balanceinertia=\"true\"/></mujoco> (all three "
-            "moments become their mean " +
-            Num(mean) + "), or after `massprops fix --target mujoco` (the nearest valid inertia)";
+    text +=
+        "Accepted with <mujoco><compiler balanceinertia=\"true\"/></mujoco> (all three "
+        "moments become their mean " +
+        Num(mean) + "), or after `massprops fix --target mujoco` (the nearest valid inertia)";
   } else if (e.rule == kMujocoMinValRule) {
     const std::array<double, 3>& m = e.inertia;
     text = "after fusing static bodies its mass is " + Num(e.mass) + " and its principal moments " +
            Moments(m) + " (mjMINVAL = 1e-15, an absolute bound). ";
     if (e.mass < kMujocoMinVal) {
-      text += "Physics agrees when nothing with mass moves with it; a massless intermediate link "
-              "of a multi-axis joint is fine in physics (Drake accepts it), not in MuJoCo. ";
+      text +=
+          "Physics agrees when nothing with mass moves with it; a massless intermediate link "
+          "of a multi-axis joint is fine in physics (Drake accepts it), not in MuJoCo. ";
     } else {
-      text += "Physics disagrees: a principal moment of 0 is a valid thin rod or point mass "
-              "(MuJoCo's floor is absolute, not relative to the body's size). ";
+      text +=
+          "Physics disagrees: a principal moment of 0 is a valid thin rod or point mass "
+          "(MuJoCo's floor is absolute, not relative to the body's size). ";
     }
-    text += "Accepted with <mujoco><compiler boundmass=\"1e-6\" boundinertia=\"1e-9\"/></mujoco> "
-            "(raises every body below them)";
+    text +=
+        "Accepted with <mujoco><compiler boundmass=\"1e-6\" boundinertia=\"1e-9\"/></mujoco> "
+        "(raises every body below them)";
     if (link && HasCollision(*link)) {
-      text += ", or inertiafromgeom=\"true\" (every body's inertia from its collision geoms, the "
-              "written ones ignored)";
+      text +=
+          ", or inertiafromgeom=\"true\" (every body's inertia from its collision geoms, the "
+          "written ones ignored)";
     }
     text += ", or after `massprops fix --target mujoco` (a negligible mass and moment floor)";
   } else if (e.rule == kMujocoFusedInertia) {
-    text = "fusing the links welded to it by fixed joints (fusestatic, on for URDF) gives the "
-           "principal moments " +
-           Moments(e.inertia) + ", the smallest below 1e-14";
+    text =
+        "fusing the links welded to it by fixed joints (fusestatic, on for URDF) gives the "
+        "principal moments " +
+        Moments(e.inertia) + ", the smallest below 1e-14";
     if (body != nullptr && !body->fused_links.empty()) {
       text += " (fused: ";
       for (std::size_t i = 0; i < body->fused_links.size(); ++i) {
@@ -897,12 +910,14 @@ std::string ExplainMujocoError(const Model& model, const MujocoError& e, const M
       }
       text += ")";
     }
-    text += "; MuJoCo names no body in its message. Accepted with <mujoco><compiler "
-            "fusestatic=\"false\"/></mujoco>, or after `massprops fix --target mujoco`";
+    text +=
+        "; MuJoCo names no body in its message. Accepted with <mujoco><compiler "
+        "fusestatic=\"false\"/></mujoco>, or after `massprops fix --target mujoco`";
   } else if (e.rule == kMujocoGeomMass) {
-    text = "the link has no <inertial>, so MuJoCo takes its inertia from its geoms (density 1000, "
-           "visual geoms 0), which give mass " +
-           Num(e.mass) + "; add an <inertial>, or run `massprops fix --target mujoco`";
+    text =
+        "the link has no <inertial>, so MuJoCo takes its inertia from its geoms (density 1000, "
+        "visual geoms 0), which give mass " +
+        Num(e.mass) + "; add an <inertial>, or run `massprops fix --target mujoco`";
   } else {
     text = "mass " + Num(e.mass) + ", principal moments " + Moments(e.inertia) +
            " after boundmass/boundinertia";
@@ -1014,8 +1029,8 @@ void CheckDrake(const Model& model, FindingSink* sink) {
     if (why.empty()) continue;
     const Link& link = model.links[root];
     sink->Emit(kDrakeMassless, root, link.location,
-               "Drake cannot simulate link '" + link.name + "' on " + joint.type_name +
-                   " joint '" + joint.name + "': " + why +
+               "Drake cannot simulate link '" + link.name + "' on " + joint.type_name + " joint '" +
+                   joint.name + "': " + why +
                    ", so its articulated body hinge inertia is singular (Drake accepts a massless "
                    "body only when mass lies outboard of it)",
                {{"subtree_mass", composite.mass}, {"value", value}});
@@ -1049,9 +1064,9 @@ std::set<std::string> PreservedFixedJoints(std::string_view urdf_text) {
 
 std::vector<GazeboBody> GazeboBodies(const Model& model, std::string_view urdf_text) {
   std::vector<GazeboBody> bodies;
-  const std::set<std::string> preserved =
-      model.format == Model::Format::kUrdf ? PreservedFixedJoints(urdf_text)
-                                           : std::set<std::string>();
+  const std::set<std::string> preserved = model.format == Model::Format::kUrdf
+                                              ? PreservedFixedJoints(urdf_text)
+                                              : std::set<std::string>();
   // Links joined by a fixed joint that is not preserved form one body (SDF models are not
   // lumped: lumping is part of the URDF conversion).
   Model lumping = model;
@@ -1110,11 +1125,11 @@ std::vector<Finding> CheckTarget(const Model& model, Target target, const CheckO
         if (b.link == e.link) body = &b;
       }
       const Link* link = e.link >= 0 ? &model.links[e.link] : nullptr;
-      std::string message =
-          "MuJoCo 2.2.2 refuses the file" + std::string(link ? " at body '" + link->name + "'" : "") +
-          ": \"" + e.message + "\"" +
-          (i == 0 ? " (the first refusal: this is the one MuJoCo reports)" : "") + "; " +
-          ExplainMujocoError(model, e, body, options.tolerance);
+      std::string message = "MuJoCo 2.2.2 refuses the file" +
+                            std::string(link ? " at body '" + link->name + "'" : "") + ": \"" +
+                            e.message + "\"" +
+                            (i == 0 ? " (the first refusal: this is the one MuJoCo reports)" : "") +
+                            "; " + ExplainMujocoError(model, e, body, options.tolerance);
       sink.Emit(e.rule, e.link, link ? InertiaLocationOf(*link) : model.location,
                 std::move(message),
                 {{"mass", e.mass},
@@ -1271,8 +1286,8 @@ std::vector<Repair> PlanTargetRepairs(const Model& model, Target target,
       } else if (e.rule == kMujocoMinValRule || e.rule == kMujocoFusedInertia ||
                  e.rule == kMujocoGeomMass) {
         if (!(after.mass >= kMujocoMinVal) || !std::isfinite(after.mass)) after.mass = mass_floor;
-        const double largest = std::max({std::fabs(e.inertia[0]), std::fabs(e.inertia[1]),
-                                         std::fabs(e.inertia[2])});
+        const double largest =
+            std::max({std::fabs(e.inertia[0]), std::fabs(e.inertia[1]), std::fabs(e.inertia[2])});
         const double floor = std::max({1e-9 * largest, mass_floor * 1e-4, 1e-12});
         Eigen::Matrix3d I = WrittenMatrixOf(after);
         if (!I.allFinite()) continue;

@@ -87,8 +87,8 @@ TEST(MujocoEig3Test, MatchesLibmujocoBitForBitOnRotatedThinShapesAndInvalidInert
       I = (0.5 * (I + I.transpose())).eval();
     }
     const std::array<double, 6> full = {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)};
-    const mjtNum mat[9] = {full[0], full[3], full[4], full[3], full[1], full[5],
-                           full[4], full[5], full[2]};
+    const mjtNum mat[9] = {full[0], full[3], full[4], full[3], full[1],
+                           full[5], full[4], full[5], full[2]};
     mjtNum eigval[3], eigvec[9], quat[4];
     mju_eig3(eigval, eigvec, quat, mat);
     const MujocoEigen ours = MujocoEig3(full);
@@ -130,7 +130,8 @@ MujocoLoad LoadInChild(const std::string& path) {
   close(fds[0]);
   int status = 0;
   waitpid(pid, &status, 0);
-  if (WIFSIGNALED(status)) return {false, "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"};
+  if (WIFSIGNALED(status))
+    return {false, "crashed (signal " + std::to_string(WTERMSIG(status)) + ")"};
   if (out.rfind("OK", 0) == 0) return {true, ""};
   return {false, out.size() >= 4 ? out.substr(4) : out};
 }
@@ -308,11 +309,12 @@ TEST(MujocoProfileCorpusTest, PredictsMujocosDecisionOnEveryCorpusUrdf) {
     // `massprops fix --target mujoco` (the MuJoCo repairs alone, as the tool plans them on top of
     // the generic ones) makes MuJoCo accept the file.
     if (!o.mujoco_ok) {
-      const std::vector<Repair> repairs = PlanTargetRepairs(
-          read.models.front(), Target::kMujoco, ReadMujocoCompilerOptions(text), {});
+      const std::vector<Repair> repairs = PlanTargetRepairs(read.models.front(), Target::kMujoco,
+                                                            ReadMujocoCompilerOptions(text), {});
       const PatchResult patched = PatchModelText(text, Model::Format::kUrdf, repairs);
       EXPECT_TRUE(patched.errors.empty()) << patched.errors.front().message;
-      const std::string fixed = (tmp / ("fixed_" + std::to_string(outcomes.size()) + ".urdf")).string();
+      const std::string fixed =
+          (tmp / ("fixed_" + std::to_string(outcomes.size()) + ".urdf")).string();
       {
         std::ofstream out(fixed);
         out << patched.text;
@@ -334,11 +336,12 @@ TEST(MujocoProfileCorpusTest, PredictsMujocosDecisionOnEveryCorpusUrdf) {
   for (const auto& [file, why] : MassPropsCannotRead()) {
     EXPECT_TRUE(unreadable.count(file)) << file << " is readable now; update the list";
   }
-  std::printf("MuJoCo 2.2.2 on %zu corpus URDFs: %zu compared (%d as they are), %d accepted, %d "
-              "refused on mass properties (%d accepted after fix --target mujoco); %zu MuJoCo cannot open, "
-              "%zu massprops cannot read\n",
-              rows.size(), outcomes.size(), on_original, accepted, refused, fixed_accepted,
-              not_comparable.size(), unreadable.size());
+  std::printf(
+      "MuJoCo 2.2.2 on %zu corpus URDFs: %zu compared (%d as they are), %d accepted, %d "
+      "refused on mass properties (%d accepted after fix --target mujoco); %zu MuJoCo cannot open, "
+      "%zu massprops cannot read\n",
+      rows.size(), outcomes.size(), on_original, accepted, refused, fixed_accepted,
+      not_comparable.size(), unreadable.size());
   EXPECT_EQ(outcomes.size() + not_comparable.size() + unreadable.size(), rows.size());
 }
 

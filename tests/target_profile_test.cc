@@ -31,7 +31,8 @@ std::string Link(const std::string& name, const std::string& inertial) {
   return "<link name=\"" + name + "\">" + inertial + "</link>";
 }
 
-std::string Inertial(double mass, double ixx, double iyy, double izz, const std::string& xyz = "0 0 0") {
+std::string Inertial(double mass, double ixx, double iyy, double izz,
+                     const std::string& xyz = "0 0 0") {
   char buffer[512];
   std::snprintf(buffer, sizeof(buffer),
                 "<inertial><origin xyz=\"%s\"/><mass value=\"%.17g\"/><inertia ixx=\"%.17g\" "
@@ -99,9 +100,8 @@ TEST(MujocoProfileTest, MovingThinRodIsRefusedBelowMinVal) {
 // relative violation 1e-7 / 0.3333333 = 3e-7 is within massprops' tolerance 1e-6 (valid), but
 // MuJoCo's test is exact — even on the fixed root, which it compiles before fusing.
 TEST(MujocoProfileTest, RoundedThinDiskIsRefusedByTheExactTriangleTest) {
-  const std::string disk = "<robot name=\"r\">" + Link("base", Inertial(1, 0.0833333, 0.0833333,
-                                                                         0.1666667)) +
-                           "</robot>";
+  const std::string disk = "<robot name=\"r\">" +
+                           Link("base", Inertial(1, 0.0833333, 0.0833333, 0.1666667)) + "</robot>";
   const MujocoPrediction p = Predict(disk);
   ASSERT_EQ(p.errors.size(), 1u);
   EXPECT_EQ(p.errors[0].rule, "mujoco-rejects-inertia-triangle");
@@ -227,7 +227,8 @@ TEST(MujocoProfileTest, CheckCommandTakesTheTarget) {
   }
   const test_support::ToolRun plain = test_support::RunTool("check '" + path + "'");
   EXPECT_EQ(plain.exit_code, 0) << plain.output;
-  const test_support::ToolRun mujoco = test_support::RunTool("check --target mujoco '" + path + "'");
+  const test_support::ToolRun mujoco =
+      test_support::RunTool("check --target mujoco '" + path + "'");
   EXPECT_EQ(mujoco.exit_code, 1) << mujoco.output;
   EXPECT_NE(mujoco.output.find("[mujoco-rejects-inertia-triangle]"), std::string::npos);
   const test_support::ToolRun bad = test_support::RunTool("check --target bullet '" + path + "'");
@@ -268,9 +269,9 @@ int Count(const std::vector<Finding>& findings, const std::string& rule) {
 // Drake accepts a massless body when mass lies outboard of it (the yaw link of a two-axis joint),
 // and refuses one with nothing outboard (a massless tip).
 TEST(DrakeProfileTest, MasslessBodyIsAcceptedOnlyWithMassOutboard) {
-  const std::string two_axis = Robot(Link("yaw", "") + Link("pitch", Inertial(1, 0.01, 0.01, 0.01)) +
-                                     Joint("j1", "revolute", "base", "yaw") +
-                                     Joint("j2", "revolute", "yaw", "pitch"));
+  const std::string two_axis =
+      Robot(Link("yaw", "") + Link("pitch", Inertial(1, 0.01, 0.01, 0.01)) +
+            Joint("j1", "revolute", "base", "yaw") + Joint("j2", "revolute", "yaw", "pitch"));
   EXPECT_EQ(Count(TargetFindings(two_axis, Target::kDrake), "drake-rejects-massless-body"), 0);
   const std::string tip = Robot(Link("tip", "") + Joint("j1", "revolute", "base", "tip"));
   const std::vector<Finding> findings = TargetFindings(tip, Target::kDrake);
