@@ -132,7 +132,8 @@ Config ParseConfig(std::string_view text, const std::string& source_name) {
       }
     } else {
       Fail(source_name, key.source(),
-           "unknown key '" + name + "' (known keys: fail-on, tolerance, target, model-paths, [rules])");
+           "unknown key '" + name +
+               "' (known keys: fail-on, tolerance, target, model-paths, [rules])");
     }
   }
   return config;

@@ -354,7 +354,8 @@ class Patcher {
     }
     block += ci + "</inertial>";
     if (self_closing) {
-      edits_.push_back({link.open_end - 2, 2, ">" + block + nl + Indent(link.open_begin) + "</link>"});
+      edits_.push_back(
+          {link.open_end - 2, 2, ">" + block + nl + Indent(link.open_begin) + "</link>"});
       return;
     }
     edits_.push_back({link.open_end, 0, block});

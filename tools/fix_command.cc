@@ -23,13 +23,13 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
-#include "target_cli.h"
 #include "massprops/checks.h"
 #include "massprops/geometry_checks.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
 #include "massprops/xml_patch.h"
+#include "target_cli.h"
 
 namespace massprops::cli {
 namespace {

@@ -23,13 +23,13 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
-#include "target_cli.h"
 #include "massprops/checks.h"
 #include "massprops/config.h"
 #include "massprops/model.h"
 #include "massprops/model_reader.h"
 #include "massprops/reporters.h"
 #include "massprops/target_profile.h"
+#include "target_cli.h"
 
 namespace {
 

@@ -14,11 +14,11 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
-#include "target_cli.h"
 #include "massprops/mass_report.h"
 #include "massprops/merge_fixed.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
+#include "target_cli.h"
 
 namespace massprops::cli {
 namespace {
@@ -63,8 +63,8 @@ void WriteTargetBodies(std::ostream& out, const Model& model, Target target,
       out << "  MuJoCo accepts the mass properties.\n";
     } else {
       const MujocoError& e = p.errors.front();
-      out << "  MuJoCo refuses: " << e.message
-          << (e.body.empty() ? "" : " (body '" + e.body + "')") << "\n";
+      out << "  MuJoCo refuses: " << e.message << (e.body.empty() ? "" : " (body '" + e.body + "')")
+          << "\n";
     }
     for (const std::string& why : p.unsupported) out << "  not predicted: " << why << "\n";
   } else if (target == Target::kGazebo) {
