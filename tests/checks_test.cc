@@ -1,4 +1,5 @@
 #include "massprops/checks.h"
+#include "massprops/target_profile.h"
 
 #include <gtest/gtest.h>
 
@@ -70,9 +71,11 @@ INSTANTIATE_TEST_SUITE_P(EveryRuleWithAFixture, RuleFixtureTest,
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
-  // 12 rules of CheckModel + 3 rules whose findings the readers make (ReadResult::findings) + 2
-  // geometry rules (geometry_checks.h), off unless --geometry.
-  EXPECT_EQ(ids.size(), 17u);
+  // 12 rules of CheckModel + 3 rules whose findings the readers make (ReadResult::findings) + 9
+  // target-profile rules (target_profile.h, reported only with --target) + 2 geometry rules
+  // (geometry_checks.h), off unless --geometry.
+  EXPECT_EQ(ids.size(), 17u + TargetRules().size());
+  EXPECT_EQ(TargetRules().size(), 9u);
   EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);
   EXPECT_EQ(ToString(Severity::kNote), std::string("note"));

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -240,6 +241,24 @@ TEST(MujocoProfileTest, CheckCommandTakesTheTarget) {
   ASSERT_EQ(reread.models.size(), 1u) << fixed.output;
   EXPECT_TRUE(PredictMujoco(reread.models.front()).accepted()) << fixed.output;
   std::remove(path.c_str());
+}
+
+// `target = "mujoco"` in .massprops.toml applies to files below it; --target generic overrides it.
+TEST(MujocoProfileTest, ConfigurationFileSetsTheTarget) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "massprops_target_config";
+  fs::create_directories(dir);
+  {
+    std::ofstream out(dir / "disk.urdf");
+    out << "<robot name=\"r\">" << Link("base", Inertial(1, 0.0833333, 0.0833333, 0.1666667))
+        << "</robot>\n";
+    std::ofstream config(dir / ".massprops.toml");
+    config << "target = \"mujoco\"\n";
+  }
+  const std::string file = "'" + (dir / "disk.urdf").string() + "'";
+  EXPECT_EQ(test_support::RunTool("check " + file).exit_code, 1);
+  EXPECT_EQ(test_support::RunTool("check --target generic " + file).exit_code, 0);
+  fs::remove_all(dir);
 }
 
 }  // namespace
