@@ -584,6 +584,10 @@ class MujocoEmulator {
   void CompileBody(int b) {
     MjBody& body = bodies_[b];
     const Link& link = model_.links[body.link];
+    if (link.inertial_unreadable) {
+      out_.unsupported.push_back("the <inertial> of link '" + link.name +
+                                 "' could not be read (inertial-unreadable)");
+    }
     const bool from_geoms =
         options_.inertiafromgeom == MujocoCompilerOptions::InertiaFromGeom::kTrue ||
         (!link.inertial &&

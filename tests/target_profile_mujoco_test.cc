@@ -286,6 +286,10 @@ TEST(MujocoProfileCorpusTest, PredictsMujocosDecisionOnEveryCorpusUrdf) {
     }();
     const MujocoPrediction prediction =
         PredictMujoco(read.models.front(), ReadMujocoCompilerOptions(text));
+    if (!prediction.unsupported.empty() && MassPropsCannotRead().count(row.file)) {
+      unreadable.insert(row.file);  // read, but an <inertial> massprops could not read
+      continue;
+    }
     EXPECT_TRUE(prediction.unsupported.empty())
         << "prediction incomplete: " << prediction.unsupported.front();
     Outcome o;
