@@ -13,6 +13,7 @@
 #include "massprops/geometry_checks.h"
 #include "massprops/principal_axes.h"
 #include "massprops/rotational_inertia.h"
+#include "massprops/target_profile.h"
 #include "massprops/welded_groups.h"
 
 namespace massprops {
@@ -664,6 +665,7 @@ const std::vector<RuleInfo>& AllRules() {
   // rule id is known to the tool, the configuration file and SARIF.
   static const std::vector<RuleInfo> kAll = [] {
     std::vector<RuleInfo> all = kRules;
+    all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
     return all;
   }();

@@ -94,6 +94,15 @@ Config ParseConfig(std::string_view text, const std::string& source_name) {
                  std::to_string(*value));
       }
       config.tolerance = *value;
+    } else if (name == "target") {
+      const auto* value = node.as_string();
+      const std::optional<Target> target =
+          value ? ParseTarget(value->get()) : std::optional<Target>();
+      if (!target) {
+        Fail(source_name, node.source(),
+             "'target' must be \"generic\", \"mujoco\", \"drake\" or \"gazebo\"");
+      }
+      config.target = target;
     } else if (name == "model-paths") {
       const auto* array = node.as_array();
       if (!array) Fail(source_name, node.source(), "'model-paths' must be an array of strings");
@@ -123,7 +132,8 @@ Config ParseConfig(std::string_view text, const std::string& source_name) {
       }
     } else {
       Fail(source_name, key.source(),
-           "unknown key '" + name + "' (known keys: fail-on, tolerance, model-paths, [rules])");
+           "unknown key '" + name +
+               "' (known keys: fail-on, tolerance, target, model-paths, [rules])");
     }
   }
   return config;

@@ -328,10 +328,8 @@ class Patcher {
   }
 
   void InsertInertial(const Span& link, const Inertial& in) {
-    if (link.close_begin == link.open_end && t_[link.open_end - 2] == '/') {
-      Fail("the <link> element is empty (<link/>)");
-      return;
-    }
+    // An empty <link .../> is opened up: "/>" becomes ">" + the block + "</link>".
+    const bool self_closing = link.close_begin == link.open_end && t_[link.open_end - 2] == '/';
     const auto [ci, u] = ChildIndent(link);
     const std::string nl = Newline(link.open_begin);
     auto n = [](double x) { return FormatShortest(x); };
@@ -355,6 +353,11 @@ class Patcher {
       block += ci + u + "</inertia>" + nl;
     }
     block += ci + "</inertial>";
+    if (self_closing) {
+      edits_.push_back(
+          {link.open_end - 2, 2, ">" + block + nl + Indent(link.open_begin) + "</link>"});
+      return;
+    }
     edits_.push_back({link.open_end, 0, block});
   }
 

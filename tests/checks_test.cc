@@ -1,4 +1,5 @@
 #include "massprops/checks.h"
+#include "massprops/target_profile.h"
 
 #include <gtest/gtest.h>
 
@@ -71,9 +72,10 @@ TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
   // 12 rules of CheckModel + 4 rules whose findings the readers make (ReadResult::findings,
-  // inertial-auto from the SDF reader, issue 14) + 2
-  // geometry rules (geometry_checks.h), off unless --geometry.
-  EXPECT_EQ(ids.size(), 18u);
+  // inertial-auto from the SDF reader) + 9 target-profile rules (target_profile.h, reported only
+  // with --target) + 2 geometry rules (geometry_checks.h), off unless --geometry.
+  EXPECT_EQ(ids.size(), 18u + TargetRules().size());
+  EXPECT_EQ(TargetRules().size(), 9u);
   EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);
   EXPECT_EQ(ToString(Severity::kNote), std::string("note"));

@@ -29,6 +29,7 @@
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
 #include "massprops/xml_patch.h"
+#include "target_cli.h"
 
 namespace massprops::cli {
 namespace {
@@ -55,6 +56,7 @@ struct FixArgs {
   std::vector<std::string> model_paths;
   bool geometry = false;
   std::vector<std::string> package_paths;
+  std::string target;  // --target ("" = generic)
 };
 
 // Writes `data` to `path` through a temporary file in the same folder (mkstemp), flushed to disk
@@ -151,7 +153,10 @@ int RunFix(const FixArgs& args) {
   options.from_geometry_links = args.from_geometry_links;
   options.tolerance = args.tolerance;
   CheckOptions check_options;
+  const Target fix_target = args.target.empty() ? Target::kGeneric : *ParseTarget(args.target);
+  ApplyTargetProfile(fix_target, &check_options);
   check_options.tolerance = args.tolerance;
+  const MujocoCompilerOptions mujoco_options = ReadMujocoCompilerOptions(text);
   // Meshes are read only when asked: --geometry (the checks and repairs use them) or
   // --from-geometry (the inertials it replaces may come from meshes). Each file is read once.
   MeshCache mesh_cache;
@@ -168,6 +173,9 @@ int RunFix(const FixArgs& args) {
     for (const Link& link : model.links) known_links.push_back(link.name);
     const std::vector<Finding> findings = CheckModel(model, check_options);
     std::vector<Repair> planned = PlanRepairs(model, findings, options);
+    if (fix_target != Target::kGeneric) {  // what the simulator needs on top (target_profile.h)
+      planned = PlanTargetRepairs(model, fix_target, mujoco_options, planned);
+    }
     repairs.insert(repairs.end(), planned.begin(), planned.end());
   }
   for (const std::string& link : args.from_geometry_links) {
@@ -207,7 +215,9 @@ int RunFix(const FixArgs& args) {
   }
   int remaining_errors = 0;
   for (const Model& model : reread.models) {
-    for (const Finding& f : CheckModel(model, check_options)) {
+    std::vector<Finding> remaining = CheckModel(model, check_options);
+    AddTargetFindings(model, fix_target, check_options, mujoco_options, &remaining, text);
+    for (const Finding& f : remaining) {
       if (f.severity != Severity::kError) continue;
       ++remaining_errors;
       std::cerr << f.location.file << ":" << f.location.line << ": error: " << f.message << " ["
@@ -316,6 +326,7 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
                 "Judge and repair units, product signs and inertias about the origin against "
                 "mesh geometry too (as check --geometry); meshes are read");
   AddPackagePathOption(fix, &args->package_paths);
+  AddTargetOption(fix, &args->target);
   fix->add_option("--tolerance", args->tolerance,
                   "Validity tolerance relative to the trace (as check; default 1e-6)");
   fix->add_option("--model-path", args->model_paths, "Folder searched for SDF model:// URIs")

@@ -31,6 +31,8 @@
 #include "massprops/model.h"
 #include "massprops/model_reader.h"
 #include "massprops/reporters.h"
+#include "massprops/target_profile.h"
+#include "target_cli.h"
 
 namespace {
 
@@ -63,7 +65,8 @@ struct CheckArgs {
   std::vector<std::string> model_paths;
   bool quiet = false;
   bool list_rules = false;
-  int jobs = 0;  // 0: one per core
+  int jobs = 0;         // 0: one per core
+  std::string target;  // --target; "" when not given
 };
 
 // A command-line mistake found after CLI11 has parsed the arguments.
@@ -238,6 +241,7 @@ void RunInParallel(std::size_t count, std::size_t threads,
 }
 
 struct Settings {
+  massprops::Target target = massprops::Target::kGeneric;
   CheckOptions options;
   Severity fail_on = Severity::kError;
   std::vector<std::string> model_paths;
@@ -266,6 +270,13 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
   auto settings_for = [&](const fs::path& dir) {
     Settings settings;
     const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
+    // The target profile first; the configuration and the command line override it.
+    if (!args.target.empty()) {
+      settings.target = *massprops::ParseTarget(args.target);
+    } else if (config && config->target) {
+      settings.target = *config->target;
+    }
+    massprops::ApplyTargetProfile(settings.target, &settings.options);
     if (config) {
       massprops::ApplyConfig(*config, settings.options);
       if (config->fail_on) settings.fail_on = *config->fail_on;
@@ -342,6 +353,11 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
       std::vector<Finding> findings = massprops::CheckModel(model, check_options);
       massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
                                           &findings);
+      if (settings[i].target != massprops::Target::kGeneric) {
+        const std::string text = massprops::cli::ReadTextForTarget(file);
+        massprops::AddTargetFindings(model, settings[i].target, check_options,
+                                     massprops::ReadMujocoCompilerOptions(text), &findings, text);
+      }
       result.findings.insert(result.findings.end(), findings.begin(), findings.end());
     }
     return result;
@@ -443,6 +459,7 @@ int main(int argc, char** argv) {
                    "Folder searched for SDF model:// URIs (repeatable)")
       ->type_name("DIR")
       ->allow_extra_args(false);
+  massprops::cli::AddTargetOption(check, &args.target);
   check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
   check
       ->add_option("-j,--jobs", args.jobs,

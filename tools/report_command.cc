@@ -18,6 +18,7 @@
 #include "massprops/merge_fixed.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
+#include "target_cli.h"
 
 namespace massprops::cli {
 namespace {
@@ -35,7 +36,57 @@ struct ReportArgs {
   std::vector<std::string> model_paths;
   bool geometry = false;
   std::vector<std::string> package_paths;
+  std::string target;  // --target ("" = generic)
 };
+
+// `report --target`: the bodies as the simulator sees them (text format).
+void WriteTargetBodies(std::ostream& out, const Model& model, Target target,
+                       const std::string& text) {
+  char line[512];
+  if (target == Target::kMujoco) {
+    const MujocoPrediction p = PredictMujoco(model, ReadMujocoCompilerOptions(text));
+    out << "\nBodies as MuJoCo 2.2.2 compiles " << model.name
+        << " (fusestatic; principal moments as its eigen-solver gives them):\n";
+    for (const MujocoBody& b : p.bodies) {
+      std::snprintf(line, sizeof(line), "  %-32s %s mass %-12.6g moments %.6g, %.6g, %.6g",
+                    b.name.c_str(), b.moving ? "moving" : "static", b.mass, b.inertia[0],
+                    b.inertia[1], b.inertia[2]);
+      out << line;
+      if (!b.fused_links.empty()) {
+        out << "  (fused:";
+        for (int l : b.fused_links) out << " " << model.links[l].name;
+        out << ")";
+      }
+      out << "\n";
+    }
+    if (p.accepted()) {
+      out << "  MuJoCo accepts the mass properties.\n";
+    } else {
+      const MujocoError& e = p.errors.front();
+      out << "  MuJoCo refuses: " << e.message << (e.body.empty() ? "" : " (body '" + e.body + "')")
+          << "\n";
+    }
+    for (const std::string& why : p.unsupported) out << "  not predicted: " << why << "\n";
+  } else if (target == Target::kGazebo) {
+    out << "\nBodies as Gazebo simulates " << model.name
+        << " (fixed joints lumped unless preserved):\n";
+    for (const GazeboBody& b : GazeboBodies(model, text)) {
+      std::snprintf(line, sizeof(line), "  %-32s mass %-12.6g com (%.6g, %.6g, %.6g)",
+                    b.name.c_str(), b.inertia.mass, b.inertia.p_RoScm_R.x(),
+                    b.inertia.p_RoScm_R.y(), b.inertia.p_RoScm_R.z());
+      out << line;
+      if (b.links.size() > 1) {
+        out << "  (lumped:";
+        for (std::size_t i = 1; i < b.links.size(); ++i) out << " " << model.links[b.links[i]].name;
+        out << ")";
+      }
+      out << "\n";
+    }
+  } else if (target == Target::kDrake) {
+    out << "\nDrake keeps every link of " << model.name
+        << " as a body (fixed joints become welds); see the per-link report above.\n";
+  }
+}
 
 struct MergeArgs {
   std::string input;
@@ -117,6 +168,14 @@ int RunReport(const ReportArgs& args) {
     }
   }
   WriteMassReport(std::cout, format, reports, errors, options.digits_lost_threshold);
+  if (!args.target.empty() && args.target != "generic" && format == MassReportFormat::kText) {
+    const Target target = *ParseTarget(args.target);
+    for (const std::string& file : args.files) {
+      const std::string text = ReadTextForTarget(file);
+      const ReadResult read = ReadModelString(text, file, read_options);
+      for (const Model& model : read.models) WriteTargetBodies(std::cout, model, target, text);
+    }
+  }
   std::cout.flush();
   return errors.empty() ? kExitOk : kExitError;
 }
@@ -202,6 +261,7 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
                    "Also give, per link, the inertia its geometry (collision, else visual; "
                    "meshes read) implies for its declared mass, and how the declared one differs");
   AddPackagePathOption(report, &report_args->package_paths);
+  AddTargetOption(report, &report_args->target);
   report->callback(
       [run, report_args] { *run = [report_args] { return RunReport(*report_args); }; });
 

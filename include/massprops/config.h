@@ -4,6 +4,7 @@
 /// ```
 /// fail-on = "warning"          # error (default) | warning | note
 /// tolerance = 1e-6             # relative validity tolerance, 0 <= t < 1
+/// target = "mujoco"            # generic (default) | mujoco | drake | gazebo (target_profile.h)
 /// model-paths = ["models"]     # folders searched for SDF model:// URIs (relative to the file)
 /// [rules]
 /// units-suspect = "off"        # off | note | warning | error
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "massprops/checks.h"
+#include "massprops/target_profile.h"
 
 namespace massprops {
 
@@ -32,6 +34,7 @@ struct Config {
   std::string path;                 ///< The file it was read from (empty for ParseConfig text).
   std::optional<Severity> fail_on;  ///< `fail-on`.
   std::optional<double> tolerance;  ///< `tolerance`.
+  std::optional<Target> target;     ///< `target`: the simulator profile (see target_profile.h).
   /// `model-paths`, each made absolute against the folder of the config file (when read from a
   /// file), else as written.
   std::vector<std::string> model_paths;
