@@ -160,13 +160,15 @@ std::string Causes(double ratio) {
   const double factor = ratio * ratio / 0.25;  // (k / k_expected)², k_expected = half-diagonal / 2
   std::string text = "the causes that fit: ";
   if (ratio > 1) {
-    text += "an inertia raised on purpose (to stabilise a simulation) or copied from a bigger "
-            "part, a mass lowered without its inertia, a placeholder inertia, or a unit slip (" +
-            GuessUnitError(factor) + ")";
+    text +=
+        "an inertia raised on purpose (to stabilise a simulation) or copied from a bigger "
+        "part, a mass lowered without its inertia, a placeholder inertia, or a unit slip (" +
+        GuessUnitError(factor) + ")";
   } else {
-    text += "a placeholder inertia, a mass raised without its inertia (the inertia of the old "
-            "mass), or " +
-            GuessUnitError(factor) + ")";
+    text +=
+        "a placeholder inertia, a mass raised without its inertia (the inertia of the old "
+        "mass), or " +
+        GuessUnitError(factor) + ")";
   }
   return text;
 }
@@ -465,8 +467,8 @@ class Checker {
           Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
                who + ": the inertia needs more room than the " + geometry_kind +
                    " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
-                   " kg·m² about the center o of its bounding box, r = " + Num(allowance * kGeometryMargin) +
-                   " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " kg·m² about the center o of its bounding box, r = " +
+                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
                    " m), but taken as the inertia about the link origin and shifted to the center "
                    "of mass " +
                    Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) +
@@ -483,8 +485,8 @@ class Checker {
                who + ": no mass distribution inside the bounding box of the " + geometry_kind +
                    " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
                    " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
-                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " + Num(allowance * kGeometryMargin) +
-                   " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " +
+                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
                    " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
                {{"spread", spread},
                 {"bound", bound},
@@ -536,7 +538,8 @@ class Checker {
       result.partial |= b->partial;
       const Pose X_LM = X_LR * group.X_RL[k];
       for (int corner = 0; corner < 8; ++corner) {
-        const Eigen::Vector3d p = b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
         result.box_B.extend(X_LM.p_AB + X_LM.R_AB * p);
       }
     }

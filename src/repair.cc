@@ -176,43 +176,43 @@ std::optional<PrimitiveMassProperties> FromGeometries(const Link& link, bool col
 void RecomputeChanges(const Model& model, const Link& link, Repair* repair) {
   repair->changes.clear();
   repair->inserts_origin = false;
-    const bool sdf = model.format == Model::Format::kSdf;
-    if (link.inertial) {
-      const Inertial& b = *link.inertial;
-      const Inertial& a = repair->after;
-      auto add = [&](const char* element, const char* attribute, int line, int first,
-                     std::vector<double> old_values, std::vector<double> new_values) {
-        if (old_values == new_values) return;
-        repair->changes.push_back(
-            {element, attribute, line, first, std::move(old_values), std::move(new_values)});
-      };
-      add("mass", sdf ? "" : "value", b.mass_location.line, 0, {b.mass}, {a.mass});
-      if (b.X_BBi.p_AB != a.X_BBi.p_AB) {
-        if (b.pose_location.line == 0) repair->inserts_origin = true;
-        add(sdf ? "pose" : "origin", sdf ? "" : "xyz", b.pose_location.line, 0,
-            {b.X_BBi.p_AB.x(), b.X_BBi.p_AB.y(), b.X_BBi.p_AB.z()},
-            {a.X_BBi.p_AB.x(), a.X_BBi.p_AB.y(), a.X_BBi.p_AB.z()});
-      }
-      const int line = b.inertia_location.line;
-      add("inertia", "ixx", line, 0, {b.ixx}, {a.ixx});
-      add("inertia", "ixy", line, 0, {b.ixy}, {a.ixy});
-      add("inertia", "ixz", line, 0, {b.ixz}, {a.ixz});
-      add("inertia", "iyy", line, 0, {b.iyy}, {a.iyy});
-      add("inertia", "iyz", line, 0, {b.iyz}, {a.iyz});
-      add("inertia", "izz", line, 0, {b.izz}, {a.izz});
-      const Eigen::Matrix3d R = b.X_BBi.R_AB;
-      const Eigen::Matrix3d I_before = R * WrittenMatrix(b) * R.transpose();
-      const Eigen::Matrix3d I_after = R * WrittenMatrix(a) * R.transpose();
-      if (I_before.norm() > 0 && I_before != I_after) {
-        repair->relative_change = (I_after - I_before).norm() / I_before.norm();
-      } else if (I_before == I_after && b.mass != 0) {
-        repair->relative_change = std::abs(a.mass - b.mass) / std::abs(b.mass);
-      } else {
-        repair->relative_change = 1;
-      }
+  const bool sdf = model.format == Model::Format::kSdf;
+  if (link.inertial) {
+    const Inertial& b = *link.inertial;
+    const Inertial& a = repair->after;
+    auto add = [&](const char* element, const char* attribute, int line, int first,
+                   std::vector<double> old_values, std::vector<double> new_values) {
+      if (old_values == new_values) return;
+      repair->changes.push_back(
+          {element, attribute, line, first, std::move(old_values), std::move(new_values)});
+    };
+    add("mass", sdf ? "" : "value", b.mass_location.line, 0, {b.mass}, {a.mass});
+    if (b.X_BBi.p_AB != a.X_BBi.p_AB) {
+      if (b.pose_location.line == 0) repair->inserts_origin = true;
+      add(sdf ? "pose" : "origin", sdf ? "" : "xyz", b.pose_location.line, 0,
+          {b.X_BBi.p_AB.x(), b.X_BBi.p_AB.y(), b.X_BBi.p_AB.z()},
+          {a.X_BBi.p_AB.x(), a.X_BBi.p_AB.y(), a.X_BBi.p_AB.z()});
+    }
+    const int line = b.inertia_location.line;
+    add("inertia", "ixx", line, 0, {b.ixx}, {a.ixx});
+    add("inertia", "ixy", line, 0, {b.ixy}, {a.ixy});
+    add("inertia", "ixz", line, 0, {b.ixz}, {a.ixz});
+    add("inertia", "iyy", line, 0, {b.iyy}, {a.iyy});
+    add("inertia", "iyz", line, 0, {b.iyz}, {a.iyz});
+    add("inertia", "izz", line, 0, {b.izz}, {a.izz});
+    const Eigen::Matrix3d R = b.X_BBi.R_AB;
+    const Eigen::Matrix3d I_before = R * WrittenMatrix(b) * R.transpose();
+    const Eigen::Matrix3d I_after = R * WrittenMatrix(a) * R.transpose();
+    if (I_before.norm() > 0 && I_before != I_after) {
+      repair->relative_change = (I_after - I_before).norm() / I_before.norm();
+    } else if (I_before == I_after && b.mass != 0) {
+      repair->relative_change = std::abs(a.mass - b.mass) / std::abs(b.mass);
     } else {
       repair->relative_change = 1;
     }
+  } else {
+    repair->relative_change = 1;
+  }
 }
 
 // x rounded to `digits` significant decimal digits.
@@ -304,7 +304,8 @@ class Planner {
       }
     }
     if (rules.count("mass-not-positive")) {
-      if (Allows("mass-not-positive") && FromGeometry(link, /*keep_mass=*/false, "mass-not-positive", &plan)) {
+      if (Allows("mass-not-positive") &&
+          FromGeometry(link, /*keep_mass=*/false, "mass-not-positive", &plan)) {
         return Finish(link, plan);
       }
       return std::nullopt;
@@ -624,8 +625,8 @@ std::optional<PrimitiveMassProperties> CalcPrimitiveMassProperties(const Link& l
 
 const std::vector<std::string>& HeuristicRepairRules() {
   static const std::vector<std::string> kRules = {
-      "units-suspect",      "products-sign-suspect", "inertia-about-origin-suspect",
-      "mass-not-positive",  "massless-moving-body",  "inertial-missing"};
+      "units-suspect",     "products-sign-suspect", "inertia-about-origin-suspect",
+      "mass-not-positive", "massless-moving-body",  "inertial-missing"};
   return kRules;
 }
 
@@ -696,8 +697,8 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
   auto problems = [&](const Repair& repair, const std::vector<Repair>& all) {
     std::vector<std::string> found;
     for (const Finding& f : CheckModel(ApplyRepairs(model, all), check_options)) {
-      if (f.link == repair.link && std::find(repair.answers.begin(), repair.answers.end(),
-                                             f.rule) != repair.answers.end()) {
+      if (f.link == repair.link &&
+          std::find(repair.answers.begin(), repair.answers.end(), f.rule) != repair.answers.end()) {
         found.push_back("it leaves " + f.rule + ": " + f.message);
       }
     }

@@ -10,9 +10,9 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <tuple>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "corpus_manifest.h"
@@ -167,8 +167,8 @@ TEST(CorpusFixTest,
     // No finding that the original lacked.
     const auto keys_before = FindingKeys(read);
     for (const auto& key : FindingKeys(after)) {
-      EXPECT_TRUE(keys_before.count(key)) << "new finding " << std::get<2>(key) << " on link '"
-                                          << std::get<1>(key) << "'";
+      EXPECT_TRUE(keys_before.count(key))
+          << "new finding " << std::get<2>(key) << " on link '" << std::get<1>(key) << "'";
     }
     int errors_after = 0, warnings_after = 0;
     Count(after, &errors_after, &warnings_after, /*fixed=*/true);

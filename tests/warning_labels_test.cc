@@ -106,10 +106,11 @@ TEST(WarningLabelsTest, WarningsAreRightNineTimesInTenAndEveryRealOneStillFires)
                        << std::get<1>(key) << " " << std::get<2>(key);
   }
   const double precision = real + noise > 0 ? static_cast<double>(real) / (real + noise) : 0;
-  std::printf("labelled warnings now: %d real, %d noise: precision %.3f; real rows %d, still "
-              "reported %d: recall %.3f\n",
-              real, noise, precision, real_rows, still,
-              real_rows ? static_cast<double>(still) / real_rows : 0);
+  std::printf(
+      "labelled warnings now: %d real, %d noise: precision %.3f; real rows %d, still "
+      "reported %d: recall %.3f\n",
+      real, noise, precision, real_rows, still,
+      real_rows ? static_cast<double>(still) / real_rows : 0);
   EXPECT_GE(precision, 0.9);
 }
 
