@@ -546,6 +546,41 @@ class Checker {
     return result;
   }
 
+  // Whether `box` (in the frame of link `link_index`) lies, or may lie, inside the geometry of
+  // another member of `group` that has a positive mass.
+  bool InsideMassiveNeighbour(const WeldedGroup& group, int link_index,
+                              const Eigen::AlignedBox3d& box) const {
+    Pose X_RL;
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      if (group.links[k] == link_index) X_RL = group.X_RL[k];
+    }
+    const Pose X_LR = X_RL.Inverse();
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      const Link& member = model_.links[group.links[k]];
+      if (group.links[k] == link_index || !member.inertial || !(member.inertial->mass > 0)) {
+        continue;
+      }
+      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      // A neighbour with geometry of unknown size (a mesh not read) may hold the box: cannot
+      // tell, say nothing.
+      if (!member.geometries.empty() && (!b || b->partial)) return true;
+      if (!b) continue;
+      const Pose X_LM = X_LR * group.X_RL[k];
+      Eigen::AlignedBox3d in_link;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        in_link.extend(X_LM.p_AB + X_LM.R_AB * p);
+      }
+      const double slack = 1e-9 * (1 + in_link.diagonal().norm());
+      if ((box.min().array() >= in_link.min().array() - slack).all() &&
+          (box.max().array() <= in_link.max().array() + slack).all()) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   // For an invalid member of a welded group: whether the group is valid as a whole.
   std::string GroupNote(int link_index) const {
     const WeldedGroup& group = groups_[group_of_[link_index]];
@@ -640,9 +675,12 @@ class Checker {
         if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
           continue;
         }
-        // URDF: a link without <inertial> welded to links that carry mass is the usual way of
-        // lumping a part's mass onto its neighbour (simulators merge fixed joints).
-        if (model_.format == Model::Format::kUrdf && group_mass > 0) continue;
+        // URDF: a collision-helper link whose geometry lies inside the geometry of a welded
+        // neighbour that carries mass: that body's mass is given once, on the neighbour.
+        if (model_.format == Model::Format::kUrdf && group_mass > 0 && b && !b->partial &&
+            InsideMassiveNeighbour(group, i, b->box_B)) {
+          continue;
+        }
         Emit(kInertialMissing, link, link.location,
              "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
                  (collisions == 1 ? "y" : "ies") +

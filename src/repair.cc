@@ -224,10 +224,14 @@ double RoundToDigits(double x, int digits) {
 }
 
 // Rounds the numbers of `after` that differ from `before` (all of them when there is no before)
-// to `digits` significant digits; numbers the repair keeps stay exactly as written.
+// to `digits` significant digits; numbers the repair keeps stay exactly as written, and so does
+// the precision of a number that was written with more digits.
 void RoundChanged(const std::optional<Inertial>& before, int digits, Inertial* after) {
+  // A number written with more digits than `digits` keeps them (a negation or a rescaling does not
+  // throw away the file's precision).
   auto round = [&](double old_value, double* x) {
-    if (!before || old_value != *x) *x = RoundToDigits(*x, digits);
+    if (before && (old_value == *x || RoundToDigits(old_value, digits) != old_value)) return;
+    *x = RoundToDigits(*x, digits);
   };
   const Inertial b = before ? *before : Inertial{};
   round(b.mass, &after->mass);

@@ -218,8 +218,8 @@ TEST(CliTest, AFolderIsSearchedRecursivelyForModelsOnly) {
   const json report = json::parse(run.out);
   std::vector<std::string> paths;
   for (const json& file : report.at("files")) paths.push_back(file.at("path"));
-  EXPECT_EQ(paths, (std::vector<std::string>{"tree/a.urdf", "tree/sub/UPPER.URDF",
-                                             "tree/sub/b.sdf", "tree/sub/robot.xml"}));
+  EXPECT_EQ(paths, (std::vector<std::string>{"tree/a.urdf", "tree/sub/UPPER.URDF", "tree/sub/b.sdf",
+                                             "tree/sub/robot.xml"}));
   EXPECT_EQ(report["files"][2].at("format"), "sdf");
   EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "arm"));
   EXPECT_EQ(report.at("summary").at("files"), 4);

@@ -87,9 +87,9 @@ std::vector<bool> InertialLines(const std::string& text) {
 TEST_F(FixCliTest, CadExportIsPatchedExactlyAsTheGoldenFile) {
   // Golden file reviewed by hand, every heuristic asked for (--apply all): upper_arm mass
   // 2000 → 2 (grams); forearm products negated; wrist 0.251 − 1·0.5² = 0.001 (written with the
-  // fewest digits, 6, that pass the checks: not 0.0010000000000000009); cover gets
-  // m = 1000·0.1·0.1·0.02 = 0.2 and Ixx = m(0.1² + 0.02²)/12 = 0.000173333,
-  // Izz = m(0.1² + 0.1²)/12 = 0.000333333 (solid box, 6 significant digits).
+  // fewest digits, 6, that pass the checks: not 0.0010000000000000009); cover (no <inertial>)
+  // is left alone: its box lies inside base_link's, whose 4 kg carries it (a lumped mass, no
+  // inertial-missing finding).
   const ToolRun run = RunTool("fix --apply all '" + kFixDir + "/cad_export.urdf'", dir_);
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.out, ReadFile(kFixDir + "/golden/cad_export.urdf"));
