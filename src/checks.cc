@@ -51,6 +51,16 @@ constexpr double kMaxGyrationRadiusWithoutGeometry = 10;  // metres
 // center, and a center of mass only if it is more than (kGeometryMargin − 1)·r outside the box.
 constexpr double kGeometryMargin = 2;
 
+// Placeholder geometry: a link whose geometry's half-diagonal is below this (a 1 mm sphere, a
+// zero-size box) has no size to judge its inertia by. Dummy masses: a link of at most this mass
+// (0.1 to 1 g markers, frames given a token mass so that a parser accepts them) is not a body
+// whose inertia matters; the geometry rules say nothing about either.
+constexpr double kPlaceholderHalfDiagonal = 0.005;  // metres
+constexpr double kDummyMass = 1e-3;                 // kg
+// Where part of a welded group's geometry is a mesh of unknown size, the known geometry may cover
+// only part of the body: the geometry rules allow it to reach this many times farther.
+constexpr double kPartialGeometryMargin = 3;
+
 std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
 std::string Format(const char* format, ...) {
   char buffer[1024];
@@ -143,6 +153,25 @@ std::string GuessUnitError(double factor) {
     }
   }
   return best->text;
+}
+
+// The causes that fit a radius of gyration `ratio` times the geometry's half-diagonal: the numbers
+// alone cannot tell a unit slip from a placeholder, an edited mass or stabilisation values.
+std::string Causes(double ratio) {
+  const double factor = ratio * ratio / 0.25;  // (k / k_expected)², k_expected = half-diagonal / 2
+  std::string text = "the causes that fit: ";
+  if (ratio > 1) {
+    text +=
+        "an inertia raised on purpose (to stabilise a simulation) or copied from a bigger "
+        "part, a mass lowered without its inertia, a placeholder inertia, or a unit slip (" +
+        GuessUnitError(factor) + ")";
+  } else {
+    text +=
+        "a placeholder inertia, a mass raised without its inertia (the inertia of the old "
+        "mass), or " +
+        GuessUnitError(factor) + ")";
+  }
+  return text;
 }
 
 // A mesh 1000 times too large (an STL in millimetres referenced without scale="0.001 ...") makes
@@ -319,7 +348,24 @@ class Checker {
     // The link as a solid of its geometry (primitives; meshes through options_.shape), and its
     // extent.
     const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
-    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, shape);
+    std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, shape);
+    // Placeholder geometry and dummy masses: nothing to judge by (see kPlaceholderHalfDiagonal).
+    if (bounds && 0.5 * bounds->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
+      bounds.reset();
+    }
+    if (m <= kDummyMass) bounds.reset();
+    // A mass lumped onto one link of a welded group shows as a center of mass outside the link's
+    // own geometry: such a link is judged against the geometry of the whole group (in this link's
+    // frame); any other link against its own (collision and visual).
+    std::optional<GeometryBounds> group_bounds = bounds;
+    if (bounds) {
+      const Eigen::Vector3d h_own = 0.5 * bounds->box_B.sizes();
+      const Eigen::Vector3d out_own =
+          ((c - bounds->box_B.center()).cwiseAbs() - h_own).cwiseMax(Eigen::Vector3d::Zero());
+      if (out_own.norm() > (kGeometryMargin - 1) * h_own.norm()) {
+        group_bounds = GroupBounds(link_index, *bounds);
+      }
+    }
     const std::string geometry_name =
         std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
         (bounds && bounds->from_mesh ? " mesh" : "");
@@ -361,14 +407,17 @@ class Checker {
         const double extent = 0.5 * bounds->box_B.diagonal().norm();
         if (extent > 0) {
           const double ratio = k / extent;
-          if (ratio > kUnitsRatio || ratio < 1 / kUnitsRatio) {
+          const double group_extent = 0.5 * group_bounds->box_B.diagonal().norm();
+          // Too large only against the whole group's known geometry; too small against the link.
+          const bool too_large = ratio > kUnitsRatio && k / group_extent > kUnitsRatio;
+          if (too_large || ratio < 1 / kUnitsRatio) {
             units_flagged = true;
             // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
             Emit(kUnitsSuspect, link, InertiaLocation(link),
                  who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
                      " times the half-diagonal " + Num(extent) + " m of its " + geometry_name +
-                     " geometry (expected " + "about 0.3 to 1): " +
-                     GuessUnitError(ratio * ratio / 0.25) + MeshScaleHint(*bounds, ratio),
+                     " geometry (expected " + "about 0.3 to 1): " + Causes(ratio) +
+                     MeshScaleHint(*bounds, ratio),
                  {{"radius_of_gyration", k},
                   {"geometry_half_diagonal", extent},
                   {"ratio", ratio},
@@ -387,9 +436,13 @@ class Checker {
              {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
       }
     }
-    if (!bounds) return;
-    const Eigen::Vector3d o = bounds->box_B.center();
-    const Eigen::Vector3d h = 0.5 * bounds->box_B.sizes();
+    // The "too large" verdicts below are made against the group's known geometry; where some of
+    // it is of unknown size (a mesh not read), the body may reach farther: the allowance is then
+    // kPartialGeometryMargin times larger.
+    if (!group_bounds) return;
+    const double allowance = group_bounds->partial ? kPartialGeometryMargin : 1.0;
+    const Eigen::Vector3d o = group_bounds->box_B.center();
+    const Eigen::Vector3d h = 0.5 * group_bounds->box_B.sizes();
     const double scale2 = h.squaredNorm();
     const std::string& geometry_kind = geometry_name;
 
@@ -397,7 +450,7 @@ class Checker {
     // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
     // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
     if (valid && !units_flagged) {
-      const double r2 = kGeometryMargin * kGeometryMargin * scale2;
+      const double r2 = allowance * allowance * kGeometryMargin * kGeometryMargin * scale2;
       const Eigen::Vector3d d = c - o;
       // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
       const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
@@ -415,8 +468,8 @@ class Checker {
           Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
                who + ": the inertia needs more room than the " + geometry_kind +
                    " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
-                   " kg·m² about the center o of its bounding box, r = " + Num(kGeometryMargin) +
-                   " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " kg·m² about the center o of its bounding box, r = " +
+                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
                    " m), but taken as the inertia about the link origin and shifted to the center "
                    "of mass " +
                    Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) +
@@ -433,8 +486,8 @@ class Checker {
                who + ": no mass distribution inside the bounding box of the " + geometry_kind +
                    " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
                    " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
-                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " + Num(kGeometryMargin) +
-                   " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " +
+                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
                    " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
                {{"spread", spread},
                 {"bound", bound},
@@ -447,12 +500,12 @@ class Checker {
     // com-outside-geometry.
     const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
     const double distance = outside.norm();
-    const double allowed = (kGeometryMargin - 1) * std::sqrt(scale2);
+    const double allowed = allowance * (kGeometryMargin - 1) * std::sqrt(scale2);
     if (distance - allowed > tol * std::sqrt(scale2)) {
       Emit(kComOutsideGeometry, link, PoseLocation(link),
            who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
-               " m outside the bounding box " + Vec(bounds->box_B.min()) + " to " +
-               Vec(bounds->box_B.max()) + " of its " + geometry_kind +
+               " m outside the bounding box " + Vec(group_bounds->box_B.min()) + " to " +
+               Vec(group_bounds->box_B.max()) + " of its " + geometry_kind +
                " geometry, farther than its half-diagonal " + Num(allowed) + " m",
            {{"com_x", c.x()},
             {"com_y", c.y()},
@@ -460,6 +513,73 @@ class Checker {
             {"distance", distance},
             {"allowed", allowed}});
     }
+  }
+
+  // The union of the known geometry (collision and visual) of every link of `link_index`'s welded
+  // group, in that link's frame, starting from the link's own `bounds`. Partial when a member's
+  // geometry size is not known (meshes).
+  std::optional<GeometryBounds> GroupBounds(int link_index, const GeometryBounds& bounds) const {
+    GeometryBounds result = bounds;
+    const WeldedGroup& group = groups_[group_of_[link_index]];
+    Pose X_RL;
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      if (group.links[k] == link_index) X_RL = group.X_RL[k];
+    }
+    const Pose X_LR = X_RL.Inverse();
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      const int j = group.links[k];
+      if (j == link_index) continue;
+      const Link& member = model_.links[j];
+      if (member.geometries.empty()) continue;
+      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      if (!b) {
+        result.partial = true;
+        continue;
+      }
+      result.partial |= b->partial;
+      const Pose X_LM = X_LR * group.X_RL[k];
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        result.box_B.extend(X_LM.p_AB + X_LM.R_AB * p);
+      }
+    }
+    return result;
+  }
+
+  // Whether `box` (in the frame of link `link_index`) lies, or may lie, inside the geometry of
+  // another member of `group` that has a positive mass.
+  bool InsideMassiveNeighbour(const WeldedGroup& group, int link_index,
+                              const Eigen::AlignedBox3d& box) const {
+    Pose X_RL;
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      if (group.links[k] == link_index) X_RL = group.X_RL[k];
+    }
+    const Pose X_LR = X_RL.Inverse();
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      const Link& member = model_.links[group.links[k]];
+      if (group.links[k] == link_index || !member.inertial || !(member.inertial->mass > 0)) {
+        continue;
+      }
+      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      // A neighbour with geometry of unknown size (a mesh not read) may hold the box: cannot
+      // tell, say nothing.
+      if (!member.geometries.empty() && (!b || b->partial)) return true;
+      if (!b) continue;
+      const Pose X_LM = X_LR * group.X_RL[k];
+      Eigen::AlignedBox3d in_link;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        in_link.extend(X_LM.p_AB + X_LM.R_AB * p);
+      }
+      const double slack = 1e-9 * (1 + in_link.diagonal().norm());
+      if ((box.min().array() >= in_link.min().array() - slack).all() &&
+          (box.max().array() <= in_link.max().array() + slack).all()) {
+        return true;
+      }
+    }
+    return false;
   }
 
   // For an invalid member of a welded group: whether the group is valid as a whole.
@@ -537,6 +657,13 @@ class Checker {
            {{"mass", 0}, {"group_links", static_cast<double>(group.links.size())}});
     }
     // inertial-missing: links with collision geometry and no <inertial>.
+    double group_mass = 0;
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      if (link.inertial && std::isfinite(link.inertial->mass) && link.inertial->mass > 0) {
+        group_mass += link.inertial->mass;
+      }
+    }
     if (!massless_moving) {
       for (int i : group.links) {
         const Link& link = model_.links[i];
@@ -544,6 +671,17 @@ class Checker {
         int collisions = 0;
         for (const Geometry& g : link.geometries) collisions += g.is_collision ? 1 : 0;
         if (collisions == 0) continue;
+        // Zero-size or 1 mm placeholder collisions on a frame link: nothing to give a mass to.
+        const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(link);
+        if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
+          continue;
+        }
+        // URDF: a collision-helper link whose geometry lies inside the geometry of a welded
+        // neighbour that carries mass: that body's mass is given once, on the neighbour.
+        if (model_.format == Model::Format::kUrdf && group_mass > 0 && b && !b->partial &&
+            InsideMassiveNeighbour(group, i, b->box_B)) {
+          continue;
+        }
         Emit(kInertialMissing, link, link.location,
              "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
                  (collisions == 1 ? "y" : "ies") +
@@ -778,15 +916,34 @@ std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& in,
 }
 
 std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link) {
-  if (std::optional<GeometryBounds> bounds = BoundsOf(link, /*collision=*/true)) return bounds;
-  return BoundsOf(link, /*collision=*/false);
+  bool has_collision = false, has_visual = false;
+  for (const Geometry& g : link.geometries) (g.is_collision ? has_collision : has_visual) = true;
+  std::optional<GeometryBounds> collision = BoundsOf(link, /*collision=*/true);
+  std::optional<GeometryBounds> visual = BoundsOf(link, /*collision=*/false);
+  // Collision geometry often covers only part of the body while the visual covers all of it:
+  // the union of both, marked partial when one of them is not all primitives.
+  if (collision && visual) {
+    collision->box_B.extend(visual->box_B);
+    collision->count += visual->count;
+    return collision;
+  }
+  if (collision) {
+    collision->partial = has_visual;
+    return collision;
+  }
+  if (visual) visual->partial = has_collision;
+  return visual;
 }
 
 std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
                                                      const std::optional<LinkShape>& shape) {
-  if (std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link)) return bounds;
-  if (!shape) return std::nullopt;
-  return GeometryBounds{shape->box_B, shape->from_collision, 1, shape->kind == "mesh"};
+  std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
+  if (bounds && !bounds->partial) return bounds;
+  // A shape from the same primitives adds nothing; a mesh shape fills in what is not known.
+  if (!shape || (bounds && shape->kind != "mesh")) return bounds;
+  GeometryBounds from_shape{shape->box_B, shape->from_collision, 1, shape->kind == "mesh", false};
+  if (bounds) from_shape.box_B.extend(bounds->box_B);
+  return from_shape;
 }
 
 }  // namespace massprops

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <set>
@@ -20,6 +22,8 @@ namespace massprops {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Below this radius of gyration (m) a body's inertia is not projected (see Planner::Project).
+constexpr double kMinRadiusOfGyration = 1e-4;
 
 Eigen::Matrix3d WrittenMatrix(const Inertial& in) {
   Eigen::Matrix3d I;
@@ -168,6 +172,78 @@ std::optional<PrimitiveMassProperties> FromGeometries(const Link& link, bool col
   return result;
 }
 
+// Fills repair->changes and relative_change from repair->before (the link's inertial) and after.
+void RecomputeChanges(const Model& model, const Link& link, Repair* repair) {
+  repair->changes.clear();
+  repair->inserts_origin = false;
+  const bool sdf = model.format == Model::Format::kSdf;
+  if (link.inertial) {
+    const Inertial& b = *link.inertial;
+    const Inertial& a = repair->after;
+    auto add = [&](const char* element, const char* attribute, int line, int first,
+                   std::vector<double> old_values, std::vector<double> new_values) {
+      if (old_values == new_values) return;
+      repair->changes.push_back(
+          {element, attribute, line, first, std::move(old_values), std::move(new_values)});
+    };
+    add("mass", sdf ? "" : "value", b.mass_location.line, 0, {b.mass}, {a.mass});
+    if (b.X_BBi.p_AB != a.X_BBi.p_AB) {
+      if (b.pose_location.line == 0) repair->inserts_origin = true;
+      add(sdf ? "pose" : "origin", sdf ? "" : "xyz", b.pose_location.line, 0,
+          {b.X_BBi.p_AB.x(), b.X_BBi.p_AB.y(), b.X_BBi.p_AB.z()},
+          {a.X_BBi.p_AB.x(), a.X_BBi.p_AB.y(), a.X_BBi.p_AB.z()});
+    }
+    const int line = b.inertia_location.line;
+    add("inertia", "ixx", line, 0, {b.ixx}, {a.ixx});
+    add("inertia", "ixy", line, 0, {b.ixy}, {a.ixy});
+    add("inertia", "ixz", line, 0, {b.ixz}, {a.ixz});
+    add("inertia", "iyy", line, 0, {b.iyy}, {a.iyy});
+    add("inertia", "iyz", line, 0, {b.iyz}, {a.iyz});
+    add("inertia", "izz", line, 0, {b.izz}, {a.izz});
+    const Eigen::Matrix3d R = b.X_BBi.R_AB;
+    const Eigen::Matrix3d I_before = R * WrittenMatrix(b) * R.transpose();
+    const Eigen::Matrix3d I_after = R * WrittenMatrix(a) * R.transpose();
+    if (I_before.norm() > 0 && I_before != I_after) {
+      repair->relative_change = (I_after - I_before).norm() / I_before.norm();
+    } else if (I_before == I_after && b.mass != 0) {
+      repair->relative_change = std::abs(a.mass - b.mass) / std::abs(b.mass);
+    } else {
+      repair->relative_change = 1;
+    }
+  } else {
+    repair->relative_change = 1;
+  }
+}
+
+// x rounded to `digits` significant decimal digits.
+double RoundToDigits(double x, int digits) {
+  if (x == 0 || !std::isfinite(x)) return x;
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*e", digits - 1, x);
+  return std::strtod(buffer, nullptr);
+}
+
+// Rounds the numbers of `after` that differ from `before` (all of them when there is no before)
+// to `digits` significant digits; numbers the repair keeps stay exactly as written, and so does
+// the precision of a number that was written with more digits.
+void RoundChanged(const std::optional<Inertial>& before, int digits, Inertial* after) {
+  // A number written with more digits than `digits` keeps them (a negation or a rescaling does not
+  // throw away the file's precision).
+  auto round = [&](double old_value, double* x) {
+    if (before && (old_value == *x || RoundToDigits(old_value, digits) != old_value)) return;
+    *x = RoundToDigits(*x, digits);
+  };
+  const Inertial b = before ? *before : Inertial{};
+  round(b.mass, &after->mass);
+  for (int i = 0; i < 3; ++i) round(b.X_BBi.p_AB(i), &after->X_BBi.p_AB(i));
+  round(b.ixx, &after->ixx);
+  round(b.iyy, &after->iyy);
+  round(b.izz, &after->izz);
+  round(b.ixy, &after->ixy);
+  round(b.ixz, &after->ixz);
+  round(b.iyz, &after->iyz);
+}
+
 std::string Num(double x) { return FormatShortest(x); }
 
 std::string Percent(double x) {
@@ -183,11 +259,24 @@ struct Plan {
   std::vector<std::string> whys;
   std::string rule;
   bool inserts_inertial = false;
+  std::set<std::string> targets;  // the rules of the link this plan answers
 };
 
 class Planner {
  public:
   Planner(const Model& model, const RepairOptions& options) : model_(model), options_(options) {}
+
+  // Refusals found while planning (a heuristic asked for that has no candidate that fits).
+  std::vector<RefusedRepair> refused;
+
+  // Whether the heuristic repair of `rule` was asked for (RepairOptions::apply).
+  bool Allows(const std::string& rule) const {
+    if (rule == "units-suspect" && options_.fix_units) return true;
+    for (const std::string& a : options_.apply) {
+      if (a == rule || a == "all") return true;
+    }
+    return false;
+  }
 
   std::optional<Repair> PlanLink(const Link& link, const std::set<std::string>& rules) {
     Plan plan;
@@ -200,34 +289,41 @@ class Planner {
       }
     }
     if (!link.inertial) {
-      if (rules.count("massless-moving-body") && HasCollision(link) &&
+      if (rules.count("massless-moving-body") && Allows("massless-moving-body") &&
+          HasCollision(link) &&
           FromGeometry(link, /*keep_mass=*/false, "massless-moving-body", &plan)) {
         return Finish(link, plan);
       }
-      if (rules.count("inertial-missing") &&
+      if (rules.count("inertial-missing") && Allows("inertial-missing") &&
           FromGeometry(link, /*keep_mass=*/false, "inertial-missing", &plan)) {
         return Finish(link, plan);
       }
       return std::nullopt;
     }
     const Inertial& in = *link.inertial;
-    if (rules.count("massless-moving-body") && in.mass == 0 && HasCollision(link)) {
+    if (rules.count("massless-moving-body") && Allows("massless-moving-body") && in.mass == 0 &&
+        HasCollision(link)) {
       if (FromGeometry(link, /*keep_mass=*/false, "massless-moving-body", &plan)) {
         return Finish(link, plan);
       }
     }
     if (rules.count("mass-not-positive")) {
-      if (FromGeometry(link, /*keep_mass=*/false, "mass-not-positive", &plan)) {
+      if (Allows("mass-not-positive") &&
+          FromGeometry(link, /*keep_mass=*/false, "mass-not-positive", &plan)) {
         return Finish(link, plan);
       }
       return std::nullopt;
     }
     if (!WrittenMatrix(in).allFinite() || !std::isfinite(in.mass)) return std::nullopt;
     plan.work = in;
-    if (rules.count("units-suspect")) RescaleUnits(link, &plan);
-    if (rules.count("inertia-about-origin-suspect")) ShiftToCom(&plan);
-    if (rules.count("products-sign-suspect")) NegateProducts(link, &plan);
-    if (!IsValid(WrittenMatrix(plan.work), options_.tolerance)) Project(&plan);
+    if (rules.count("units-suspect") && Allows("units-suspect")) RescaleUnits(link, &plan);
+    if (rules.count("inertia-about-origin-suspect") && Allows("inertia-about-origin-suspect")) {
+      ShiftToCom(&plan);
+    }
+    if (rules.count("products-sign-suspect") && Allows("products-sign-suspect")) {
+      NegateProducts(link, &plan);
+    }
+    if (!IsValid(WrittenMatrix(plan.work), options_.tolerance)) Project(link, &plan);
     if (plan.methods.empty()) return std::nullopt;
     return Finish(link, plan);
   }
@@ -299,6 +395,7 @@ class Planner {
     SetMatrix(R.transpose() * g->I_BBcm_B * R, &work);
     plan->work = work;
     plan->rule = rule.empty() ? "--from-geometry" : rule;
+    if (!rule.empty()) plan->targets.insert(rule);
     plan->inserts_inertial = !link.inertial.has_value();
     const std::string what =
         std::string(g->from_collision ? "collision" : "visual") + (kind == "mesh" ? " mesh" : "");
@@ -324,6 +421,7 @@ class Planner {
 
   void Note(Plan* plan, const char* rule, const char* method, std::string why) {
     if (plan->rule.empty()) plan->rule = rule;
+    plan->targets.insert(rule);
     plan->methods.push_back(method);
     plan->whys.push_back(std::move(why));
   }
@@ -376,7 +474,26 @@ class Planner {
     } else if (options_.fix_units) {
       chosen = nearest;
     }
-    if (chosen == nullptr) return;
+    if (chosen == nullptr) {
+      const double k = std::sqrt(trace / (2 * w.mass));
+      std::string why = "inertia trace " + Num(trace) + " kg·m² on a " + Num(w.mass) +
+                        " kg body: radius of gyration " + Num(k) + " m";
+      if (extent > 0 && plausible.size() > 1) {
+        why += "; more than one unit factor fits the geometry (half-diagonal " + Num(extent) +
+               " m), so which one is a guess (--fix-units takes the nearest)";
+      } else if (extent > 0) {
+        why += " against a geometry half-diagonal of " + Num(extent) +
+               " m; no unit factor (inertia ×1e-6, ×1e-4, ×1e6, mass ÷1000) makes it fit";
+      } else {
+        why += "; the link has no geometry to tell which unit factor, if any, fits";
+      }
+      why +=
+          "; the causes that fit these numbers: a placeholder inertia, a mass edited without its "
+          "inertia, values raised on purpose to stabilise a simulation, or a unit slip — not "
+          "repaired; compare the link's mass and inertia with its CAD model";
+      refused.push_back({"units-suspect", link.name, link.location.line, why});
+      return;
+    }
     w.mass *= chosen->mass_factor;
     SetMatrix(I * chosen->inertia_factor, &w);
     Note(plan, "units-suspect", "rescale-units",
@@ -436,10 +553,24 @@ class Planner {
          "negated ixy, ixz, iyz, which alone makes the inertia valid");
   }
 
-  void Project(Plan* plan) {
+  void Project(const Link& link, Plan* plan) {
     Inertial& w = plan->work;
     const Eigen::Matrix3d I = WrittenMatrix(w);
     const Eigen::Matrix3d repaired = RepairInertia(I, options_.method, options_.tolerance);
+    // A body whose radius of gyration is below 0.1 mm (a 1 kg body with moments under 1e-8
+    // kg·m²) has no inertia worth projecting: the numbers are a units or placeholder mistake,
+    // and a projection would hide it behind a valid-looking tensor of the same nonsense size.
+    const double k = w.mass > 0 ? std::sqrt(std::abs(repaired.trace()) / (2 * w.mass)) : 0;
+    if (w.mass > 0 && k < kMinRadiusOfGyration) {
+      refused.push_back(
+          {"inertia-not-physical", link.name, link.location.line,
+           "inertia of trace " + Num(I.trace()) + " kg·m² on a " + Num(w.mass) +
+               " kg body: radius of gyration " + Num(k) +
+               " m; a units or placeholder mistake, not a rounding error — not repaired; "
+               "give the link the inertia of its body (its CAD model, or `fix --from-geometry "
+               "LINK`)"});
+      return;
+    }
     SetMatrix(repaired, &w);
     const double change = I.norm() > 0 ? (repaired - I).norm() / I.norm() : 1;
     const Eigen::Vector3d before = internal::ScaledPrincipalMoments(
@@ -476,43 +607,8 @@ class Planner {
     repair.before = link.inertial;
     repair.after = plan.work;
     repair.inserts_inertial = plan.inserts_inertial;
-    const bool sdf = model_.format == Model::Format::kSdf;
-    if (link.inertial) {
-      const Inertial& b = *link.inertial;
-      const Inertial& a = plan.work;
-      auto add = [&](const char* element, const char* attribute, int line, int first,
-                     std::vector<double> old_values, std::vector<double> new_values) {
-        if (old_values == new_values) return;
-        repair.changes.push_back(
-            {element, attribute, line, first, std::move(old_values), std::move(new_values)});
-      };
-      add("mass", sdf ? "" : "value", b.mass_location.line, 0, {b.mass}, {a.mass});
-      if (b.X_BBi.p_AB != a.X_BBi.p_AB) {
-        if (b.pose_location.line == 0) repair.inserts_origin = true;
-        add(sdf ? "pose" : "origin", sdf ? "" : "xyz", b.pose_location.line, 0,
-            {b.X_BBi.p_AB.x(), b.X_BBi.p_AB.y(), b.X_BBi.p_AB.z()},
-            {a.X_BBi.p_AB.x(), a.X_BBi.p_AB.y(), a.X_BBi.p_AB.z()});
-      }
-      const int line = b.inertia_location.line;
-      add("inertia", "ixx", line, 0, {b.ixx}, {a.ixx});
-      add("inertia", "ixy", line, 0, {b.ixy}, {a.ixy});
-      add("inertia", "ixz", line, 0, {b.ixz}, {a.ixz});
-      add("inertia", "iyy", line, 0, {b.iyy}, {a.iyy});
-      add("inertia", "iyz", line, 0, {b.iyz}, {a.iyz});
-      add("inertia", "izz", line, 0, {b.izz}, {a.izz});
-      const Eigen::Matrix3d R = b.X_BBi.R_AB;
-      const Eigen::Matrix3d I_before = R * WrittenMatrix(b) * R.transpose();
-      const Eigen::Matrix3d I_after = R * WrittenMatrix(a) * R.transpose();
-      if (I_before.norm() > 0 && I_before != I_after) {
-        repair.relative_change = (I_after - I_before).norm() / I_before.norm();
-      } else if (I_before == I_after && b.mass != 0) {
-        repair.relative_change = std::abs(a.mass - b.mass) / std::abs(b.mass);
-      } else {
-        repair.relative_change = 1;
-      }
-    } else {
-      repair.relative_change = 1;
-    }
+    RecomputeChanges(model_, link, &repair);
+    repair.answers.assign(plan.targets.begin(), plan.targets.end());
     return repair;
   }
 
@@ -529,6 +625,13 @@ std::optional<PrimitiveMassProperties> CalcPrimitiveMassProperties(const Link& l
   bool has_collision = false;
   for (const Geometry& g : link.geometries) has_collision |= g.is_collision;
   return FromGeometries(link, has_collision, density, mass);
+}
+
+const std::vector<std::string>& HeuristicRepairRules() {
+  static const std::vector<std::string> kRules = {
+      "units-suspect",     "products-sign-suspect", "inertia-about-origin-suspect",
+      "mass-not-positive", "massless-moving-body",  "inertial-missing"};
+  return kRules;
 }
 
 Eigen::Matrix3d RepairInertia(const Eigen::Matrix3d& I, InertiaRepairMethod method,
@@ -548,7 +651,7 @@ Eigen::Matrix3d RepairInertia(const Eigen::Matrix3d& I, InertiaRepairMethod meth
 }
 
 std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& findings,
-                                const RepairOptions& options) {
+                                const RepairOptions& options, std::vector<RefusedRepair>* refused) {
   std::map<std::string, std::set<std::string>> rules_of;
   for (const Finding& f : findings) {
     if (!f.link.empty()) rules_of[f.link].insert(f.rule);
@@ -570,7 +673,7 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
     }
   }
   Planner planner(model, options);
-  std::vector<Repair> repairs;
+  std::vector<Repair> planned;
   for (const Link& link : model.links) {
     const auto it = rules_of.find(link.name);
     static const std::set<std::string> kNone;
@@ -578,15 +681,74 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
     std::optional<Repair> repair = planner.PlanLink(link, rules);
     if (!repair) continue;
     if (repair->changes.empty() && !repair->inserts_inertial) continue;
-    repairs.push_back(std::move(*repair));
+    planned.push_back(std::move(*repair));
   }
-  if (repairs.empty()) return repairs;
-  // Which findings each repair resolves: check the repaired model again.
+  if (refused) refused->insert(refused->end(), planner.refused.begin(), planner.refused.end());
+  if (planned.empty()) return planned;
+
+  // Each repair is checked again on its own, against the findings of the model as it is (not the
+  // findings given, which may come from other options): it must make the findings it answers go
+  // away and create none the model did not have, on any link.
   CheckOptions check_options;
   check_options.tolerance = options.tolerance;
   check_options.shape = options.shape;
+  using Key = std::pair<std::string, std::string>;  // (link, rule)
+  std::set<Key> before;
+  for (const Finding& f : CheckModel(model, check_options)) before.insert({f.link, f.rule});
+  // What is wrong with `repair` when `all` (which holds it) are applied: a finding it answers
+  // is left (judged with all of them applied: a welded group's finding may need every link of
+  // the group repaired), or it creates a finding the model did not have (judged with it alone).
+  auto problems = [&](const Repair& repair, const std::vector<Repair>& all) {
+    std::vector<std::string> found;
+    for (const Finding& f : CheckModel(ApplyRepairs(model, all), check_options)) {
+      if (f.link == repair.link &&
+          std::find(repair.answers.begin(), repair.answers.end(), f.rule) != repair.answers.end()) {
+        found.push_back("it leaves " + f.rule + ": " + f.message);
+      }
+    }
+    for (const Finding& f : CheckModel(ApplyRepairs(model, {repair}), check_options)) {
+      if (!before.count({f.link, f.rule})) {
+        found.push_back("it creates " + f.rule +
+                        (f.link.empty() ? "" : " on link '" + f.link + "'") + ": " + f.message);
+      }
+    }
+    return found;
+  };
+  std::vector<Repair> repairs = std::move(planned);
+  for (bool changed = true; changed && !repairs.empty();) {
+    changed = false;
+    for (std::size_t i = 0; i < repairs.size(); ++i) {
+      const std::vector<std::string> found = problems(repairs[i], repairs);
+      if (found.empty()) continue;
+      if (refused) {
+        std::string why = "the repair (" + repairs[i].method + ") does not pass the checks: ";
+        for (std::size_t j = 0; j < found.size(); ++j) why += (j ? "; " : "") + found[j];
+        why += " — not repaired; look at this link's mass, center of mass and inertia by hand";
+        refused->push_back({repairs[i].rule, repairs[i].link, repairs[i].link_line, why});
+      }
+      repairs.erase(repairs.begin() + static_cast<std::ptrdiff_t>(i));
+      changed = true;
+      break;
+    }
+  }
+  // The numbers of each repair: the fewest significant digits (at least 6) that still pass.
+  for (std::size_t i = 0; i < repairs.size(); ++i) {
+    const int index = model.FindLink(repairs[i].link);
+    if (index < 0) continue;
+    const Link& link = model.links[index];
+    for (int digits = 6; digits <= 16; ++digits) {
+      std::vector<Repair> trial = repairs;
+      RoundChanged(link.inertial, digits, &trial[i].after);
+      if (!problems(trial[i], trial).empty()) continue;
+      RecomputeChanges(model, link, &trial[i]);
+      repairs[i] = std::move(trial[i]);
+      break;
+    }
+  }
+  if (repairs.empty()) return repairs;
+  // Which findings each repair resolves: check the repaired model again.
   const std::vector<Finding> after = CheckModel(ApplyRepairs(model, repairs), check_options);
-  std::set<std::pair<std::string, std::string>> remaining;
+  std::set<Key> remaining;
   for (const Finding& f : after) remaining.insert({f.link, f.rule});
   for (Repair& repair : repairs) {
     const auto it = rules_of.find(repair.link);

@@ -214,6 +214,9 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
     out += "massprops: checked " + Plural(s.files, "file") + ": " + Plural(s.errors, "error") +
            ", " + Plural(s.warnings, "warning") + ", " + Plural(s.notes, "note");
     if (s.read_errors > 0) out += ", " + Plural(s.read_errors, "read error");
+    if (options.skipped_files > 0) {
+      out += "; " + Plural(options.skipped_files, "other file") + " in the folders skipped";
+    }
     out += "\n";
   }
   return out;
@@ -258,7 +261,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                            {"errors", s.errors},
                            {"warnings", s.warnings},
                            {"notes", s.notes},
-                           {"read_errors", s.read_errors}}}};
+                           {"read_errors", s.read_errors},
+                           {"skipped_files", options.skipped_files}}}};
   return document.dump(2) + "\n";
 }
 

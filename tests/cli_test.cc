@@ -210,18 +210,23 @@ TEST(CliTest, ADashReadsTheModelFromStandardInput) {
 }
 
 TEST(CliTest, AFolderIsSearchedRecursivelyForModelsOnly) {
-  // tree/ holds a.urdf (clean), sub/b.sdf (clean), sub/robot.xml (a <robot>: not physical),
-  // launch.xml (root <launch>) and notes.txt; the last two are skipped.
+  // tree/ holds a.urdf (clean), sub/UPPER.URDF (clean; extensions match in any case),
+  // sub/b.sdf (clean), sub/robot.xml (a <robot>: not physical), launch.xml (root <launch>) and
+  // notes.txt; the last two are skipped and counted as skipped.
   const RunResult run = RunTool("check --format json tree");
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   const json report = json::parse(run.out);
   std::vector<std::string> paths;
   for (const json& file : report.at("files")) paths.push_back(file.at("path"));
-  EXPECT_EQ(paths,
-            (std::vector<std::string>{"tree/a.urdf", "tree/sub/b.sdf", "tree/sub/robot.xml"}));
-  EXPECT_EQ(report["files"][1].at("format"), "sdf");
+  EXPECT_EQ(paths, (std::vector<std::string>{"tree/a.urdf", "tree/sub/UPPER.URDF", "tree/sub/b.sdf",
+                                             "tree/sub/robot.xml"}));
+  EXPECT_EQ(report["files"][2].at("format"), "sdf");
   EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "arm"));
-  EXPECT_EQ(report.at("summary").at("files"), 3);
+  EXPECT_EQ(report.at("summary").at("files"), 4);
+  EXPECT_EQ(report.at("summary").at("skipped_files"), 2);
+  const RunResult text = RunTool("check tree");
+  EXPECT_TRUE(Contains(text.err + text.out, "2 other files in the folders skipped"))
+      << text.out << text.err;
 }
 
 TEST(CliTest, AMissingFileExitsTwoAndTheOtherFilesAreStillReported) {

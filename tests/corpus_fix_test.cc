@@ -1,6 +1,7 @@
-// `massprops fix` over ../shared/corpus (MANIFEST.tsv): every file with errors is fixed into a
-// temporary folder; the fix may change only lines inside <inertial> elements (or insert new ones),
-// the fixed file reads back, has no error left that a repair exists for, and fixing it again
+// `massprops fix` (no options) over ../shared/corpus (MANIFEST.tsv): every file is fixed; only
+// links with an error finding change (a file without errors not at all); the fix may change only
+// lines inside <inertial> elements (or insert new ones), the fixed file reads back, has no
+// finding the original lacked and no error left that a repair exists for, and fixing it again
 // changes nothing. Prints the per-source table of docs/fix.md.
 #include <gtest/gtest.h>
 
@@ -8,8 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "corpus_manifest.h"
@@ -65,6 +68,7 @@ struct Counts {
 struct Fixed {
   std::string text;
   int repairs = 0;
+  std::set<std::string> links;  // the links repaired
 };
 
 Fixed Fix(const std::string& text, const ReadResult& read) {
@@ -76,7 +80,18 @@ Fixed Fix(const std::string& text, const ReadResult& read) {
   const PatchResult patched = PatchModelText(text, read.models.front().format, repairs);
   EXPECT_TRUE(patched.errors.empty())
       << patched.errors.front().link << ": " << patched.errors.front().message;
-  return {patched.text, patched.applied};
+  Fixed fixed{patched.text, patched.applied, {}};
+  for (const Repair& r : repairs) fixed.links.insert(r.link);
+  return fixed;
+}
+
+// (model, link, rule) of every finding of `read`.
+std::set<std::tuple<std::string, std::string, std::string>> FindingKeys(const ReadResult& read) {
+  std::set<std::tuple<std::string, std::string, std::string>> keys;
+  for (const Model& model : read.models) {
+    for (const Finding& f : CheckModel(model)) keys.insert({model.name, f.link, f.rule});
+  }
+  return keys;
 }
 
 std::map<std::string, int> remaining_errors;  // rule -> errors left in fixed files
@@ -112,13 +127,24 @@ TEST(CorpusFixTest,
     Count(read, &errors, &warnings);
     counts.errors_before += errors;
     counts.warnings_before += warnings;
+    SCOPED_TRACE(entry.file);
+    const Fixed fixed = Fix(text, read);
+    // The contract of `fix` without options: only links with an error finding change.
+    std::set<std::string> error_links;
+    for (const Model& model : read.models) {
+      for (const Finding& f : CheckModel(model)) {
+        if (f.severity == Severity::kError) error_links.insert(f.link);
+      }
+    }
+    for (const std::string& link : fixed.links) {
+      EXPECT_TRUE(error_links.count(link)) << "link '" << link << "' has no error but changed";
+    }
     if (errors == 0) {
+      EXPECT_EQ(fixed.text, text);
       counts.errors_after += errors;
       counts.warnings_after += warnings;
       continue;
     }
-    SCOPED_TRACE(entry.file);
-    const Fixed fixed = Fix(text, read);
     ++counts.fixed;
     ++fixed_files;
     counts.links_repaired += fixed.repairs;
@@ -138,6 +164,12 @@ TEST(CorpusFixTest,
     // Reads back; no error left that a repair exists for.
     const ReadResult after = ReadModelString(fixed.text, path);
     ASSERT_TRUE(after.ok());
+    // No finding that the original lacked.
+    const auto keys_before = FindingKeys(read);
+    for (const auto& key : FindingKeys(after)) {
+      EXPECT_TRUE(keys_before.count(key))
+          << "new finding " << std::get<2>(key) << " on link '" << std::get<1>(key) << "'";
+    }
     int errors_after = 0, warnings_after = 0;
     Count(after, &errors_after, &warnings_after, /*fixed=*/true);
     counts.errors_after += errors_after;

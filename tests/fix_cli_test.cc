@@ -85,12 +85,59 @@ std::vector<bool> InertialLines(const std::string& text) {
 }
 
 TEST_F(FixCliTest, CadExportIsPatchedExactlyAsTheGoldenFile) {
-  // Golden file reviewed by hand: upper_arm mass 2000 → 2 (grams); forearm products negated;
-  // wrist 0.251 − 1·0.5² = 0.0010000000000000009 in double; cover gets m = 1000·0.1·0.1·0.02 and
-  // Ixx = m(0.1² + 0.02²)/12, Izz = m(0.1² + 0.1²)/12 (solid box), digits checked with Python.
-  const ToolRun run = RunTool("fix '" + kFixDir + "/cad_export.urdf'", dir_);
+  // Golden file reviewed by hand, every heuristic asked for (--apply all): upper_arm mass
+  // 2000 → 2 (grams); forearm products negated; wrist 0.251 − 1·0.5² = 0.001 (written with the
+  // fewest digits, 6, that pass the checks: not 0.0010000000000000009); cover (no <inertial>)
+  // is left alone: its box lies inside base_link's, whose 4 kg carries it (a lumped mass, no
+  // inertial-missing finding).
+  const ToolRun run = RunTool("fix --apply all '" + kFixDir + "/cad_export.urdf'", dir_);
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.out, ReadFile(kFixDir + "/golden/cad_export.urdf"));
+}
+
+TEST_F(FixCliTest, WithoutApplyOnlyTheLinkWithAnErrorChanges) {
+  // The contract: `fix FILE` never changes a link that has no error. cad_export has one error
+  // (forearm: principal moments 0.0055, 0.0055, 0.019 break the triangle inequality) and three
+  // heuristic findings (units, inertia about the origin, missing inertial), left alone.
+  // The projection by hand: the violation 0.019 − 2·0.0055 = 0.008 is removed along (−1,−1,1)/√3,
+  // moments (0.0081667, 0.0081667, 0.0163333) on the same axes, i.e. I = a·1 + b·11ᵀ with
+  // a = 0.0081667, b = 0.0027222: diagonal a + b = 0.0108889, products 0.00272222.
+  const std::string before = ReadFile(kFixDir + "/cad_export.urdf");
+  const ToolRun run = RunTool("fix '" + kFixDir + "/cad_export.urdf'", dir_);
+  EXPECT_EQ(run.code, 0) << run.err;
+  const massprops::LineChanges changes = massprops::DiffLines(before, run.out);
+  ASSERT_EQ(changes.removed.size(), 1u);
+  EXPECT_EQ(changes.removed[0], 33);  // forearm's <inertia>
+  EXPECT_NE(run.out.find("iyy=\"0.0108889\" izz=\"0.0108889\" ixx=\"0.0108889\"   "
+                         "ixy=\"0.00272222\" ixz=\"0.00272222\" iyz=\"0.00272222\""),
+            std::string::npos)
+      << run.out;
+  // What was not applied is said, with the option that applies it.
+  EXPECT_NE(run.err.find("units-suspect"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--apply"), std::string::npos) << run.err;
+  // --dry-run lists what each heuristic would do.
+  const ToolRun dry = RunTool("fix --dry-run '" + kFixDir + "/cad_export.urdf'", dir_);
+  EXPECT_NE(dry.out.find("not applied (a guess; --apply inertia-about-origin-suspect applies it): "
+                         "link 'wrist'"),
+            std::string::npos)
+      << dry.out;
+  EXPECT_EQ(RunTool("fix --apply no-such-rule '" + kFixDir + "/cad_export.urdf'", dir_).code, 2);
+}
+
+TEST_F(FixCliTest, ARepairThatFailsItsOwnCheckIsRefusedWithTheReason) {
+  // 2.2 kg with moments 1e-20 and a broken triangle inequality (1e-20 + 1e-20 < 3e-20): a radius
+  // of gyration of about 1e-10 m, which is no body: a units or placeholder mistake, not repaired.
+  const fs::path file = dir_ / "tiny.urdf";
+  WriteFile(file,
+            "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"2.2\"/><inertia "
+            "ixx=\"1e-20\" ixy=\"0\" ixz=\"0\" iyy=\"1e-20\" iyz=\"0\" izz=\"3e-20\"/>"
+            "</inertial></link></robot>\n");
+  const ToolRun run = RunTool("fix '" + file.string() + "'", dir_);
+  EXPECT_EQ(run.code, 1);
+  EXPECT_EQ(run.out, ReadFile(file));
+  EXPECT_NE(run.err.find("a units or placeholder mistake, not a rounding error — not repaired"),
+            std::string::npos)
+      << run.err;
 }
 
 TEST_F(FixCliTest, CadExportDiffTouchesOnlyInertialLines) {
@@ -120,7 +167,8 @@ TEST_F(FixCliTest, TheFixedFilePassesCheck) {
 }
 
 TEST_F(FixCliTest, DiffHasUnifiedHeadersAndHunks) {
-  const ToolRun run = RunTool("fix --diff '" + kFixDir + "/cad_export.urdf'", dir_);
+  const ToolRun run =
+      RunTool("fix --apply units-suspect --diff '" + kFixDir + "/cad_export.urdf'", dir_);
   EXPECT_EQ(run.code, 0);
   EXPECT_EQ(run.out.rfind("--- a/" + kFixDir + "/cad_export.urdf\n+++ b/", 0), 0u) << run.out;
   EXPECT_NE(run.out.find("-      <mass value=\"2000\"/>\n+      <mass value=\"2\"/>\n"),
@@ -142,7 +190,8 @@ TEST_F(FixCliTest, DryRunExplainsEachRepairAndWritesNothing) {
 TEST_F(FixCliTest, InPlaceReplacesTheFileAndKeepsABackup) {
   const fs::path copy = dir_ / "robot.urdf";
   fs::copy_file(kFixDir + "/cad_export.urdf", copy);
-  const ToolRun run = RunTool("fix --in-place --backup .orig '" + copy.string() + "'", dir_);
+  const ToolRun run =
+      RunTool("fix --apply all --in-place --backup .orig '" + copy.string() + "'", dir_);
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.out, "");
   EXPECT_EQ(ReadFile(copy), ReadFile(kFixDir + "/golden/cad_export.urdf"));
@@ -191,7 +240,7 @@ TEST_F(FixCliTest, InPlaceInAReadOnlyFolderFailsAndLeavesTheOriginalUntouched) {
 TEST_F(FixCliTest, OutputFileGetsTheCorrectedText) {
   const fs::path out = dir_ / "fixed.urdf";
   const ToolRun run =
-      RunTool("fix -o '" + out.string() + "' '" + kFixDir + "/cad_export.urdf'", dir_);
+      RunTool("fix --apply all -o '" + out.string() + "' '" + kFixDir + "/cad_export.urdf'", dir_);
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(run.out, "");
   EXPECT_EQ(ReadFile(out), ReadFile(kFixDir + "/golden/cad_export.urdf"));
@@ -200,8 +249,9 @@ TEST_F(FixCliTest, OutputFileGetsTheCorrectedText) {
 TEST_F(FixCliTest, SdfElementTextsAreRepaired) {
   const ToolRun run = RunTool("fix '" + kFixDir + "/invalid_inertia.sdf'", dir_);
   EXPECT_EQ(run.code, 0) << run.err;
-  // Balance-free projection, hand-derived in repair_test: 0.1 + 0.2/3 (plus the 1e-9 floor).
-  EXPECT_NE(run.out.find("<ixx>0.166666667</ixx>"), std::string::npos) << run.out;
+  // Balance-free projection, hand-derived in repair_test: 0.1 + 0.2/3 (plus the 1e-9 floor),
+  // written with 6 significant digits, the fewest that pass: 0.166667 + 0.266667 >= 0.433333.
+  EXPECT_NE(run.out.find("<ixx>0.166667</ixx>"), std::string::npos) << run.out;
   WriteFile(dir_ / "fixed.sdf", run.out);
   EXPECT_EQ(RunTool("check '" + (dir_ / "fixed.sdf").string() + "'", dir_).code, 0);
 }
@@ -209,9 +259,9 @@ TEST_F(FixCliTest, SdfElementTextsAreRepaired) {
 TEST_F(FixCliTest, BalanceRepairWritesTheMeanMoment) {
   const ToolRun run = RunTool("fix --repair balance '" + kFixDir + "/invalid_inertia.sdf'", dir_);
   EXPECT_EQ(run.code, 0);
-  // (0.1 + 0.2 + 0.5) / 3 in double.
-  EXPECT_NE(run.out.find("<izz>" + massprops::FormatShortest(0.8 / 3) + "</izz>"),
-            std::string::npos);
+  // (0.1 + 0.2 + 0.5) / 3 = 0.2666..., written with 6 significant digits (equal moments are
+  // valid at any rounding).
+  EXPECT_NE(run.out.find("<izz>0.266667</izz>"), std::string::npos) << run.out;
 }
 
 TEST_F(FixCliTest, FromGeometryReplacesTheInertialOfTheNamedLink) {
@@ -225,8 +275,9 @@ TEST_F(FixCliTest, FromGeometryReplacesTheInertialOfTheNamedLink) {
   const std::size_t ixx = run.out.find("ixx=\"", link);
   ASSERT_NE(ixx, std::string::npos);
   // The mass kept is the 2000 written (--from-geometry comes before the units repair).
+  // Written with 6 significant digits (the fewest that pass the checks): 27.9167.
   EXPECT_NEAR(std::strtod(run.out.c_str() + ixx + 5, nullptr), 2000 * (3 * 0.0025 + 0.16) / 12,
-              1e-12);
+              5e-6 * 27.92);
 }
 
 TEST_F(FixCliTest, ErrorsWithoutARepairGiveExitCodeOne) {

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,6 +50,7 @@ struct FixArgs {
   std::string backup;
   std::string repair = "project";
   bool fix_units = false;
+  std::vector<std::string> apply;
   double density = kDefaultDensity;
   bool from_geometry = false;
   std::vector<std::string> from_geometry_links;
@@ -148,6 +150,16 @@ int RunFix(const FixArgs& args) {
   options.method =
       args.repair == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject;
   options.fix_units = args.fix_units;
+  options.apply = args.apply;
+  for (const std::string& rule : args.apply) {
+    const std::vector<std::string>& known = HeuristicRepairRules();
+    if (rule != "all" && std::find(known.begin(), known.end(), rule) == known.end()) {
+      std::cerr << "massprops: error: --apply: '" << rule << "' is not a heuristic repair; one of";
+      for (const std::string& k : known) std::cerr << " " << k;
+      std::cerr << ", or all\n";
+      return kExitError;
+    }
+  }
   options.density = args.density;
   options.from_geometry_all = args.from_geometry && args.from_geometry_links.empty();
   options.from_geometry_links = args.from_geometry_links;
@@ -168,15 +180,25 @@ int RunFix(const FixArgs& args) {
   }
 
   std::vector<Repair> repairs;
+  std::vector<RefusedRepair> refused;
   std::vector<std::string> known_links;
+  // Heuristic repairs that were not asked for, per rule: listed so that nothing is silent.
+  std::map<std::string, std::vector<Repair>> not_asked;
   for (const Model& model : read.models) {
     for (const Link& link : model.links) known_links.push_back(link.name);
     const std::vector<Finding> findings = CheckModel(model, check_options);
-    std::vector<Repair> planned = PlanRepairs(model, findings, options);
+    std::vector<Repair> planned = PlanRepairs(model, findings, options, &refused);
     if (fix_target != Target::kGeneric) {  // what the simulator needs on top (target_profile.h)
       planned = PlanTargetRepairs(model, fix_target, mujoco_options, planned);
     }
     repairs.insert(repairs.end(), planned.begin(), planned.end());
+    RepairOptions every = options;
+    every.apply = {"all"};
+    for (Repair& r : PlanRepairs(model, findings, every)) {
+      const bool planned_already = std::any_of(planned.begin(), planned.end(),
+                                               [&](const Repair& p) { return p.link == r.link; });
+      if (!planned_already) not_asked[r.rule].push_back(std::move(r));
+    }
   }
   for (const std::string& link : args.from_geometry_links) {
     if (std::find(known_links.begin(), known_links.end(), link) == known_links.end()) {
@@ -225,6 +247,10 @@ int RunFix(const FixArgs& args) {
     }
   }
   const bool changed = patched.text != text;
+  for (const RefusedRepair& r : refused) {
+    std::cerr << name << ":" << r.link_line << ": link '" << r.link << "' [" << r.rule
+              << "]: " << r.why << "\n";
+  }
 
   if (args.dry_run) {
     std::vector<bool> failed(repairs.size(), false);
@@ -242,6 +268,12 @@ int RunFix(const FixArgs& args) {
         }
       }
       std::cout << name << ":" << line << ": " << DescribeRepair(r) << "\n";
+    }
+    for (const auto& [rule, list] : not_asked) {
+      for (const Repair& r : list) {
+        std::cout << name << ":" << r.link_line << ": not applied (a guess; --apply " << rule
+                  << " applies it): " << DescribeRepair(r) << "\n";
+      }
     }
     if (!changed) std::cout << name << ": no change needed\n";
   } else {
@@ -281,6 +313,14 @@ int RunFix(const FixArgs& args) {
   std::cerr << "massprops: " << name << ": " << patched.applied << " link(s) repaired"
             << (changed ? "" : ", no change needed");
   if (remaining_errors > 0) std::cerr << "; " << remaining_errors << " error(s) have no repair";
+  if (!refused.empty()) std::cerr << "; " << refused.size() << " repair(s) refused";
+  if (!not_asked.empty() && !args.dry_run) {
+    std::cerr << "; heuristic repairs not applied (see --dry-run):";
+    for (const auto& [rule, list] : not_asked) {
+      std::cerr << " " << rule << " ×" << list.size();
+    }
+    std::cerr << " (--apply RULE,... applies them)";
+  }
   std::cerr << "\n";
   return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
 }
@@ -291,9 +331,11 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
   auto args = std::make_shared<FixArgs>();
   CLI::App* fix = app.add_subcommand(
       "fix",
-      "Repair mass properties that have a known remedy (invalid inertias, products with the wrong "
-      "sign, unit mistakes, inertias about the link origin, missing or non-positive masses of "
-      "links with geometry) and write the file back with only those numbers changed. "
+      "Repair the errors that physics decides (an inertia no mass distribution has: the nearest "
+      "valid one) and write the file back with only those numbers changed; `fix FILE` never "
+      "changes a link that has no error. Guesses (unit mistakes, product signs, inertias about "
+      "the origin, masses from geometry) only with --apply RULE,... or --from-geometry. Every "
+      "repair is checked again; one that leaves or creates a finding is not written. "
       "Default: the corrected file on standard output.");
   fix->add_option("FILE", args->file, "URDF or SDF file (detected by content), or '-'");
   fix->add_flag("--dry-run", args->dry_run,
@@ -311,8 +353,17 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
                   "moments set to their mean)")
       ->check(CLI::IsMember({"project", "balance"}))
       ->capture_default_str();
+  fix->add_option("--apply", args->apply,
+                  "Also apply these heuristic repairs (guesses; by default only errors that "
+                  "physics decides are repaired): units-suspect, products-sign-suspect, "
+                  "inertia-about-origin-suspect, mass-not-positive, massless-moving-body, "
+                  "inertial-missing (the last three from geometry and --density), or all")
+      ->type_name("RULE,...")
+      ->delimiter(',')
+      ->allow_extra_args(false);
   fix->add_flag("--fix-units", args->fix_units,
-                "Repair units-suspect even when more than one unit mistake fits");
+                "Same as --apply units-suspect, and repair it even when more than one unit "
+                "mistake fits");
   fix->add_option("--density", args->density,
                   "kg/m³ for masses computed from geometry (default 1000, water)")
       ->type_name("RHO");

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -118,7 +119,9 @@ bool LooksLikeModel(const fs::path& path) {
 // Files of a directory tree that look like robot models, sorted. *.urdf and *.sdf are always
 // taken; *.world and *.xml only when their root element is <robot> or <sdf>. Hidden folders are
 // skipped; symbolic links to folders are not followed.
-std::vector<std::string> CollectModelFiles(const fs::path& dir) {
+// Extensions are matched case-insensitively (.URDF, .Sdf). Every other regular file (outside
+// hidden folders) is counted in *skipped.
+std::vector<std::string> CollectModelFiles(const fs::path& dir, int* skipped) {
   std::vector<std::string> files;
   std::error_code ec;
   fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
@@ -131,11 +134,15 @@ std::vector<std::string> CollectModelFiles(const fs::path& dir) {
       continue;
     }
     if (!it->is_regular_file(type_ec)) continue;
-    const std::string ext = path.extension().string();
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".urdf" || ext == ".sdf") {
       files.push_back(path.string());
-    } else if (ext == ".world" || ext == ".xml") {
-      if (LooksLikeModel(path)) files.push_back(path.string());
+    } else if ((ext == ".world" || ext == ".xml") && LooksLikeModel(path)) {
+      files.push_back(path.string());
+    } else {
+      ++*skipped;
     }
   }
   std::sort(files.begin(), files.end());
@@ -304,10 +311,11 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
     inputs.push_back(*example);
   }
   std::vector<std::string> files;
+  int skipped_files = 0;  // files of the folders given that are not models
   for (const std::string& input : inputs) {
     std::error_code ec;
     if (input != "-" && fs::is_directory(input, ec)) {
-      const std::vector<std::string> found = CollectModelFiles(input);
+      const std::vector<std::string> found = CollectModelFiles(input, &skipped_files);
       if (found.empty() && !args.quiet) {
         std::cerr << "massprops: no URDF or SDF files found in " << input << "\n";
       }
@@ -377,6 +385,7 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
 
   massprops::ReportOptions report_options;
   report_options.quiet = args.quiet;
+  report_options.skipped_files = skipped_files;
   if (args.color == "always") {
     report_options.color = true;
   } else if (args.color == "auto") {

@@ -81,6 +81,9 @@ struct GeometryBounds {
   bool from_collision = true;  ///< false: the visual geometry was used.
   int count = 0;               ///< Number of geometries in the box.
   bool from_mesh = false;      ///< The box is that of a LinkShape with meshes (see below).
+  /// Some geometry of the link (a mesh whose size is not known) is not in the box: the body may
+  /// reach farther than the box, so only "too small" verdicts can be made from it.
+  bool partial = false;
 };
 
 /// The link as a uniform solid of its geometry: from its primitives when its collision

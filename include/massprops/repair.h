@@ -39,10 +39,21 @@ inline constexpr double kValidityFloor = 1e-9;
 /// The density used for a link's mass when it has to come from its geometry (water, kg/m³).
 inline constexpr double kDefaultDensity = 1000;
 
+/// The rules whose repairs are guesses (heuristics): planned only when named in
+/// RepairOptions::apply (`massprops fix --apply RULE,...`). Every other repair answers an error
+/// that physics decides (`inertia-not-physical`: the nearest valid inertia) and is planned by
+/// default. `mass-not-positive`, `massless-moving-body` and `inertial-missing` are repaired from
+/// the geometry and a density, a guess too.
+const std::vector<std::string>& HeuristicRepairRules();
+
 struct RepairOptions {
   InertiaRepairMethod method = InertiaRepairMethod::kProject;
+  /// The heuristic repairs asked for, by rule id (see HeuristicRepairRules; "all" means every
+  /// one). Empty (the default): only repairs of error findings that physics decides.
+  std::vector<std::string> apply;
   /// Repair `units-suspect` even when more than one unit mistake would explain the numbers (then
   /// the one whose radius of gyration lands nearest half the geometry's half-diagonal is taken).
+  /// Implies apply "units-suspect".
   bool fix_units = false;
   double density = kDefaultDensity;  ///< kg/m³, for masses computed from geometry. > 0.
   /// --from-geometry: replace the inertial of every link with usable geometry (primitives, or
@@ -96,6 +107,19 @@ struct Repair {
   double relative_change = 0;
   /// The rules this repair resolves on its link (checked by re-running the checks).
   std::vector<std::string> resolves;
+  /// The rules of its link this repair answers: each must be gone after it, or it is refused.
+  std::vector<std::string> answers;
+};
+
+/// A repair that was planned but is not written, and why: it would leave the finding it answers
+/// or create a finding on its link (the repaired model is checked again), or no candidate fits.
+struct RefusedRepair {
+  std::string rule;  ///< The finding it answered, e.g. "units-suspect".
+  std::string link;
+  int link_line = 0;
+  /// What is wrong with the repair and what a human should look at, e.g. "inertia 1e-20 kg·m² on
+  /// a 2.2 kg body: radius of gyration 1e-10 m; ... not repaired".
+  std::string why;
 };
 
 /// The inertia of the link's primitive geometry (box, cylinder, sphere, capsule, ellipsoid):
@@ -123,9 +147,14 @@ Eigen::Matrix3d RepairInertia(const Eigen::Matrix3d& I, InertiaRepairMethod meth
 /// link, in file order. A link gets a repair when one of its findings has a remedy (see
 /// docs/fix.md) or it is named by --from-geometry. Each repair's `resolves` lists the findings of
 /// its link that are gone after it (the checks are run again on the repaired model).
+/// Every repair is checked again on its own: one that would leave a finding it answers or create
+/// a finding the model did not have is dropped and listed in `refused` (when given) with the
+/// reason. The numbers of an accepted repair are rounded to the fewest significant digits (at
+/// least 6) whose rounded inertial passes the same checks.
 /// Never throws for a model the readers produced.
 std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& findings,
-                                const RepairOptions& options = {});
+                                const RepairOptions& options = {},
+                                std::vector<RefusedRepair>* refused = nullptr);
 
 /// Sets `repair` of every finding that a planned repair resolves (same link, rule in `resolves`).
 void AttachRepairs(const std::vector<Repair>& repairs, std::vector<Finding>& findings);

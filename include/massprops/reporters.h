@@ -45,6 +45,9 @@ struct ReportOptions {
   bool color = false;
   /// Text only: leave out the closing summary line.
   bool quiet = false;
+  /// Files of the folders given that were not taken as models (text summary line, JSON
+  /// summary "skipped_files").
+  int skipped_files = 0;
   /// The tool's version, written into JSON and SARIF.
   std::string tool_version = MASSPROPS_VERSION;
   /// SARIF `tool.driver.informationUri` (and the base of each rule's helpUri, as

@@ -401,6 +401,7 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
   options.method =
       repair == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject;
   options.fix_units = fix_units;
+  options.apply = apply;  // PlanRepairs plans heuristic repairs only when named
   options.density = density;
   options.from_geometry_all = from_geometry_all;
   options.from_geometry_links = from_geometry_links;
