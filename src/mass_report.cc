@@ -561,7 +561,7 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
     root["errors"].push_back({{"file", e.file}, {"line", e.line}, {"message", e.message}});
   }
   // nlohmann::json prints the shortest decimal that reads back to the same double.
-  out << root.dump(2) << "\n";
+  out << root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 std::string CsvField(const std::string& text) {

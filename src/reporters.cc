@@ -259,7 +259,7 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                            {"warnings", s.warnings},
                            {"notes", s.notes},
                            {"read_errors", s.read_errors}}}};
-  return document.dump(2) + "\n";
+  return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options) {
@@ -330,7 +330,7 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
       {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
       {"version", "2.1.0"},
       {"runs", json::array({{{"tool", {{"driver", driver}}}, {"results", sarif_results}}})}};
-  return log.dump(2) + "\n";
+  return log.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string RenderGithub(const std::vector<FileResult>& results, const ReportOptions& options) {

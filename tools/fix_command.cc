@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +30,7 @@
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
 #include "massprops/xml_patch.h"
+#include "safe_write.h"
 
 namespace massprops::cli {
 namespace {
@@ -55,54 +57,28 @@ struct FixArgs {
   std::vector<std::string> model_paths;
   bool geometry = false;
   std::vector<std::string> package_paths;
+  bool include_files = false;
 };
 
-// Writes `data` to `path` through a temporary file in the same folder (mkstemp), flushed to disk
-// (fsync) and renamed over `path` only when complete. On failure the temporary file is removed,
-// `path` is untouched and the error is returned.
-std::optional<std::string> WriteAtomically(const fs::path& path, const std::string& data,
-                                           std::optional<mode_t> mode) {
-  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::string name = (dir / ("." + path.filename().string() + ".massprops-XXXXXX")).string();
-  std::vector<char> buffer(name.begin(), name.end());
-  buffer.push_back('\0');
-  const int fd = mkstemp(buffer.data());
-  if (fd < 0) return "cannot create a temporary file in " + dir.string() + ": " + strerror(errno);
-  const std::string tmp(buffer.data());
-  auto fail = [&](const std::string& what) -> std::optional<std::string> {
-    const std::string message = what + ": " + strerror(errno);
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    return message;
-  };
-  std::size_t written = 0;
-  while (written < data.size()) {
-    const ssize_t n = ::write(fd, data.data() + written, data.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return fail("cannot write " + tmp);
+// The file each repaired link is defined in: the top-level file, or (SDF) the file of an
+// included model.
+std::string FileOfLink(const std::vector<Model>& models, const std::string& link_name, int line) {
+  for (const Model& model : models) {
+    for (const Link& link : model.links) {
+      if (link.name == link_name && link.location.line == line) return link.location.file;
     }
-    written += static_cast<std::size_t>(n);
   }
-  if (mode && ::fchmod(fd, *mode) != 0) return fail("cannot set the mode of " + tmp);
-  if (::fsync(fd) != 0) return fail("cannot flush " + tmp);
-  if (::close(fd) != 0) {
-    const std::string message = "cannot close " + tmp + ": " + strerror(errno);
-    ::unlink(tmp.c_str());
-    return message;
+  return "";
+}
+
+// Prints the reader's findings (unresolved includes, unreadable inertials, ...) as `check` does,
+// so that nothing the reader skipped goes unsaid.
+void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
+  for (const Finding& f : ReaderFindings(read, options)) {
+    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
+              << f.message << " [" << f.rule << "]\n";
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string message =
-        "cannot rename " + tmp + " to " + path.string() + ": " + strerror(errno);
-    ::unlink(tmp.c_str());
-    return message;
-  }
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY);  // Make the rename durable (best effort).
-  if (dir_fd >= 0) {
-    ::fsync(dir_fd);
-    ::close(dir_fd);
-  }
-  return std::nullopt;
+  for (const ReadError& w : read.warnings) std::cerr << w.ToString() << " (warning)\n";
 }
 
 int RunFix(const FixArgs& args) {
@@ -120,6 +96,11 @@ int RunFix(const FixArgs& args) {
   }
   if (args.in_place && args.file == "-") {
     std::cerr << "massprops: error: --in-place needs a file, not standard input\n";
+    return kExitError;
+  }
+  if (!(args.tolerance >= 0) || !std::isfinite(args.tolerance)) {
+    std::cerr << "massprops: error: --tolerance must be a finite number at least 0, got "
+              << args.tolerance << "\n";
     return kExitError;
   }
   if (!(args.density > 0) || !std::isfinite(args.density)) {
@@ -162,6 +143,8 @@ int RunFix(const FixArgs& args) {
     if (args.geometry) check_options.shape = options.shape;
   }
 
+  PrintReaderFindings(read, check_options);
+
   std::vector<Repair> repairs;
   std::vector<std::string> known_links;
   for (const Model& model : read.models) {
@@ -169,6 +152,64 @@ int RunFix(const FixArgs& args) {
     const std::vector<Finding> findings = CheckModel(model, check_options);
     std::vector<Repair> planned = PlanRepairs(model, findings, options);
     repairs.insert(repairs.end(), planned.begin(), planned.end());
+  }
+  // Repairs of links defined in an included SDF model belong to that model's file: written there
+  // with --include-files, otherwise named (never applied to an element of the same name here).
+  std::map<std::string, std::vector<Repair>> included_repairs;  // by file
+  {
+    std::vector<Repair> top;
+    for (Repair& r : repairs) {
+      const std::string file = FileOfLink(read.models, r.link, r.link_line);
+      if (file.empty() || file == name) {
+        top.push_back(std::move(r));
+      } else {
+        included_repairs[file].push_back(std::move(r));
+      }
+    }
+    repairs = std::move(top);
+  }
+  int included_applied = 0;
+  int included_skipped = 0;
+  std::vector<std::pair<std::string, std::string>> included_outputs;  // file, patched text
+  std::vector<Finding> included_remaining;  // errors left in the repaired included files
+  for (const auto& [file, file_repairs] : included_repairs) {
+    if (!args.include_files) {
+      for (const Repair& r : file_repairs) {
+        ++included_skipped;
+        std::cerr << file << ":" << r.link_line << ": link '" << r.link << "' (" << r.rule
+                  << ") is defined in this included model, not in " << name
+                  << ": not repaired; fix that file, or run with --include-files\n";
+      }
+      continue;
+    }
+    std::string included_text;
+    if (std::optional<ReadError> error =
+            ReadInputFile(file, kMaxModelFileBytes, &included_text)) {
+      std::cerr << error->ToString() << "\n";
+      return kExitError;
+    }
+    PatchOptions patch_options;
+    patch_options.included = true;
+    const PatchResult included =
+        PatchModelText(included_text, Model::Format::kSdf, file_repairs, patch_options);
+    for (const PatchError& e : included.errors) {
+      std::cerr << file << ":" << e.line << ": link '" << e.link
+                << "': the repair cannot be written: " << e.message << "\n";
+    }
+    const ReadResult reread_included = ReadModelString(included.text, file, read_options);
+    if (!reread_included.ok()) {
+      std::cerr << "massprops: internal error: the repaired " << file
+                << " does not read back; nothing written:\n";
+      for (const ReadError& e : reread_included.errors) std::cerr << "  " << e.ToString() << "\n";
+      return kExitError;
+    }
+    included_applied += included.applied;
+    if (included.text != included_text) included_outputs.emplace_back(file, included.text);
+    for (const Model& model : reread_included.models) {
+      for (const Finding& f : CheckModel(model, check_options)) {
+        if (f.severity == Severity::kError) included_remaining.push_back(f);
+      }
+    }
   }
   for (const std::string& link : args.from_geometry_links) {
     if (std::find(known_links.begin(), known_links.end(), link) == known_links.end()) {
@@ -206,13 +247,21 @@ int RunFix(const FixArgs& args) {
     return kExitError;
   }
   int remaining_errors = 0;
+  auto rewritten = [&](const std::string& file) {
+    return std::any_of(included_outputs.begin(), included_outputs.end(),
+                       [&](const auto& output) { return output.first == file; });
+  };
+  std::vector<Finding> remaining = included_remaining;
   for (const Model& model : reread.models) {
     for (const Finding& f : CheckModel(model, check_options)) {
-      if (f.severity != Severity::kError) continue;
-      ++remaining_errors;
-      std::cerr << f.location.file << ":" << f.location.line << ": error: " << f.message << " ["
-                << f.rule << "] (no repair)\n";
+      // An included file being repaired is judged above, on its repaired text.
+      if (f.severity == Severity::kError && !rewritten(f.location.file)) remaining.push_back(f);
     }
+  }
+  for (const Finding& f : remaining) {
+    ++remaining_errors;
+    std::cerr << f.location.file << ":" << f.location.line << ": error: " << f.message << " ["
+              << f.rule << "] (no repair)\n";
   }
   const bool changed = patched.text != text;
 
@@ -235,22 +284,24 @@ int RunFix(const FixArgs& args) {
     }
     if (!changed) std::cout << name << ": no change needed\n";
   } else {
-    if (args.diff) std::cout << UnifiedDiff(text, patched.text, args.file);
+    if (args.diff) {
+      std::cout << UnifiedDiff(text, patched.text, args.file);
+      for (const auto& [file, included_text] : included_outputs) {
+        std::string before;
+        ReadInputFile(file, kMaxModelFileBytes, &before);
+        std::cout << UnifiedDiff(before, included_text, file);
+      }
+    }
+    std::vector<std::string> notes;
     if (args.in_place) {
       if (changed) {
-        std::error_code ec;
-        fs::path target = args.file;
-        if (fs::is_symlink(target, ec)) target = fs::canonical(target, ec);
-        struct stat st {};
-        std::optional<mode_t> mode;
-        if (::stat(target.c_str(), &st) == 0) mode = st.st_mode & 07777;
         if (!args.backup.empty()) {
-          if (auto error = WriteAtomically(target.string() + args.backup, text, mode)) {
+          if (auto error = WriteFileSafely(args.file + args.backup, text, &notes)) {
             std::cerr << "massprops: error: " << *error << "; nothing written\n";
             return kExitError;
           }
         }
-        if (auto error = WriteAtomically(target, patched.text, mode)) {
+        if (auto error = WriteFileSafely(args.file, patched.text, &notes)) {
           std::cerr << "massprops: error: " << *error << "; " << args.file << " is unchanged\n";
           return kExitError;
         }
@@ -259,17 +310,32 @@ int RunFix(const FixArgs& args) {
       std::error_code ec;
       if (!changed && args.file != "-" && fs::equivalent(args.output, args.file, ec)) {
         // -o FILE naming the input itself: a file that needs no change is not rewritten.
-      } else if (auto error = WriteAtomically(args.output, patched.text, std::nullopt)) {
-        std::cerr << "massprops: error: " << *error << "\n";
+      } else if (auto error = WriteFileSafely(args.output, patched.text, &notes)) {
+        std::cerr << "massprops: error: " << *error << "; nothing written\n";
         return kExitError;
       }
     } else if (!args.diff || args.output == "-") {
       std::cout << patched.text;
     }
+    // Included models are always repaired in place (they are other files than FILE).
+    for (const auto& [file, included_text] : included_outputs) {
+      if (auto error = WriteFileSafely(file, included_text, &notes)) {
+        std::cerr << "massprops: error: " << *error << "; " << file << " is unchanged\n";
+        return kExitError;
+      }
+      std::cerr << "massprops: " << file << ": repaired (an included model)\n";
+    }
+    for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
   std::cout.flush();
-  std::cerr << "massprops: " << name << ": " << patched.applied << " link(s) repaired"
-            << (changed ? "" : ", no change needed");
+  std::cerr << "massprops: " << name << ": " << patched.applied + included_applied
+            << " link(s) repaired" << (changed || !included_outputs.empty() ? "" : ", no change needed");
+  if (!patched.errors.empty()) {
+    std::cerr << "; " << patched.errors.size() << " repair(s) could not be written";
+  }
+  if (included_skipped > 0) {
+    std::cerr << "; " << included_skipped << " repair(s) of included models not applied";
+  }
   if (remaining_errors > 0) std::cerr << "; " << remaining_errors << " error(s) have no repair";
   std::cerr << "\n";
   return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
@@ -318,6 +384,9 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
   AddPackagePathOption(fix, &args->package_paths);
   fix->add_option("--tolerance", args->tolerance,
                   "Validity tolerance relative to the trace (as check; default 1e-6)");
+  fix->add_flag("--include-files", args->include_files,
+                "SDF: also repair links of included models (<include>) in their own files, in "
+                "place (atomically; without it such a link is named with its file, not repaired)");
   fix->add_option("--model-path", args->model_paths, "Folder searched for SDF model:// URIs")
       ->type_name("DIR")
       ->allow_extra_args(false);
