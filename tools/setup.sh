@@ -6,7 +6,8 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$here/build}
 
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
-          nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev)
+          nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev
+          clang-14 libfuzzer-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
