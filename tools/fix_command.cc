@@ -29,6 +29,7 @@
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
+#include "massprops/reporters.h"
 #include "massprops/xml_patch.h"
 #include "safe_write.h"
 
@@ -78,7 +79,11 @@ void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
     std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
               << f.message << " [" << f.rule << "]\n";
   }
-  for (const ReadError& w : read.warnings) std::cerr << w.ToString() << " (warning)\n";
+  for (const ReadError& w : read.warnings) {  // as `check` prints them
+    std::cerr << w.location.file << ":" << w.location.line << ": warning: "
+              << (w.element.empty() ? w.message : w.element + ": " + w.message) << " ["
+              << kReadWarningRule << "]\n";
+  }
 }
 
 int RunFix(const FixArgs& args) {
@@ -246,25 +251,32 @@ int RunFix(const FixArgs& args) {
     for (const ReadError& e : reread.errors) std::cerr << "  " << e.ToString() << "\n";
     return kExitError;
   }
-  int remaining_errors = 0;
-  auto rewritten = [&](const std::string& file) {
-    return std::any_of(included_outputs.begin(), included_outputs.end(),
-                       [&](const auto& output) { return output.first == file; });
-  };
-  std::vector<Finding> remaining = included_remaining;
-  for (const Model& model : reread.models) {
-    for (const Finding& f : CheckModel(model, check_options)) {
-      // An included file being repaired is judged above, on its repaired text.
-      if (f.severity == Severity::kError && !rewritten(f.location.file)) remaining.push_back(f);
+  // The errors left, listed once the output is final: when included files are repaired in place
+  // the top-level model is judged again after they are written (its welded groups use them).
+  auto list_remaining = [&](const ReadResult& final_read, bool includes_written) {
+    auto rewritten = [&](const std::string& file) {
+      return std::any_of(included_outputs.begin(), included_outputs.end(),
+                         [&](const auto& output) { return output.first == file; });
+    };
+    std::vector<Finding> remaining = includes_written ? std::vector<Finding>{} : included_remaining;
+    for (const Model& model : final_read.models) {
+      for (const Finding& f : CheckModel(model, check_options)) {
+        // Without the written includes, a file being repaired is judged on its repaired text.
+        if (f.severity != Severity::kError) continue;
+        if (!includes_written && rewritten(f.location.file)) continue;
+        remaining.push_back(f);
+      }
     }
-  }
-  for (const Finding& f : remaining) {
-    ++remaining_errors;
-    std::cerr << f.location.file << ":" << f.location.line << ": error: " << f.message << " ["
-              << f.rule << "] (no repair)\n";
-  }
+    for (const Finding& f : remaining) {
+      std::cerr << f.location.file << ":" << f.location.line << ": error: "
+                << ShortenLongWords(f.message) << " [" << f.rule << "] (no repair)\n";
+    }
+    return static_cast<int>(remaining.size());
+  };
   const bool changed = patched.text != text;
 
+  int remaining_errors = 0;
+  if (args.dry_run || included_outputs.empty()) remaining_errors = list_remaining(reread, false);
   if (args.dry_run) {
     std::vector<bool> failed(repairs.size(), false);
     for (std::size_t i = 0; i < repairs.size(); ++i) {
@@ -324,6 +336,9 @@ int RunFix(const FixArgs& args) {
         return kExitError;
       }
       std::cerr << "massprops: " << file << ": repaired (an included model)\n";
+    }
+    if (!included_outputs.empty()) {
+      remaining_errors = list_remaining(ReadModelString(patched.text, name, read_options), true);
     }
     for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }

@@ -42,7 +42,7 @@ log=$build/fuzz-$target.log
 status=0
 # Leak detection off: a leak is not a wrong answer, and the readers' caches live until exit.
 ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  "$build/massprops_fuzz_$target" "${flags[@]}" "$@" "$corpus" "${seeds[@]}" >"$log" 2>&1 ||
+  "$build/tests/fuzz/massprops_fuzz_$target" "${flags[@]}" "$@" "$corpus" "${seeds[@]}" >"$log" 2>&1 ||
   status=$?
 execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
 last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)

@@ -19,6 +19,7 @@
 #include "massprops/merge_fixed.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
+#include "massprops/reporters.h"
 #include "safe_write.h"
 
 namespace massprops::cli {
@@ -91,7 +92,11 @@ int RunReport(const ReportArgs& args) {
       std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity)
                 << ": " << f.message << " [" << f.rule << "]\n";
     }
-    for (const ReadError& w : read.warnings) std::cerr << w.ToString() << " (warning)\n";
+    for (const ReadError& w : read.warnings) {  // as `check` prints them
+      std::cerr << w.location.file << ":" << w.location.line << ": warning: "
+                << (w.element.empty() ? w.message : w.element + ": " + w.message) << " ["
+                << kReadWarningRule << "]\n";
+    }
     for (const ReadError& e : read.errors) {
       errors.push_back({e.location.file, e.location.line,
                         e.element.empty() ? e.message : e.element + ": " + e.message});
