@@ -362,14 +362,14 @@ TEST(ChecksTest, ReaderFindingsTakeTheirRulesSeverityAndHonourOverridesAndIgnore
   std::vector<massprops::Finding> findings = massprops::ReaderFindings(read);
   ASSERT_EQ(findings.size(), 1u);
   EXPECT_EQ(findings[0].link, "loud");
-  EXPECT_EQ(findings[0].severity, Severity::kError);
+  EXPECT_EQ(findings[0].severity, massprops::Severity::kError);
   EXPECT_EQ(findings[0].location.line, 7);
 
   massprops::CheckOptions options;
-  options.overrides["inertial-unreadable"] = Severity::kWarning;
+  options.overrides["inertial-unreadable"] = massprops::Severity::kWarning;
   findings = massprops::ReaderFindings(read, options);
   ASSERT_EQ(findings.size(), 1u);
-  EXPECT_EQ(findings[0].severity, Severity::kWarning);
+  EXPECT_EQ(findings[0].severity, massprops::Severity::kWarning);
   options.overrides["inertial-unreadable"] = std::nullopt;
   EXPECT_TRUE(massprops::ReaderFindings(read, options).empty());
 }
