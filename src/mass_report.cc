@@ -1,5 +1,4 @@
 #include "massprops/mass_report.h"
-#include "massprops/reporters.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "massprops/principal_axes.h"
+#include "massprops/reporters.h"
 
 namespace massprops {
 namespace {

@@ -163,8 +163,7 @@ ReadResult ReadModelString(const std::string& xml, const std::string& file_name,
                               : "neither URDF nor SDF: the first element is not <robot> or <sdf>";
   if (const char* encoding = Utf16Or32(xml)) {
     error.message = std::string("the file is encoded in ") + encoding +
-                    "; massprops reads UTF-8 (convert it, e.g. iconv -f " + encoding +
-                    " -t UTF-8)";
+                    "; massprops reads UTF-8 (convert it, e.g. iconv -f " + encoding + " -t UTF-8)";
   }
   result.errors.push_back(std::move(error));
   return result;

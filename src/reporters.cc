@@ -202,8 +202,8 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
       const std::string severity = std::string(ToString(finding.severity)) + ":";
       if (color) {
         out += std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
-               severity + kReset + " " + ShortenLongWords(finding.message) + " " + kDim + "[" + finding.rule + "]" +
-               kReset + "\n";
+               severity + kReset + " " + ShortenLongWords(finding.message) + " " + kDim + "[" +
+               finding.rule + "]" + kReset + "\n";
       } else {
         out += where + ": " + severity + " " + ShortenLongWords(finding.message) + " [" +
                finding.rule + "]\n";
@@ -339,15 +339,14 @@ std::string RenderGithub(const std::vector<FileResult>& results, const ReportOpt
   std::string out;
   for (const FileResult& result : results) {
     for (const ReadError& error : result.errors) {
-      out += GithubLine("error", FileOf(error.location, result), error.location.line,
-                        error.location.column, kReadErrorRule,
-                        ShortenLongWords(ReadErrorText(error)));
+      out +=
+          GithubLine("error", FileOf(error.location, result), error.location.line,
+                     error.location.column, kReadErrorRule, ShortenLongWords(ReadErrorText(error)));
     }
     for (const Finding& finding : result.findings) {
-      out +=
-          GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
-                     finding.location.line, finding.location.column, finding.rule,
-                     ShortenLongWords(finding.message));
+      out += GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
+                        finding.location.line, finding.location.column, finding.rule,
+                        ShortenLongWords(finding.message));
     }
   }
   return out;

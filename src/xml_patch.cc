@@ -248,14 +248,15 @@ class Patcher {
     std::vector<const LinkElement*> named;
     for (const LinkElement& link : links_) {
       const bool same = link.scoped == name;
-      const bool suffix = included && name.size() > link.scoped.size() + 2 &&
-                          name.compare(name.size() - link.scoped.size(), link.scoped.size(),
-                                       link.scoped) == 0 &&
-                          name.compare(name.size() - link.scoped.size() - 2, 2, "::") == 0;
+      const bool suffix =
+          included && name.size() > link.scoped.size() + 2 &&
+          name.compare(name.size() - link.scoped.size(), link.scoped.size(), link.scoped) == 0 &&
+          name.compare(name.size() - link.scoped.size() - 2, 2, "::") == 0;
       if (same || suffix) named.push_back(&link);
     }
     if (named.empty()) {
-      Fail("this file has no <link name=\"" + std::string(ShortName(name)) + "\"> at the element path " +
+      Fail("this file has no <link name=\"" + std::string(ShortName(name)) +
+           "\"> at the element path " +
            std::string(sdf_ ? "sdf/[world/]model/[model/...]link" : "robot/link") +
            " (an element inside a comment does not count)");
       return std::nullopt;
@@ -324,8 +325,8 @@ class Patcher {
         const auto value = AttributeValue(t_, child, "name");
         if (!value) continue;
         pending.push_back(
-            {child, prefix + std::string(t_.substr(value->first, value->second - value->first)) +
-                        "::"});
+            {child,
+             prefix + std::string(t_.substr(value->first, value->second - value->first)) + "::"});
       }
     }
   }
@@ -333,8 +334,8 @@ class Patcher {
   void AddLink(const Span& link, const std::string& prefix) {
     const auto value = AttributeValue(t_, link, "name");
     if (!value) return;
-    links_.push_back({prefix + std::string(t_.substr(value->first, value->second - value->first)),
-                      link});
+    links_.push_back(
+        {prefix + std::string(t_.substr(value->first, value->second - value->first)), link});
   }
 
   // Replaces the white-space separated numbers first, first + 1, ... of [begin, end).

@@ -71,9 +71,8 @@ class FixSafetyTest : public ::testing::Test {
   // Runs `sh -c 'PREFIX massprops ARGS'` in the test folder; stdout/stderr captured unless
   // ARGS redirects them itself.
   ToolRun Tool(const std::string& args, const std::string& prefix = "") {
-    const std::string command = "cd '" + dir_.string() + "' && { " + prefix + " '" + kTool +
-                                "' " + args + "; } >'" + out_.string() + "' 2>'" +
-                                err_.string() + "'";
+    const std::string command = "cd '" + dir_.string() + "' && { " + prefix + " '" + kTool + "' " +
+                                args + "; } >'" + out_.string() + "' 2>'" + err_.string() + "'";
     const int status = std::system(command.c_str());
     ToolRun run;
     run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -151,8 +150,8 @@ TEST_F(FixSafetyTest, AFifoOutputIsWrittenThroughNotReplaced) {
   WriteFile(dir_ / "r.urdf", kBadUrdf);
   ASSERT_EQ(mkfifo((dir_ / "pipe").c_str(), 0600), 0);
   // A reader drains the FIFO while fix writes into it.
-  const ToolRun run = Tool("fix r.urdf -o pipe & timeout 20 cat pipe > drained; wait $!",
-                          "timeout 20");
+  const ToolRun run =
+      Tool("fix r.urdf -o pipe & timeout 20 cat pipe > drained; wait $!", "timeout 20");
   EXPECT_EQ(run.code, 0) << run.err;
   struct stat st {};
   ASSERT_EQ(lstat((dir_ / "pipe").c_str(), &st), 0);
@@ -209,7 +208,8 @@ TEST_F(FixSafetyTest, AHardLinkedFileIsReplacedUnderItsNameAndTheToolSaysSo) {
 
 TEST_F(FixSafetyTest, TwoConcurrentFixesLeaveAValidFile) {
   WriteFile(dir_ / "r.urdf", kBadUrdf);
-  const ToolRun run = Tool("fix r.urdf --in-place & '" + kTool + "' fix r.urdf --in-place; wait $!");
+  const ToolRun run =
+      Tool("fix r.urdf --in-place & '" + kTool + "' fix r.urdf --in-place; wait $!");
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_EQ(Tool("check r.urdf").code, 0);
   EXPECT_EQ(WithoutNumbers(ReadFile(dir_ / "r.urdf")), WithoutNumbers(kBadUrdf));

@@ -37,9 +37,9 @@ void RunAll(const std::string& target, const std::vector<std::string>& folders) 
   for (const std::string& folder : folders) {
     for (const fs::path& path : InputsOf(folder)) {
       std::ifstream in(path, std::ios::binary);
-      const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-      EXPECT_EQ(run(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), "")
-          << path;
+      const std::string bytes((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+      EXPECT_EQ(run(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), "") << path;
       ++count;
     }
   }

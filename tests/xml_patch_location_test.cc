@@ -32,8 +32,7 @@ TEST(PatchLocationTest, ACommentedOutLinkOnTheSameLineIsNotEdited) {
       "<!-- <link name=\"a\"><inertial><mass value=\"1\"/></inertial></link> --> "
       "<link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>\n"
       "</robot>\n";
-  const PatchResult result =
-      PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 2, 2, 5)});
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 2, 2, 5)});
   ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
   EXPECT_EQ(result.text,
             "<robot name=\"r\">\n"
@@ -47,8 +46,7 @@ TEST(PatchLocationTest, ALinkThatExistsOnlyInACommentIsAnErrorNotAnEdit) {
       "<robot name=\"r\">\n"
       "<!-- <link name=\"a\"><inertial><mass value=\"1\"/></inertial></link> -->\n"
       "</robot>\n";
-  const PatchResult result =
-      PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 2, 2, 5)});
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 2, 2, 5)});
   EXPECT_EQ(result.text, before);
   ASSERT_EQ(result.errors.size(), 1u);
   EXPECT_EQ(result.applied, 0);
@@ -81,8 +79,8 @@ TEST(PatchLocationTest, TheIncludedFileIsPatchedWhenAskedFor) {
       "</sdf>\n";
   PatchOptions options;
   options.included = true;
-  const PatchResult result = PatchModelText(included, Model::Format::kSdf,
-                                            {SetSdfMass("cargo::body", 3, 3, 5)}, options);
+  const PatchResult result =
+      PatchModelText(included, Model::Format::kSdf, {SetSdfMass("cargo::body", 3, 3, 5)}, options);
   ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
   EXPECT_EQ(result.text,
             "<sdf version=\"1.9\">\n"
@@ -129,8 +127,7 @@ TEST(PatchLocationTest, ALinkOutsideTheElementPathIsNotEdited) {
       "<gazebo><link name=\"a\"><inertial><mass value=\"1\"/></inertial></link></gazebo>"
       "<link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>\n"
       "</robot>\n";
-  const PatchResult result =
-      PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 2, 2, 3)});
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 2, 2, 3)});
   ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
   EXPECT_EQ(result.text,
             "<robot name=\"r\">\n"
@@ -144,8 +141,7 @@ TEST(PatchLocationTest, TheLinkMustBeAtTheLineTheModelSays) {
       "<robot name=\"r\">\n"
       "<link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>\n"
       "</robot>\n";
-  const PatchResult result =
-      PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 3, 2, 3)});
+  const PatchResult result = PatchModelText(before, Model::Format::kUrdf, {SetMass("a", 3, 2, 3)});
   EXPECT_EQ(result.text, before);
   ASSERT_EQ(result.errors.size(), 1u);
   EXPECT_NE(result.errors[0].message.find("line 2, the model says 3"), std::string::npos)

@@ -80,9 +80,9 @@ void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
               << f.message << " [" << f.rule << "]\n";
   }
   for (const ReadError& w : read.warnings) {  // as `check` prints them
-    std::cerr << w.location.file << ":" << w.location.line << ": warning: "
-              << (w.element.empty() ? w.message : w.element + ": " + w.message) << " ["
-              << kReadWarningRule << "]\n";
+    std::cerr << w.location.file << ":" << w.location.line
+              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
+              << " [" << kReadWarningRule << "]\n";
   }
 }
 
@@ -188,8 +188,7 @@ int RunFix(const FixArgs& args) {
       continue;
     }
     std::string included_text;
-    if (std::optional<ReadError> error =
-            ReadInputFile(file, kMaxModelFileBytes, &included_text)) {
+    if (std::optional<ReadError> error = ReadInputFile(file, kMaxModelFileBytes, &included_text)) {
       std::cerr << error->ToString() << "\n";
       return kExitError;
     }
@@ -268,8 +267,9 @@ int RunFix(const FixArgs& args) {
       }
     }
     for (const Finding& f : remaining) {
-      std::cerr << f.location.file << ":" << f.location.line << ": error: "
-                << ShortenLongWords(f.message) << " [" << f.rule << "] (no repair)\n";
+      std::cerr << f.location.file << ":" << f.location.line
+                << ": error: " << ShortenLongWords(f.message) << " [" << f.rule
+                << "] (no repair)\n";
     }
     return static_cast<int>(remaining.size());
   };
@@ -344,7 +344,8 @@ int RunFix(const FixArgs& args) {
   }
   std::cout.flush();
   std::cerr << "massprops: " << name << ": " << patched.applied + included_applied
-            << " link(s) repaired" << (changed || !included_outputs.empty() ? "" : ", no change needed");
+            << " link(s) repaired"
+            << (changed || !included_outputs.empty() ? "" : ", no change needed");
   if (!patched.errors.empty()) {
     std::cerr << "; " << patched.errors.size() << " repair(s) could not be written";
   }

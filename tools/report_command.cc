@@ -89,13 +89,13 @@ int RunReport(const ReportArgs& args) {
     // <inertial>) is said on standard error, in every format, as `check` says it: the numbers
     // below leave those parts out.
     for (const Finding& f : ReaderFindings(read)) {
-      std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity)
-                << ": " << f.message << " [" << f.rule << "]\n";
+      std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
+                << f.message << " [" << f.rule << "]\n";
     }
     for (const ReadError& w : read.warnings) {  // as `check` prints them
-      std::cerr << w.location.file << ":" << w.location.line << ": warning: "
-                << (w.element.empty() ? w.message : w.element + ": " + w.message) << " ["
-                << kReadWarningRule << "]\n";
+      std::cerr << w.location.file << ":" << w.location.line
+                << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
+                << " [" << kReadWarningRule << "]\n";
     }
     for (const ReadError& e : read.errors) {
       errors.push_back({e.location.file, e.location.line,

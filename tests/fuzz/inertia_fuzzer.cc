@@ -1,4 +1,5 @@
-// libFuzzer entry point of the "inertia" target (see fuzz_targets.h; run with tools/fuzz.sh inertia).
+// libFuzzer entry point of the "inertia" target (see fuzz_targets.h; run with tools/fuzz.sh
+// inertia).
 #include <cstdio>
 #include <cstdlib>
 #include <string>
