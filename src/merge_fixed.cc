@@ -3,16 +3,17 @@
 #include <tinyxml2.h>
 
 #include <Eigen/Geometry>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <unordered_map>
 #include <vector>
 
 #include "massprops/model_reader.h"
-#include "massprops/urdf_reader.h"
 #include "massprops/welded_groups.h"
 
 namespace massprops {
@@ -45,8 +46,12 @@ Eigen::Vector3d ParseTriple(const tinyxml2::XMLElement* element, const char* nam
   std::istringstream in{std::string(text)};
   std::string piece;
   for (int i = 0; i < 3 && in >> piece; ++i) {
+    // The reader (urdfdom) has read this text already: a plain decimal, perhaps with '+'.
+    const std::size_t skip = !piece.empty() && piece[0] == '+' ? 1 : 0;
     double value = 0;
-    if (ParseUrdfNumber(piece, &value) == UrdfNumberStatus::kOk) v(i) = value;
+    const std::from_chars_result r =
+        std::from_chars(piece.data() + skip, piece.data() + piece.size(), value);
+    if (r.ec == std::errc() && r.ptr == piece.data() + piece.size()) v(i) = value;
   }
   return v;
 }

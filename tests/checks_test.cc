@@ -321,6 +321,11 @@ TEST(ChecksTest, CorpusInvalidLinksMatchTheManifest) {
     }
     const ReadResult result = ReadUrdfFile(test_support::CorpusDir() + "/" + row.file);
     if (result.models.empty()) continue;  // read errors are the readers' tests
+    // The notes come from urdfdom's model: a file urdfdom refuses has none.
+    bool loadable = true;
+    for (const ReadFinding& f : result.findings)
+      loadable = loadable && f.rule != "urdf-not-loadable";
+    if (!loadable) continue;
     ++files;
     std::set<std::string> flagged;
     for (const Finding& f : CheckModel(result.models[0])) {

@@ -355,4 +355,24 @@ TEST(CliTest, WithoutAFileTheBundledExampleIsCheckedAndNamed) {
   }
 }
 
+// A URDF written for Drake (a joint to `world`, a <limit> without velocity): urdfdom refuses it,
+// massprops says so (urdf-not-loadable, an error by default) and still checks its inertias from a
+// lenient reading; a team that targets Drake only can lower the rule and keep the physics.
+TEST(CliTest, AFileUrdfdomRefusesIsAFindingAndItsInertiasAreStillChecked) {
+  RunResult run = RunTool("check drake_world.urdf");
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_TRUE(Contains(run.out, "drake_world.urdf:11: error: ROS's URDF parser will not load"))
+      << run.out;
+  EXPECT_TRUE(Contains(run.out, "[urdf-not-loadable]")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "[inertia-not-physical]")) << run.out;
+  EXPECT_EQ(run.err, "") << "urdfdom's messages are not printed";
+  run = RunTool("check --severity urdf-not-loadable=warning --fail-on error drake_world.urdf");
+  EXPECT_EQ(run.exit_code, 1) << "the inertia is still an error: " << run.out;
+  EXPECT_TRUE(Contains(run.out, "warning: ROS's URDF parser will not load")) << run.out;
+  run = RunTool(
+      "check --severity urdf-not-loadable=off --severity inertia-not-physical=off "
+      "drake_world.urdf");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+}
+
 }  // namespace

@@ -130,12 +130,16 @@ TEST(LumpingSdformatTest, EveryLumpedLinkAgreesWithTheWeldedGroup) {
     sdf::Root root;
     const sdf::Errors errors = root.Load(path);
     const ReadResult read = ReadModelFile(path);
-    if (!errors.empty() || root.Model() == nullptr || !read.ok() || read.models.empty()) {
+    // A reader finding (e.g. inertial-unreadable: urdfdom keeps a partly read <inertial>, which
+    // libsdformat lumps and massprops deliberately does not hold) makes the models differ.
+    if (!errors.empty() || root.Model() == nullptr || !read.ok() || read.models.empty() ||
+        !read.findings.empty()) {
       ++skipped_files;
       std::cout << "skipped " << file << ": "
-                << (!errors.empty() ? "libsdformat: " + errors.front().Message()
-                    : !read.ok()    ? "massprops: " + read.errors.front().ToString()
-                                    : "no model")
+                << (!errors.empty()          ? "libsdformat: " + errors.front().Message()
+                    : !read.ok()             ? "massprops: " + read.errors.front().ToString()
+                    : !read.findings.empty() ? "massprops: " + read.findings.front().message
+                                             : "no model")
                 << "\n";
       continue;
     }

@@ -1,24 +1,30 @@
 // Tests of the URDF reader (include/massprops/urdf_reader.h) on small fixtures written for them
-// (testdata/urdf/) and on inline texts. Expected line numbers are those of the fixtures as written
-// (hand-counted); expected numbers are the ones written in the fixtures; rotations are worked out
-// by hand from the URDF convention (rpy = fixed-axis roll about x, then pitch about y, then yaw
-// about z, i.e. R = Rz(yaw)·Ry(pitch)·Rx(roll); URDF XML specification, <origin> element).
+// (testdata/urdf/) and on inline texts. The model comes from urdfdom (urdf::parseURDF); what
+// urdfdom does with each case is quoted from its source (urdfdom 3.0.1,
+// urdf_parser/src/{model,link,joint, pose}.cpp) in the test's comment. Expected line numbers are
+// those of the fixtures as written (hand-counted); expected numbers are the ones written in the
+// fixtures; rotations are worked out by hand from the URDF convention (rpy = fixed-axis roll about
+// x, then pitch about y, then yaw about z, i.e. R = Rz(yaw)·Ry(pitch)·Rx(roll); URDF XML
+// specification, <origin> element).
 
 #include "massprops/urdf_reader.h"
 
+#include <console_bridge/console.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
-#include <urdf_model/utils.h>
+#include <urdf_parser/urdf_parser.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace massprops {
@@ -156,8 +162,10 @@ TEST_F(FeaturesFixture, ReadsEveryGeometryTypeWithItsPose) {
   EXPECT_EQ(cylinder.radius, 0.05);
   EXPECT_EQ(cylinder.length, 0.2);
 
+  // urdfdom 3 knows no <capsule>: it drops that <collision> (link.cpp parseGeometry), so the
+  // model has the mesh and the sphere only.
   const Link& arm = L("arm");
-  ASSERT_EQ(arm.geometries.size(), 3u);
+  ASSERT_EQ(arm.geometries.size(), 2u);
   const Geometry& mesh = arm.geometries[0];
   EXPECT_EQ(mesh.type, Geometry::Type::kMesh);
   EXPECT_FALSE(mesh.is_collision);
@@ -169,10 +177,6 @@ TEST_F(FeaturesFixture, ReadsEveryGeometryTypeWithItsPose) {
   EXPECT_EQ(arm.geometries[1].type, Geometry::Type::kSphere);
   EXPECT_EQ(arm.geometries[1].radius, 0.02);
   EXPECT_EQ(arm.geometries[1].location.line, 30);
-  EXPECT_EQ(arm.geometries[2].type, Geometry::Type::kCapsule);
-  EXPECT_EQ(arm.geometries[2].radius, 0.01);
-  EXPECT_EQ(arm.geometries[2].length, 0.1);
-  EXPECT_EQ(arm.geometries[2].location.line, 34);
 }
 
 TEST_F(FeaturesFixture, ReadsJointsWithOriginsAxesAndDefaults) {
@@ -235,270 +239,353 @@ TEST(UrdfReaderTest, RollPitchYawMatchesTheFixedAxisConvention) {
   EXPECT_TRUE(result.models[0].links[0].geometries[0].X_BG.R_AB.isApprox(expected, 1e-14));
 }
 
-// ---------------------------------------------------------------- numbers
+// ---------------------------------------------------------------- findings
 
-TEST(UrdfNumberTest, AcceptsExactlyWhatUrdfdomAccepts) {
-  // The oracle is urdfdom's own urdf::strToDouble (urdf_model/utils.h): same verdict, same bits.
-  const char* texts[] = {"1",
-                         " 1",
-                         "\t2.5",
-                         "1 ",
-                         "1\t",
-                         "+1",
-                         "-0",
-                         ".5",
-                         "5.",
-                         "1.e5",
-                         "1e5",
-                         "1E+5",
-                         "1e-5",
-                         "00012",
-                         "-.5e-3",
-                         "1e400",
-                         "-1e400",
-                         "1e-310",
-                         "1e-400",
-                         "-1e-400",
-                         "2e-324",
-                         "4.9e-324",
-                         "1.7976931348623157e308",
-                         "1.7976931348623159e308",
-                         "nan",
-                         "NaN",
-                         "inf",
-                         "-inf",
-                         "Infinity",
-                         "0x10",
-                         "1.0abc",
-                         "1,5",
-                         "abc",
-                         "",
-                         " ",
-                         "1e",
-                         "1e+",
-                         "e5",
-                         "--1",
-                         "+-1",
-                         ".",
-                         "+.",
-                         "1..2",
-                         "1e5.5",
-                         "0.1000000000000000055511151231257827",
-                         "123456789012345678901234567890",
-                         "1e-320",
-                         "0e999999999999"};
-  for (const char* text : texts) {
-    bool urdfdom_ok = true;
-    double urdfdom_value = 0;
-    try {
-      urdfdom_value = urdf::strToDouble(text);
-    } catch (const std::runtime_error&) {
-      urdfdom_ok = false;
-    }
-    double value = 12345;
-    const UrdfNumberStatus status = ParseUrdfNumber(text, &value);
-    EXPECT_EQ(status == UrdfNumberStatus::kOk, urdfdom_ok) << "text: [" << text << "]";
-    if (urdfdom_ok && status == UrdfNumberStatus::kOk) {
-      EXPECT_EQ(std::signbit(value), std::signbit(urdfdom_value)) << text;
-      EXPECT_EQ(value, urdfdom_value) << text;
-    }
+// The findings of one rule, in order.
+std::vector<ReadFinding> FindingsOf(const ReadResult& result, const std::string& rule) {
+  std::vector<ReadFinding> found;
+  for (const ReadFinding& f : result.findings) {
+    if (f.rule == rule) found.push_back(f);
+  }
+  return found;
+}
+
+// A two-link robot with link `arm` below `base`; `inertial` is the <inertial> of `arm` (line 4) and
+// `joint_extra` goes inside the joint.
+std::string TwoLinks(const std::string& inertial, const std::string& joint_extra = "",
+                     const std::string& type = "fixed") {
+  return "<robot name=\"r\">\n<link name=\"base\"/>\n<link name=\"arm\">\n" + inertial +
+         "\n</link>\n<joint name=\"j\" type=\"" + type +
+         "\">\n<parent link=\"base\"/><child link=\"arm\"/>" + joint_extra +
+         "\n</joint>\n</robot>\n";
+}
+
+const char* kUnitInertia = "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/>";
+
+TEST(UrdfReaderTest, AFileUrdfdomLoadsHasNoFindings) {
+  const ReadResult result = ReadUrdfFile(kDir + "features.urdf");
+  EXPECT_TRUE(result.findings.empty());
+  EXPECT_TRUE(result.errors.empty());
+}
+
+TEST(UrdfReaderTest, NumbersUrdfdomCannotReadMakeTheInertialUnreadableWithTheText) {
+  // urdfdom accepts the file (model.cpp ignores parseLink's result) but keeps a partly read
+  // <inertial>: an error finding on that link, quoting the text; the other links are kept.
+  const ReadResult result = Read(
+      TwoLinks("<inertial><mass value=\"1.0abc\"/>" + std::string(kUnitInertia) + "</inertial>"));
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  ASSERT_EQ(result.models.size(), 1u);
+  const std::vector<ReadFinding> f = FindingsOf(result, "inertial-unreadable");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].link, "arm");
+  EXPECT_EQ(f[0].location.line, 4);
+  EXPECT_NE(f[0].message.find("<mass value=\"1.0abc\">"), std::string::npos) << f[0].message;
+  const Link& arm = result.models[0].links[1];
+  EXPECT_TRUE(arm.inertial_unreadable);
+  EXPECT_FALSE(arm.inertial.has_value());
+  EXPECT_TRUE(FindingsOf(result, "urdf-not-loadable").empty());
+}
+
+TEST(UrdfReaderTest, EveryInertialTextUrdfdomRefusesIsNamed) {
+  // Each case: the <inertial> of `arm`, and the text the finding must quote.
+  const std::pair<std::string, std::string> cases[] = {
+      {"<inertial><mass value=\"1,5\"/>" + std::string(kUnitInertia) + "</inertial>",
+       "<mass value=\"1,5\">"},
+      {"<inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0.1\n\" iyy=\"1\" "
+       "iyz=\"0\" izz=\"1\"/></inertial>",
+       "ixz=\"0.1\\n\""},
+      {"<inertial><origin xyz=\"1 2\"/><mass value=\"1\"/>" + std::string(kUnitInertia) +
+           "</inertial>",
+       "<origin xyz=\"1 2\">"},
+      // urdfdom splits vectors on spaces only (urdf_model/pose.h Vector3::init).
+      {"<inertial><origin xyz=\"1\t2 3\"/><mass value=\"1\"/>" + std::string(kUnitInertia) +
+           "</inertial>",
+       "xyz=\"1\\t2 3\""},
+      {"<inertial>" + std::string(kUnitInertia) + "</inertial>", "without <mass>"},
+      {"<inertial><mass value=\"1\"/></inertial>", "without <inertia>"},
+      {"<inertial><mass/>" + std::string(kUnitInertia) + "</inertial>", "without 'value'"},
+      {"<inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" "
+       "izz=\"1\"/></inertial>",
+       "without 'iyz'"},
+      {"<inertial><mass value=\"nan\"/>" + std::string(kUnitInertia) + "</inertial>",
+       "<mass value=\"nan\">"},
+      {"<inertial><mass value=\"1e400\"/>" + std::string(kUnitInertia) + "</inertial>",
+       "<mass value=\"1e400\">"},
+  };
+  for (const auto& [inertial, quoted] : cases) {
+    const ReadResult result = Read(TwoLinks(inertial));
+    const std::vector<ReadFinding> f = FindingsOf(result, "inertial-unreadable");
+    ASSERT_EQ(f.size(), 1u) << inertial;
+    EXPECT_NE(f[0].message.find(quoted), std::string::npos) << f[0].message;
+    EXPECT_TRUE(result.models.at(0).links.at(1).inertial_unreadable) << inertial;
+  }
+  // Spaces around the numbers of a vector are fine for urdfdom.
+  const ReadResult spaces =
+      Read(TwoLinks("<inertial><origin xyz=\"  1  2 3 \"/><mass value=\"1\"/>" +
+                    std::string(kUnitInertia) + "</inertial>"));
+  EXPECT_TRUE(spaces.findings.empty());
+  EXPECT_EQ(spaces.models.at(0).links.at(1).inertial->X_BBi.p_AB, Eigen::Vector3d(1, 2, 3));
+}
+
+TEST(UrdfReaderTest, ValuesUrdfdomAcceptsAreKeptForTheChecks) {
+  // Negative and zero masses, a zero axis: urdfdom reads them; the checks judge them.
+  const ReadResult result =
+      Read(TwoLinks("<inertial><mass value=\"-2\"/>" + std::string(kUnitInertia) + "</inertial>",
+                    "<axis xyz=\"0 0 0\"/><limit effort=\"1\" velocity=\"1\"/>", "revolute"));
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  EXPECT_TRUE(result.findings.empty());
+  const Model& model = result.models.at(0);
+  EXPECT_EQ(model.links[1].inertial->mass, -2);
+  EXPECT_EQ(model.joints[0].axis, Eigen::Vector3d::Zero());
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].location.line, 7);
+  EXPECT_NE(result.warnings[0].message.find("zero"), std::string::npos);
+  // urdfdom leaves the axis (0, 0, 0) when <axis> has no xyz (joint.cpp; Joint::clear).
+  const ReadResult no_xyz = Read(TwoLinks("", "<axis/>", "continuous"));
+  EXPECT_EQ(no_xyz.models.at(0).joints[0].axis, Eigen::Vector3d::Zero());
+  ASSERT_EQ(no_xyz.warnings.size(), 1u);
+  EXPECT_NE(no_xyz.warnings[0].message.find("no 'xyz'"), std::string::npos);
+  // No <axis> at all: urdfdom's default (1, 0, 0), nothing to say.
+  const ReadResult no_axis = Read(TwoLinks("", "", "continuous"));
+  EXPECT_EQ(no_axis.models.at(0).joints[0].axis, Eigen::Vector3d::UnitX());
+  EXPECT_TRUE(no_axis.warnings.empty());
+}
+
+TEST(UrdfReaderTest, ASecondInertialIsAWarningWithBothLines) {
+  // urdfdom reads the first <inertial> only (link.cpp FirstChildElement("inertial")).
+  const ReadResult result =
+      Read(TwoLinks("<inertial><mass value=\"1\"/>" + std::string(kUnitInertia) +
+                    "</inertial>\n<inertial><mass value=\"5\"/>" + kUnitInertia + "</inertial>"));
+  ASSERT_EQ(result.warnings.size(), 1u);
+  EXPECT_EQ(result.warnings[0].location.line, 5);
+  EXPECT_NE(result.warnings[0].message.find("(line 5)"), std::string::npos);
+  EXPECT_NE(result.warnings[0].message.find("first (line 4)"), std::string::npos);
+  EXPECT_EQ(result.models.at(0).links[1].inertial->mass, 1);
+}
+
+TEST(UrdfReaderTest, DroppedVisualsAndMaterialsSayNothing) {
+  // urdfdom logs these and drops the <visual> (link.cpp parseVisual) or the material
+  // (model.cpp assignMaterial): no inertial number depends on them.
+  const ReadResult result = Read(
+      "<robot name=\"r\"><link name=\"a\">"
+      "<visual><geometry><box size=\"1 1 1\"/></geometry><material/></visual>"
+      "<visual><geometry><box size=\"1 1 1\"/></geometry><material name=\"nowhere\"/></visual>"
+      "<collision><geometry><cone/></geometry></collision>"
+      "</link></robot>");
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  EXPECT_TRUE(result.warnings.empty());
+  EXPECT_TRUE(result.findings.empty());
+  EXPECT_TRUE(result.models.at(0).links[0].geometries.empty())
+      << "urdfdom stops at the first <visual> it cannot read, and skips the collisions";
+}
+
+TEST(UrdfReaderTest, UrdfdomMessagesAreNeverPrinted) {
+  testing::internal::CaptureStderr();
+  testing::internal::CaptureStdout();
+  Read(
+      "<robot name=\"r\"><link name=\"a\"><visual><geometry><box size=\"1 1 1\"/></geometry>"
+      "<material/></visual></link><joint name=\"j\" type=\"spherical\"/></robot>");
+  const std::string out = testing::internal::GetCapturedStdout();
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(out, "");
+  EXPECT_EQ(err, "");
+}
+
+class Recorder : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text, console_bridge::LogLevel, const char*, int) override {
+    messages.push_back(text);
+  }
+  std::vector<std::string> messages;
+};
+
+TEST(UrdfReaderTest, TheCallersConsoleHandlerAndLevelAreRestored) {
+  Recorder mine;
+  console_bridge::useOutputHandler(&mine);
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_DEBUG);
+  Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/></robot>");  // urdfdom logs
+  EXPECT_TRUE(mine.messages.empty()) << mine.messages.front();
+  EXPECT_EQ(console_bridge::getLogLevel(), console_bridge::CONSOLE_BRIDGE_LOG_DEBUG);
+  CONSOLE_BRIDGE_logError("after the read");
+  console_bridge::restorePreviousOutputHandler();
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_WARN);
+  ASSERT_EQ(mine.messages.size(), 1u);
+  EXPECT_EQ(mine.messages[0], "after the read");
+}
+
+TEST(UrdfReaderTest, ReadsFromSeveralThreadsAtOnce) {
+  const std::string xml =
+      TwoLinks("<inertial><mass value=\"3\"/>" + std::string(kUnitInertia) + "</inertial>");
+  std::vector<std::thread> threads;
+  std::vector<double> masses(8, 0);
+  for (std::size_t t = 0; t < masses.size(); ++t) {
+    threads.emplace_back([&, t] {
+      for (int k = 0; k < 20; ++k) {
+        const ReadResult r = Read(t % 2 == 0 ? xml
+                                             : "<robot name=\"r\"><link name=\"a\"/>"
+                                               "<link name=\"b\"/></robot>");
+        if (t % 2 == 0) masses[t] = r.models.at(0).links.at(1).inertial->mass;
+        if (t % 2 == 1) masses[t] = static_cast<double>(r.findings.size());
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (std::size_t t = 0; t < masses.size(); ++t) {
+    EXPECT_EQ(masses[t], t % 2 == 0 ? 3.0 : 1.0) << "thread " << t;
   }
 }
 
-TEST(UrdfNumberTest, ClassifiesWhyATextIsRejected) {
-  double v = 0;
-  EXPECT_EQ(ParseUrdfNumber("nan", &v), UrdfNumberStatus::kNotFinite);
-  EXPECT_EQ(ParseUrdfNumber("-Inf", &v), UrdfNumberStatus::kNotFinite);
-  EXPECT_EQ(ParseUrdfNumber("1e400", &v), UrdfNumberStatus::kOutOfRange);
-  EXPECT_EQ(ParseUrdfNumber("1,5", &v), UrdfNumberStatus::kNotANumber);
-  EXPECT_EQ(ParseUrdfNumber("abc", &v), UrdfNumberStatus::kNotANumber);
-  EXPECT_EQ(ParseUrdfNumber("1.0abc", &v), UrdfNumberStatus::kNotANumber);
-  ASSERT_EQ(ParseUrdfNumber("-1e-400", &v), UrdfNumberStatus::kOk);
-  EXPECT_EQ(v, 0.0);
-  EXPECT_TRUE(std::signbit(v)) << "underflow keeps the sign, as strtod does";
+// ---------------------------------------------------------------- files urdfdom refuses
+
+TEST(UrdfReaderTest, ADrakeStyleFileIsNotLoadableButItsInertialsAreRead) {
+  // A `world` parent link and a <limit> without velocity: urdfdom refuses the file (joint.cpp
+  // parseJointLimits: "joint limit: no velocity"); Drake loads it.
+  const std::string xml =
+      "<robot name=\"drake\">\n"
+      "<link name=\"arm\">\n"
+      "<inertial><origin xyz=\"0 0 0.5\"/><mass value=\"2\"/>\n"
+      "<inertia ixx=\"0.1\" ixy=\"0\" ixz=\"0\" iyy=\"0.2\" iyz=\"0\" izz=\"0.3\"/></inertial>\n"
+      "<collision><geometry><capsule radius=\"0.1\" length=\"1\"/></geometry></collision>\n"
+      "</link>\n"
+      "<joint name=\"shoulder\" type=\"revolute\">\n"
+      "<parent link=\"world\"/><child link=\"arm\"/><origin xyz=\"1 2 3\" rpy=\"0 0 "
+      "1.5707963267948966\"/>\n"
+      "<axis xyz=\"0 0 2\"/><limit lower=\"-1\" upper=\"1\" effort=\"5\"/>\n"
+      "</joint>\n"
+      "</robot>\n";
+  const ReadResult result = Read(xml);
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  const std::vector<ReadFinding> f = FindingsOf(result, "urdf-not-loadable");
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].location.line, 7) << "the joint urdfdom names";
+  EXPECT_NE(f[0].message.find("ROS's URDF parser will not load this file"), std::string::npos);
+  EXPECT_NE(f[0].message.find("no velocity"), std::string::npos) << f[0].message;
+  EXPECT_EQ(f[0].link, "");
+  ASSERT_EQ(result.models.size(), 1u);
+  const Model& model = result.models[0];
+  EXPECT_EQ(model.name, "drake");
+  ASSERT_EQ(model.links.size(), 1u);
+  const Inertial& i = *model.links[0].inertial;
+  EXPECT_EQ(i.mass, 2);
+  EXPECT_EQ(i.iyy, 0.2);
+  EXPECT_EQ(i.X_BBi.p_AB, Eigen::Vector3d(0, 0, 0.5));
+  EXPECT_EQ(i.location.line, 3);
+  EXPECT_EQ(i.inertia_location.line, 4);
+  ASSERT_EQ(model.links[0].geometries.size(), 1u);
+  EXPECT_EQ(model.links[0].geometries[0].type, Geometry::Type::kCapsule) << "Drake knows capsules";
+  ASSERT_EQ(model.joints.size(), 1u);
+  const Joint& joint = model.joints[0];
+  EXPECT_EQ(joint.parent, "world");
+  EXPECT_EQ(joint.type, Joint::Type::kRevolute);
+  EXPECT_EQ(joint.axis, Eigen::Vector3d(0, 0, 1));
+  EXPECT_EQ(joint.X_PC.p_AB, Eigen::Vector3d(1, 2, 3));
+  EXPECT_TRUE(joint.X_PC.R_AB.isApprox(Rz90(), 1e-15));
+  EXPECT_EQ(model.root_link, "arm");
 }
 
-TEST(UrdfReaderTest, NumbersInTheFixtureAreRejectedWithElementLineAndQuotedText) {
+TEST(UrdfReaderTest, NumbersUnreadableEvenLenientlyAreFindingsOnTheirLinks) {
+  // bad_numbers.urdf has three links and no joint: urdfdom refuses it ("Two root links found").
+  // Leniently, "1,5" and "1e400" cannot be read; "nan" is read, and the checks judge it.
   const ReadResult result = ReadUrdfFile(kDir + "bad_numbers.urdf");
-  ASSERT_EQ(result.errors.size(), 3u) << AllErrors(result);
-  EXPECT_TRUE(result.models.empty());
-  EXPECT_EQ(result.errors[0].location.line, 4);
-  EXPECT_EQ(result.errors[0].element, "<mass> of link 'comma'");
-  EXPECT_NE(result.errors[0].message.find("\"1,5\" is not a number"), std::string::npos);
-  EXPECT_EQ(result.errors[1].location.line, 11);
-  EXPECT_EQ(result.errors[1].element, "<inertia> of link 'nan'");
-  EXPECT_NE(result.errors[1].message.find("'ixx' = \"nan\" is not a finite number"),
-            std::string::npos);
-  EXPECT_EQ(result.errors[2].location.line, 16);
-  EXPECT_EQ(result.errors[2].element, "<origin> of <inertial> of link 'overflow'");
-  EXPECT_NE(result.errors[2].message.find("\"1e400\" is out of the range"), std::string::npos);
-  EXPECT_EQ(result.errors[2].ToString(),
-            kDir + "bad_numbers.urdf:16: <origin> of <inertial> of link 'overflow': " +
-                result.errors[2].message);
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  ASSERT_EQ(FindingsOf(result, "urdf-not-loadable").size(), 1u);
+  const std::vector<ReadFinding> f = FindingsOf(result, "inertial-unreadable");
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_EQ(f[0].link, "comma");
+  EXPECT_EQ(f[0].location.line, 4);
+  EXPECT_NE(f[0].message.find("<mass value=\"1,5\">"), std::string::npos) << f[0].message;
+  EXPECT_EQ(f[1].link, "overflow");
+  EXPECT_EQ(f[1].location.line, 16);
+  EXPECT_NE(f[1].message.find("\"0 1e400 0\""), std::string::npos) << f[1].message;
+  const Model& model = result.models.at(0);
+  ASSERT_EQ(model.links.size(), 3u);
+  EXPECT_TRUE(model.links[0].inertial_unreadable);
+  EXPECT_FALSE(model.links[1].inertial_unreadable);
+  EXPECT_TRUE(std::isnan(model.links[1].inertial->ixx));
+  EXPECT_TRUE(model.links[2].inertial_unreadable);
 }
 
-TEST(UrdfReaderTest, TextAfterANumberIsRejected) {
-  const ReadError e = FirstError(Read(OneLink(
-      "<inertial><mass value=\"1.0abc\"/>"
-      "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>")));
-  EXPECT_EQ(e.location.line, 3);
-  EXPECT_NE(e.message.find("\"1.0abc\" is not a number"), std::string::npos) << e.message;
+TEST(UrdfReaderTest, EveryReasonUrdfdomRefusesIsAFindingAtTheElementItNames) {
+  // Each case: text, the line of the finding, a piece of its message.
+  struct Case {
+    std::string xml;
+    int line;
+    std::string says;
+  };
+  const Case cases[] = {
+      {"<robot>\n<link name=\"a\"/></robot>", 1, "No name given for the robot"},
+      {"<robot name=\"r\" version=\"2.0\"><link name=\"a\"/></robot>", 1, "version"},
+      {"<robot name=\"r\"></robot>", 1, "No link elements"},
+      {"<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j\">"
+       "<parent link=\"a\"/><child link=\"b\"/></joint></robot>",
+       2, "has no type"},
+      {"<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j\" "
+       "type=\"spherical\"><parent link=\"a\"/><child link=\"b\"/></joint></robot>",
+       2, "[spherical]"},
+      {"<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j\" "
+       "type=\"prismatic\"><parent link=\"a\"/><child link=\"b\"/></joint></robot>",
+       2, "PRISMATIC without limits"},
+      {"<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j\" "
+       "type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"-1.57.\" "
+       "effort=\"1\" velocity=\"1\"/></joint></robot>",
+       2, "Could not parse limit element for joint [j]: lower value (-1.57.)"},
+      {"<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j\" "
+       "type=\"fixed\"><origin rpy=\"0 0 0 1\"/><parent link=\"a\"/><child link=\"b\"/></joint>"
+       "</robot>",
+       2, "Malformed parent origin element for joint [j]: Parser found 4 elements"},
+      {"<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"a\"/></robot>", 3,
+       "link 'a' is not unique"},
+      {"<robot name=\"r\"><link name=\"a\"/>\n<joint name=\"j\" type=\"fixed\">"
+       "<parent link=\"a\"/><child link=\"ghost\"/></joint></robot>",
+       2, "child link [ghost] of joint [j] not found"},
+      {"<robot name=\"r\">\n<link name=\"a\"/>\n<link name=\"b\"/>\n</robot>", 3,
+       "Two root links found: [a] and [b]"},
+      {"<robot name=\"r\"><link name=\"a\"/>\n<joint name=\"j\" type=\"fixed\">"
+       "<parent link=\"a\"/><child link=\"a\"/></joint></robot>",
+       1, "No root link found"},
+  };
+  for (const Case& c : cases) {
+    const ReadResult result = Read(c.xml);
+    ASSERT_TRUE(result.ok()) << c.xml << "\n" << AllErrors(result);
+    const std::vector<ReadFinding> f = FindingsOf(result, "urdf-not-loadable");
+    ASSERT_EQ(f.size(), 1u) << c.xml;
+    EXPECT_EQ(f[0].location.line, c.line) << c.xml << "\n" << f[0].message;
+    EXPECT_NE(f[0].message.find(c.says), std::string::npos) << f[0].message;
+    EXPECT_EQ(result.models.size(), 1u) << "the lenient reading still gives a model";
+  }
 }
 
-TEST(UrdfReaderTest, VectorsNeedExactlyThreeSpaceSeparatedNumbers) {
-  const ReadError two = FirstError(Read(OneLink(
-      "<inertial><origin xyz=\"1 2\"/><mass value=\"1\"/>"
-      "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>")));
-  EXPECT_NE(two.message.find("has 2 numbers, 3 expected"), std::string::npos) << two.message;
-  // urdfdom splits on spaces only, so a tab inside a vector is an error there too.
-  const ReadError tab = FirstError(Read(OneLink(
-      "<inertial><origin xyz=\"1\t2 3\"/><mass value=\"1\"/>"
-      "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>")));
-  EXPECT_NE(tab.message.find("not tabs"), std::string::npos) << tab.message;
-  const ReadResult spaces = Read(
-      OneLink("<inertial><origin xyz=\"  1  2 3 \"/><mass value=\"1\"/>"
-              "<inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>"));
-  ASSERT_TRUE(spaces.ok()) << AllErrors(spaces);
-  EXPECT_EQ(spaces.models[0].links[0].inertial->X_BBi.p_AB, Eigen::Vector3d(1, 2, 3));
+TEST(UrdfReaderTest, TheLenientReadingKeepsATreeOfTheFirstDefinitions) {
+  // Duplicate names keep the first; a second parent joint and a joint closing a loop are left
+  // out, so that the checks always see a forest.
+  const ReadResult result = Read(
+      "<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>"
+      "<link name=\"a\"><inertial><mass value=\"9\"/></inertial></link>"
+      "<joint name=\"ab\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
+      "<joint name=\"bc\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>"
+      "<joint name=\"ac\" type=\"fixed\"><parent link=\"a\"/><child link=\"c\"/></joint>"
+      "<joint name=\"ca\" type=\"fixed\"><parent link=\"c\"/><child link=\"a\"/></joint>"
+      "</robot>");
+  ASSERT_EQ(result.models.size(), 1u);
+  const Model& model = result.models[0];
+  ASSERT_EQ(model.links.size(), 3u);
+  EXPECT_FALSE(model.links[0].inertial.has_value());
+  ASSERT_EQ(model.joints.size(), 2u);
+  EXPECT_EQ(model.joints[0].name, "ab");
+  EXPECT_EQ(model.joints[1].name, "bc");
+  EXPECT_EQ(model.root_link, "a");
 }
 
-// ---------------------------------------------------------------- missing pieces
-
-TEST(UrdfReaderTest, InertialWithoutMassOrInertiaIsAnErrorAsInUrdfdom) {
-  // urdfdom 3 (link.cpp parseInertial) fails on a missing <mass> and on a missing <inertia>.
-  const ReadError no_mass = FirstError(Read(
-      OneLink("<inertial><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/>"
-              "</inertial>")));
-  EXPECT_EQ(no_mass.location.line, 3);
-  EXPECT_EQ(no_mass.element, "<inertial> of link 'arm'");
-  EXPECT_NE(no_mass.message.find("<mass>"), std::string::npos);
-  const ReadError no_inertia =
-      FirstError(Read(OneLink("<inertial><mass value=\"1\"/></inertial>")));
-  EXPECT_NE(no_inertia.message.find("<inertia>"), std::string::npos);
-  const ReadError no_value =
-      FirstError(Read(OneLink("<inertial><mass/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" "
-                              "iyy=\"1\" iyz=\"0\" izz=\"1\"/></inertial>")));
-  EXPECT_EQ(no_value.element, "<mass> of link 'arm'");
-  EXPECT_NE(no_value.message.find("missing required attribute 'value'"), std::string::npos);
-  const ReadError no_iyz = FirstError(Read(OneLink(
-      "<inertial><mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" izz=\"1\"/>"
-      "</inertial>")));
-  EXPECT_NE(no_iyz.message.find("'iyz'"), std::string::npos);
-}
-
-TEST(UrdfReaderTest, MissingNamesAndTypesAreErrors) {
-  EXPECT_NE(FirstError(Read("<robot><link name=\"a\"/></robot>")).message.find("'name'"),
-            std::string::npos);
-  EXPECT_EQ(FirstError(Read("<robot name=\"r\">\n<link/></robot>")).location.line, 2);
-  const ReadError no_type =
-      FirstError(Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j\">"
-                      "<parent link=\"a\"/><child link=\"b\"/></joint></robot>"));
-  EXPECT_EQ(no_type.location.line, 2);
-  EXPECT_NE(no_type.message.find("'type'"), std::string::npos);
-  EXPECT_NE(FirstError(Read("<robot name=\"r\"></robot>")).message.find("no <link>"),
-            std::string::npos);
-}
-
-TEST(UrdfReaderTest, UnknownJointAndGeometryTypesAreErrors) {
-  const ReadError spherical = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><joint name=\"j\" "
-           "type=\"spherical\"><parent link=\"a\"/><child link=\"b\"/></joint></robot>"));
-  EXPECT_NE(spherical.message.find("\"spherical\""), std::string::npos);
-  const ReadError cone = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"><collision><geometry>\n<cone radius=\"1\"/>"
-           "</geometry></collision></link></robot>"));
-  EXPECT_EQ(cone.location.line, 2);
-  EXPECT_EQ(cone.element, "<cone> of <collision> #1 of link 'a'");
-  const ReadError empty = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"><visual><geometry/></visual></link></robot>"));
-  EXPECT_NE(empty.message.find("no shape"), std::string::npos);
-}
-
-TEST(UrdfReaderTest, RevoluteAndPrismaticJointsNeedLimitsAsInUrdfdom) {
-  const ReadError e = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><joint name=\"j\" "
-           "type=\"prismatic\"><parent link=\"a\"/><child link=\"b\"/></joint></robot>"));
-  EXPECT_NE(e.message.find("<limit>"), std::string::npos);
-  const ReadError bad_limit = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><joint name=\"j\" "
-           "type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/><limit lower=\"-1.57.\" "
-           "effort=\"1\" velocity=\"1\"/></joint></robot>"));
-  EXPECT_NE(bad_limit.message.find("\"-1.57.\""), std::string::npos);
-}
-
-TEST(UrdfReaderTest, OnlyUrdfVersionOneIsAccepted) {
-  EXPECT_TRUE(Read("<robot name=\"r\" version=\"1.0\"><link name=\"a\"/></robot>").ok());
-  EXPECT_NE(FirstError(Read("<robot name=\"r\" version=\"2.0\"><link name=\"a\"/></robot>"))
-                .message.find("version"),
-            std::string::npos);
-}
-
-// ---------------------------------------------------------------- tree errors
-
-TEST(UrdfReaderTest, DuplicateLinkAndJointNamesAreErrors) {
-  const ReadError link =
-      FirstError(Read("<robot name=\"r\">\n<link name=\"a\"/>\n"
-                      "<link name=\"a\"/></robot>"));
-  EXPECT_EQ(link.location.line, 3);
-  EXPECT_NE(link.message.find("already defined at line 2"), std::string::npos);
-  const ReadError joint = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n"
-           "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n"
-           "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
-           "</robot>"));
-  EXPECT_EQ(joint.location.line, 3);
-  EXPECT_EQ(joint.element, "<joint> 'j'");
-}
-
-TEST(UrdfReaderTest, JointsNamingMissingLinksAreErrors) {
-  const ReadError e =
-      FirstError(Read("<robot name=\"r\"><link name=\"a\"/>\n<joint name=\"j\" type=\"fixed\">"
-                      "<parent link=\"a\"/><child link=\"ghost\"/></joint></robot>"));
-  EXPECT_EQ(e.location.line, 2);
-  EXPECT_NE(e.message.find("child link 'ghost' is not defined"), std::string::npos);
-  const ReadError no_parent =
-      FirstError(Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><joint name=\"j\" "
-                      "type=\"fixed\"><child link=\"b\"/></joint></robot>"));
-  EXPECT_NE(no_parent.message.find("<parent link=...>"), std::string::npos);
-}
-
-TEST(UrdfReaderTest, SeveralRootsAreAnErrorListingThem) {
-  const ReadError e =
-      FirstError(Read("<robot name=\"r\">\n<link name=\"a\"/>\n"
-                      "<link name=\"b\"/>\n</robot>"));
-  EXPECT_EQ(e.location.line, 3) << "points at the second root";
-  EXPECT_NE(e.message.find("2 root links"), std::string::npos);
-  EXPECT_NE(e.message.find("'a' (line 2), 'b' (line 3)"), std::string::npos) << e.message;
-}
-
-TEST(UrdfReaderTest, KinematicLoopsAreErrorsEvenBesideARoot) {
-  // loop.urdf: root -> a, and b <-> c (urdfdom 3 accepts this file: its root search only looks
-  // for parentless links).
-  const ReadError e = FirstError(ReadUrdfFile(kDir + "loop.urdf"));
-  EXPECT_NE(e.message.find("kinematic loop"), std::string::npos) << e.message;
-  EXPECT_NE(e.message.find("'b' -> 'c' -> 'b'"), std::string::npos) << e.message;
-  EXPECT_EQ(e.location.line, 8);
-  // Everything a loop: no root at all.
-  const ReadError all = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>"
-           "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>"
-           "<joint name=\"k\" type=\"fixed\"><parent link=\"b\"/><child link=\"a\"/></joint>"
-           "</robot>"));
-  EXPECT_NE(all.message.find("kinematic loop"), std::string::npos);
-  const ReadError self =
-      FirstError(Read("<robot name=\"r\"><link name=\"a\"/><joint name=\"j\" type=\"fixed\">"
-                      "<parent link=\"a\"/><child link=\"a\"/></joint></robot>"));
-  EXPECT_NE(self.message.find("to itself"), std::string::npos);
-}
-
-TEST(UrdfReaderTest, ALinkWithTwoParentJointsIsAnError) {
-  const ReadError e = FirstError(
-      Read("<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/><link name=\"c\"/>\n"
-           "<joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"c\"/></joint>\n"
-           "<joint name=\"k\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>"
-           "</robot>"));
-  EXPECT_EQ(e.location.line, 3);
-  EXPECT_NE(e.message.find("already the child of joint 'j' (line 2)"), std::string::npos);
+TEST(UrdfReaderTest, AKinematicLoopBesideARootIsUrdfdomsModel) {
+  // loop.urdf: root -> a, and b <-> c. urdfdom accepts it (initRoot only looks for parentless
+  // links), so the model is urdfdom's: four links, three joints, root "root".
+  const ReadResult result = ReadUrdfFile(kDir + "loop.urdf");
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  EXPECT_TRUE(result.findings.empty());
+  ASSERT_EQ(result.models.size(), 1u);
+  EXPECT_EQ(result.models[0].links.size(), 4u);
+  EXPECT_EQ(result.models[0].joints.size(), 3u);
+  EXPECT_EQ(result.models[0].root_link, "root");
 }
 
 // ---------------------------------------------------------------- bad files
@@ -568,17 +655,18 @@ TEST(UrdfReaderTest, AFileAboveTheLimitIsRefusedWithoutReadingIt) {
   std::filesystem::remove(path);
 }
 
-TEST(UrdfReaderTest, AHundredMegabyteFileIsReadWithBoundedMemory) {
-  // A chain of links whose <inertial>s carry long comments, 100 MB in all.
+TEST(UrdfReaderTest, AFiveMegabyteFileTakesAtMostTwiceTheMemoryOfUrdfdom) {
+  // A chain of links whose <inertial>s carry long comments, 5 MB in all (urdfdom reads a few
+  // MB/s, so a larger file would make a slow test; tools/read_bench.py measures 60 MB).
   const std::filesystem::path path =
-      std::filesystem::temp_directory_path() / "massprops_urdf_100mb.urdf";
+      std::filesystem::temp_directory_path() / "massprops_urdf_5mb.urdf";
   const std::string padding(1000, 'x');
   int links = 0;
   std::uintmax_t size = 0;
   {
     std::ofstream out(path, std::ios::binary);
     out << "<robot name=\"big\">\n";
-    while (out.tellp() < 100'000'000) {
+    while (out.tellp() < 5'000'000) {
       out << "<link name=\"l" << links << "\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" "
           << "ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/><!-- " << padding
           << " --></inertial></link>\n";
@@ -591,20 +679,31 @@ TEST(UrdfReaderTest, AHundredMegabyteFileIsReadWithBoundedMemory) {
     out << "</robot>\n";
     size = static_cast<std::uintmax_t>(out.tellp());
   }
+  // urdfdom alone first: the peak resident set then holds its peak; massprops' read may raise it
+  // to at most twice urdfdom's growth (issue 13's budget).
   const long before = PeakRssKiB();
+  {
+    std::ifstream in(path, std::ios::binary);
+    const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(urdf::parseURDF(xml) != nullptr);
+  }
+  const long urdfdom_kib = PeakRssKiB() - before;
   const ReadResult result = ReadUrdfFile(path.string());
-  const long grown_kib = PeakRssKiB() - before;
+  const long massprops_kib = PeakRssKiB() - before;
   std::filesystem::remove(path);
   ASSERT_TRUE(result.ok()) << AllErrors(result);
   EXPECT_EQ(result.models.at(0).links.size(), static_cast<std::size_t>(links));
   // Line 1 <robot>, line 2 l0, then l_k on line 2k+1 and j_k on line 2k+2.
   EXPECT_EQ(result.models[0].links.back().location.line, 2 * links - 1);
+  std::printf("peak growth: urdfdom %ld KiB, massprops %ld KiB, file %ju bytes\n", urdfdom_kib,
+              massprops_kib, size);
 #if !defined(__SANITIZE_ADDRESS__)
-  // The documented bound: about 4 to 6 times the file size at peak.
-  EXPECT_LT(static_cast<double>(grown_kib) * 1024, 6.0 * static_cast<double>(size))
-      << "peak grew by " << grown_kib / 1024 << " MiB for a " << size / (1 << 20) << " MiB file";
+  EXPECT_LE(massprops_kib, 2 * urdfdom_kib)
+      << "urdfdom's peak grew by " << urdfdom_kib / 1024 << " MiB, massprops' by "
+      << massprops_kib / 1024 << " MiB for a " << size / (1 << 20) << " MiB file";
 #else
-  (void)grown_kib;
+  (void)urdfdom_kib;
+  (void)massprops_kib;
   (void)size;
 #endif
 }

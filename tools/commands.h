@@ -5,6 +5,8 @@
 // errors). main() calls *run after parsing when it is set.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace massprops::cli {
 
@@ -15,5 +17,14 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run);
 /// `fix` (repair mass properties and write the file back, changing only those numbers). Defined
 /// in tools/fix_command.cc.
 void AddFixCommands(CLI::App& app, std::function<int()>* run);
+
+/// `view` (one self-contained HTML page drawing each link's equivalent inertia box over its
+/// geometry, with its findings). Defined in tools/view_command.cc.
+void AddViewCommands(CLI::App& app, std::function<int()>* run);
+
+/// Writes the HTML view of `files` to standard output (`report --format html`); returns the exit
+/// code (0 written; 2 a file could not be read, a bad configuration file, or a write error).
+int RunHtmlView(const std::vector<std::string>& files, const std::vector<std::string>& model_paths,
+                const std::vector<std::string>& package_paths);
 
 }  // namespace massprops::cli

@@ -417,6 +417,7 @@ int main(int argc, char** argv) {
   std::function<int()> run;
   massprops::cli::AddReportCommands(app, &run);
   massprops::cli::AddFixCommands(app, &run);
+  massprops::cli::AddViewCommands(app, &run);
 
   try {
     app.parse(argc, argv);

@@ -57,6 +57,16 @@ bool ParseJointValue(const std::string& spec, std::string* name, double* value) 
 }
 
 int RunReport(const ReportArgs& args) {
+  if (args.format == "html") {
+    // The page is of the zero configuration, every link, in the model frame (docs/view.md).
+    if (!args.joints.empty() || !args.frame.empty() || !args.only.empty() ||
+        !args.subtree.empty() || args.geometry) {
+      std::cerr << "massprops: error: --format html cannot be combined with --joint, --frame, "
+                   "--only, --subtree or --geometry\n";
+      return kExitError;
+    }
+    return RunHtmlView(args.files, args.model_paths, args.package_paths);
+  }
   MassReportOptions options;
   for (const std::string& spec : args.joints) {
     std::string name;
@@ -167,7 +177,7 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
   report->add_option("FILE", report_args->files, "URDF or SDF files (detected by content), '-'")
       ->required();
   report->add_option("--format", report_args->format, "Output format")
-      ->check(CLI::IsMember({"text", "json", "csv"}))
+      ->check(CLI::IsMember({"text", "json", "csv", "html"}))
       ->capture_default_str();
   report
       ->add_option("--joint", report_args->joints,

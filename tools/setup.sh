@@ -7,7 +7,12 @@ build_dir=${BUILD_DIR:-$here/build}
 
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
           nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev
-          clang-14 libfuzzer-14-dev)
+          pybind11-dev python3-dev python3-numpy python3-pytest)
+# The HTML view (`massprops view`): three.js, embedded at build time; its browser test: headless
+# Chromium driven by Debian's python3-selenium.
+packages+=(libjs-three chromium chromium-driver python3-selenium)
+# The libFuzzer targets (tools/fuzz.sh, run by tools/test.sh): clang and its libFuzzer.
+packages+=(clang-14 libfuzzer-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
