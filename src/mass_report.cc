@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "massprops/principal_axes.h"
+#include "massprops/reporters.h"
 #include "name_index.h"
 
 namespace massprops {
@@ -572,7 +573,7 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
     root["errors"].push_back({{"file", e.file}, {"line", e.line}, {"message", e.message}});
   }
   // nlohmann::json prints the shortest decimal that reads back to the same double.
-  out << root.dump(2) << "\n";
+  out << root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 std::string CsvField(const std::string& text) {
@@ -674,17 +675,22 @@ void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports) {
 // Prints rows as columns: the first `text_columns` left-aligned, the others right-aligned.
 void WriteTable(std::ostream& out, const std::vector<std::vector<std::string>>& rows,
                 std::size_t text_columns) {
+  constexpr std::size_t kMaxCell = 80;
   std::vector<std::size_t> width;
   for (const auto& row : rows) {
     if (width.size() < row.size()) width.resize(row.size(), 0);
-    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      width[c] = std::max(width[c], ShortenLongWords(row[c], kMaxCell).size());
+    }
   }
   for (const auto& row : rows) {
     std::string line = " ";
     for (std::size_t c = 0; c < row.size(); ++c) {
-      const std::string pad(width[c] - row[c].size(), ' ');
+      // A hostile 10 MB name is shortened, so that it does not pad every row.
+      const std::string cell = ShortenLongWords(row[c], kMaxCell);
+      const std::string pad(width[c] - cell.size(), ' ');
       line += ' ';
-      line += c < text_columns ? row[c] + pad : pad + row[c];
+      line += c < text_columns ? cell + pad : pad + cell;
     }
     while (!line.empty() && line.back() == ' ') line.pop_back();
     out << line << '\n';
@@ -694,7 +700,7 @@ void WriteTable(std::ostream& out, const std::vector<std::vector<std::string>>& 
 void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, double threshold) {
   constexpr int kDigits = 6;
   for (const ModelMassReport& report : reports) {
-    out << "model '" << report.name << "' (" << report.file << ")\n";
+    out << "model '" << ShortenLongWords(report.name) << "' (" << report.file << ")\n";
     struct Entry {
       std::string kind, name;
       const BodyMassProperties* body;

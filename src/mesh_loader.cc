@@ -135,6 +135,15 @@ std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshReso
       if (error) *error = "mesh '" + uri + "': no package or model name";
       return std::nullopt;
     }
+    // "package://x/../../etc/passwd" names no file of package x: refused, never looked up.
+    const fs::path inside = fs::path(std::string(rest)).lexically_normal();
+    if (inside.is_absolute() || (!inside.empty() && *inside.begin() == "..")) {
+      if (error) {
+        *error = "mesh '" + uri + "': the path leaves the " +
+                 std::string(is_package ? "package" : "model") + " folder ('..'); not read";
+      }
+      return std::nullopt;
+    }
     std::vector<std::string> folders = is_package ? options.package_paths : options.model_paths;
     if (options.use_environment) {
       const std::vector<std::pair<const char*, const char*>> variables =

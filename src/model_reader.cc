@@ -131,6 +131,24 @@ std::optional<ReadError> ReadInputFile(const std::string& path, std::size_t max_
   return error;
 }
 
+namespace {
+
+// "UTF-16LE", "UTF-16BE", "UTF-32LE" or "UTF-32BE" when the text starts with that byte order
+// mark or with "<" in that encoding (XML 1.0, appendix F); nullptr otherwise.
+const char* Utf16Or32(std::string_view t) {
+  auto starts = [&](std::string_view prefix) {
+    return t.size() >= prefix.size() && t.compare(0, prefix.size(), prefix) == 0;
+  };
+  using namespace std::string_view_literals;
+  if (starts("\xFF\xFE\0\0"sv) || starts("<\0\0\0"sv)) return "UTF-32LE";
+  if (starts("\0\0\xFE\xFF"sv) || starts("\0\0\0<"sv)) return "UTF-32BE";
+  if (starts("\xFF\xFE"sv) || starts("<\0"sv)) return "UTF-16LE";
+  if (starts("\xFE\xFF"sv) || starts("\0<"sv)) return "UTF-16BE";
+  return nullptr;
+}
+
+}  // namespace
+
 ReadResult ReadModelString(const std::string& xml, const std::string& file_name,
                            const ReadOptions& options) {
   const std::optional<Model::Format> format = DetectModelFormat(xml);
@@ -143,6 +161,10 @@ ReadResult ReadModelString(const std::string& xml, const std::string& file_name,
   error.element = "document";
   error.message = xml.empty() ? "the file is empty"
                               : "neither URDF nor SDF: the first element is not <robot> or <sdf>";
+  if (const char* encoding = Utf16Or32(xml)) {
+    error.message = std::string("the file is encoded in ") + encoding +
+                    "; massprops reads UTF-8 (convert it, e.g. iconv -f " + encoding + " -t UTF-8)";
+  }
   result.errors.push_back(std::move(error));
   return result;
 }

@@ -191,7 +191,7 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
                                                error.location.column);
       out += color ? std::string(kBold) + where + ":" + kReset + " " + kRed + "error:" + kReset
                    : where + ": error:";
-      out += " " + ReadErrorText(error) + " ";
+      out += " " + ShortenLongWords(ReadErrorText(error)) + " ";
       out += color ? std::string(kDim) + "[" + kReadErrorRule + "]" + kReset
                    : std::string("[") + kReadErrorRule + "]";
       out += "\n";
@@ -202,10 +202,11 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
       const std::string severity = std::string(ToString(finding.severity)) + ":";
       if (color) {
         out += std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
-               severity + kReset + " " + finding.message + " " + kDim + "[" + finding.rule + "]" +
-               kReset + "\n";
+               severity + kReset + " " + ShortenLongWords(finding.message) + " " + kDim + "[" +
+               finding.rule + "]" + kReset + "\n";
       } else {
-        out += where + ": " + severity + " " + finding.message + " [" + finding.rule + "]\n";
+        out += where + ": " + severity + " " + ShortenLongWords(finding.message) + " [" +
+               finding.rule + "]\n";
       }
     }
   }
@@ -236,7 +237,7 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                           {"file", FileOf(finding.location, result)},
                           {"line", finding.location.line},
                           {"column", finding.location.column},
-                          {"message", finding.message},
+                          {"message", ShortenLongWords(finding.message)},
                           {"values", values}});
     }
     json errors = json::array();
@@ -244,8 +245,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
       errors.push_back({{"file", FileOf(error.location, result)},
                         {"line", error.location.line},
                         {"column", error.location.column},
-                        {"element", error.element},
-                        {"message", error.message}});
+                        {"element", ShortenLongWords(error.element)},
+                        {"message", ShortenLongWords(error.message)}});
     }
     files.push_back({{"path", result.path},
                      {"format", result.format.empty() ? json(nullptr) : json(result.format)},
@@ -263,7 +264,7 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                            {"notes", s.notes},
                            {"read_errors", s.read_errors},
                            {"skipped_files", options.skipped_files}}}};
-  return document.dump(2) + "\n";
+  return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options) {
@@ -305,7 +306,7 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
           {{"ruleId", kReadErrorRule},
            {"ruleIndex", rule_index(kReadErrorRule)},
            {"level", "error"},
-           {"message", {{"text", ReadErrorText(error)}}},
+           {"message", {{"text", ShortenLongWords(ReadErrorText(error))}}},
            {"locations",
             location(FileOf(error.location, result), error.location.line, error.location.column)}});
     }
@@ -314,7 +315,7 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
       const int index = rule_index(finding.rule);
       if (index >= 0) entry["ruleIndex"] = index;
       entry["level"] = SarifLevel(finding.severity);
-      entry["message"] = {{"text", finding.message}};
+      entry["message"] = {{"text", ShortenLongWords(finding.message)}};
       entry["locations"] = location(FileOf(finding.location, result), finding.location.line,
                                     finding.location.column);
       if (!finding.values.empty()) {
@@ -334,7 +335,7 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
       {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
       {"version", "2.1.0"},
       {"runs", json::array({{{"tool", {{"driver", driver}}}, {"results", sarif_results}}})}};
-  return log.dump(2) + "\n";
+  return log.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string RenderGithub(const std::vector<FileResult>& results, const ReportOptions& options) {
@@ -342,13 +343,14 @@ std::string RenderGithub(const std::vector<FileResult>& results, const ReportOpt
   std::string out;
   for (const FileResult& result : results) {
     for (const ReadError& error : result.errors) {
-      out += GithubLine("error", FileOf(error.location, result), error.location.line,
-                        error.location.column, kReadErrorRule, ReadErrorText(error));
+      out +=
+          GithubLine("error", FileOf(error.location, result), error.location.line,
+                     error.location.column, kReadErrorRule, ShortenLongWords(ReadErrorText(error)));
     }
     for (const Finding& finding : result.findings) {
-      out +=
-          GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
-                     finding.location.line, finding.location.column, finding.rule, finding.message);
+      out += GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
+                        finding.location.line, finding.location.column, finding.rule,
+                        ShortenLongWords(finding.message));
     }
   }
   return out;
@@ -372,6 +374,36 @@ std::string Render(ReportFormat format, const std::vector<FileResult>& results,
 void WriteReport(std::ostream& out, ReportFormat format, const std::vector<FileResult>& results,
                  const ReportOptions& options) {
   out << Render(format, results, options);
+}
+
+std::string ShortenLongWords(std::string_view text, std::size_t max_word) {
+  auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  // A position moved back (or forward) off UTF-8 continuation bytes (10xxxxxx).
+  auto boundary = [&](std::size_t pos, bool forward) {
+    while (pos > 0 && pos < text.size() && (static_cast<unsigned char>(text[pos]) & 0xC0) == 0x80) {
+      pos += forward ? 1 : -1;
+    }
+    return pos;
+  };
+  const std::size_t keep_head = max_word / 2, keep_tail = max_word / 4;
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t end = i;
+    while (end < text.size() && !is_space(text[end])) ++end;
+    if (end - i > max_word) {
+      const std::size_t head = boundary(i + keep_head, false);
+      const std::size_t tail = boundary(end - keep_tail, true);
+      out.append(text.substr(i, head - i));
+      out += "\u2026[" + std::to_string(end - i) + " bytes]\u2026";
+      out.append(text.substr(tail, end - tail));
+    } else {
+      out.append(text.substr(i, end - i));
+    }
+    i = end;
+    while (i < text.size() && is_space(text[i])) out += text[i++];
+  }
+  return out;
 }
 
 std::string EscapeGithubData(std::string_view text) { return Escape(text, false); }

@@ -156,21 +156,21 @@ struct Edit {
 
 class Patcher {
  public:
-  Patcher(std::string_view text, Model::Format format)
-      : t_(text), sdf_(format == Model::Format::kSdf) {
+  Patcher(std::string_view text, Model::Format format, bool included)
+      : t_(text), sdf_(format == Model::Format::kSdf), included_(included) {
     line_starts_.push_back(0);
     for (std::size_t i = 0; i < t_.size(); ++i) {
       if (t_[i] == '\n') line_starts_.push_back(i + 1);
     }
+    CollectLinks();
   }
 
   // The edits of one repair, or an error message.
   std::pair<std::vector<Edit>, std::string> EditsFor(const Repair& r) {
     edits_.clear();
     error_.clear();
-    const std::optional<Span> link = FindLink(r.link, r.link_line);
-    if (!link)
-      return {{}, Fail("the <link> element was not found at line " + std::to_string(r.link_line))};
+    const std::optional<Span> link = FindLink(r.link, r.link_line, included_);
+    if (!link) return {{}, error_};
     if (r.inserts_inertial) {
       InsertInertial(*link, r.after);
       return {edits_, error_};
@@ -239,22 +239,103 @@ class Patcher {
     return colons == kNpos ? scoped : scoped.substr(colons + 2);
   }
 
-  std::optional<Span> FindLink(const std::string& name, int line) const {
-    if (line <= 0 || line > static_cast<int>(line_starts_.size())) return std::nullopt;
-    const std::size_t begin = line_starts_[line - 1];
-    const std::size_t end =
-        line < static_cast<int>(line_starts_.size()) ? line_starts_[line] : t_.size();
-    for (std::size_t i = t_.find("<link", begin); i != kNpos && i < end;
-         i = t_.find("<link", i + 1)) {
-      if (i + 5 >= t_.size() || !EndsName(t_[i + 5])) continue;
-      const std::optional<Span> link = ElementAt(t_, i);
-      if (!link) continue;
-      const auto value = AttributeValue(t_, *link, "name");
-      if (value && t_.substr(value->first, value->second - value->first) == ShortName(name)) {
-        return link;
-      }
+  // The <link> element of the repair: found by structure (the element path robot/link, or
+  // sdf/[world/]model/[model/...]link with the nested model names as the scope), its name and its
+  // line; never inside a comment, CDATA section or another element. In an included file
+  // (`included`), the link's scoped name may carry the scopes of the including files in front:
+  // "cargo::body" is the element scoped "body" of the included model.
+  std::optional<Span> FindLink(const std::string& name, int line, bool included) {
+    std::vector<const LinkElement*> named;
+    for (const LinkElement& link : links_) {
+      const bool same = link.scoped == name;
+      const bool suffix =
+          included && name.size() > link.scoped.size() + 2 &&
+          name.compare(name.size() - link.scoped.size(), link.scoped.size(), link.scoped) == 0 &&
+          name.compare(name.size() - link.scoped.size() - 2, 2, "::") == 0;
+      if (same || suffix) named.push_back(&link);
+    }
+    if (named.empty()) {
+      Fail("this file has no <link name=\"" + std::string(ShortName(name)) +
+           "\"> at the element path " +
+           std::string(sdf_ ? "sdf/[world/]model/[model/...]link" : "robot/link") +
+           " (an element inside a comment does not count)");
+      return std::nullopt;
+    }
+    std::vector<const LinkElement*> at_line;
+    for (const LinkElement* link : named) {
+      if (LineOf(link->span.open_begin) == line) at_line.push_back(link);
+    }
+    if (at_line.size() == 1) return at_line.front()->span;
+    if (at_line.empty()) {
+      Fail("the <link> element of that name is at line " +
+           std::to_string(LineOf(named.front()->span.open_begin)) + ", the model says " +
+           std::to_string(line));
+    } else {
+      Fail("several <link> elements of that name start at line " + std::to_string(line));
     }
     return std::nullopt;
+  }
+
+  struct LinkElement {
+    std::string scoped;  // nested model names and the link name, joined by "::"
+    Span span;
+  };
+
+  // Every <link> element of the document by structure (see FindLink).
+  void CollectLinks() {
+    std::size_t i = 0;
+    std::optional<Span> root;
+    while ((i = t_.find('<', i)) != kNpos) {
+      const std::size_t special = SkipSpecial(t_, i);
+      if (special != kNpos) {
+        i = special;
+        continue;
+      }
+      root = ElementAt(t_, i);
+      break;
+    }
+    if (!root) return;
+    if (!sdf_) {
+      if (root->name != "robot") return;
+      for (const Span& child : Children(t_, *root)) {
+        if (child.name == "link") AddLink(child, "");
+      }
+      return;
+    }
+    if (root->name != "sdf") return;
+    for (const Span& child : Children(t_, *root)) {
+      if (child.name == "model") CollectModel(child, "");
+      if (child.name != "world") continue;
+      for (const Span& entity : Children(t_, child)) {
+        if (entity.name == "model") CollectModel(entity, "");
+      }
+    }
+  }
+
+  // The links of an SDF <model> whose scope (nested model names) is `prefix`. Iterative: a
+  // hostile file may nest models very deeply.
+  void CollectModel(const Span& top, const std::string& top_prefix) {
+    std::vector<std::pair<Span, std::string>> pending = {{top, top_prefix}};
+    while (!pending.empty()) {
+      const auto [model, prefix] = pending.back();
+      pending.pop_back();
+      for (const Span& child : Children(t_, model)) {
+        if (child.name == "link") AddLink(child, prefix);
+        if (child.name != "model") continue;
+        const auto value = AttributeValue(t_, child, "name");
+        if (!value) continue;
+        pending.push_back(
+            {child,
+             prefix + std::string(t_.substr(value->first, value->second - value->first)) + "::"});
+      }
+    }
+  }
+
+  void AddLink(const Span& link, const std::string& prefix) {
+    const auto value = AttributeValue(t_, link, "name");
+    if (!value) return;
+    links_.push_back(
+        {prefix + std::string(t_.substr(value->first, value->second - value->first)), link});
   }
 
   // Replaces the white-space separated numbers first, first + 1, ... of [begin, end).
@@ -393,7 +474,9 @@ class Patcher {
 
   std::string_view t_;
   bool sdf_;
+  bool included_;
   std::vector<std::size_t> line_starts_;
+  std::vector<LinkElement> links_;
   std::vector<Edit> edits_;
   std::string error_;
 };
@@ -486,8 +569,8 @@ std::string FormatShortest(double x) {
 }
 
 PatchResult PatchModelText(std::string_view original, Model::Format format,
-                           const std::vector<Repair>& repairs) {
-  Patcher patcher(original, format);
+                           const std::vector<Repair>& repairs, const PatchOptions& options) {
+  Patcher patcher(original, format, options.included);
   PatchResult result;
   std::vector<Edit> edits;
   for (const Repair& r : repairs) {

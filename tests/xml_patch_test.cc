@@ -113,7 +113,9 @@ TEST(PatchModelTextTest, RewritesSdfElementTextKeepingItsSpacing) {
       "    </inertial>\n"
       "  </link>\n"
       "</model></sdf>\n";
-  Repair r = OneChange("m::arm", 2, "inertia", "izz", 6, 0.25);
+  // Links of the top-level model are named without its name ("arm", as the SDF reader names
+  // them); "m::arm" would be a link of a nested model "m" (xml_patch_location_test.cc).
+  Repair r = OneChange("arm", 2, "inertia", "izz", 6, 0.25);
   r.changes.push_back({"mass", "", 5, 0, {2}, {1.5}});
   r.changes.push_back({"pose", "", 4, 0, {0, 0, 0.1}, {0, 0, 0.2}});
   r.changes.push_back({"inertia", "ixy", 6, 0, {0}, {-0.01}});  // absent: inserted after <izz>

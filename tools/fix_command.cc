@@ -29,7 +29,9 @@
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
 #include "massprops/repair.h"
+#include "massprops/reporters.h"
 #include "massprops/xml_patch.h"
+#include "safe_write.h"
 #include "target_cli.h"
 
 namespace massprops::cli {
@@ -59,54 +61,32 @@ struct FixArgs {
   bool geometry = false;
   std::vector<std::string> package_paths;
   std::string target;  // --target ("" = generic)
+  bool include_files = false;
 };
 
-// Writes `data` to `path` through a temporary file in the same folder (mkstemp), flushed to disk
-// (fsync) and renamed over `path` only when complete. On failure the temporary file is removed,
-// `path` is untouched and the error is returned.
-std::optional<std::string> WriteAtomically(const fs::path& path, const std::string& data,
-                                           std::optional<mode_t> mode) {
-  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::string name = (dir / ("." + path.filename().string() + ".massprops-XXXXXX")).string();
-  std::vector<char> buffer(name.begin(), name.end());
-  buffer.push_back('\0');
-  const int fd = mkstemp(buffer.data());
-  if (fd < 0) return "cannot create a temporary file in " + dir.string() + ": " + strerror(errno);
-  const std::string tmp(buffer.data());
-  auto fail = [&](const std::string& what) -> std::optional<std::string> {
-    const std::string message = what + ": " + strerror(errno);
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    return message;
-  };
-  std::size_t written = 0;
-  while (written < data.size()) {
-    const ssize_t n = ::write(fd, data.data() + written, data.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return fail("cannot write " + tmp);
+// The file each repaired link is defined in: the top-level file, or (SDF) the file of an
+// included model.
+std::string FileOfLink(const std::vector<Model>& models, const std::string& link_name, int line) {
+  for (const Model& model : models) {
+    for (const Link& link : model.links) {
+      if (link.name == link_name && link.location.line == line) return link.location.file;
     }
-    written += static_cast<std::size_t>(n);
   }
-  if (mode && ::fchmod(fd, *mode) != 0) return fail("cannot set the mode of " + tmp);
-  if (::fsync(fd) != 0) return fail("cannot flush " + tmp);
-  if (::close(fd) != 0) {
-    const std::string message = "cannot close " + tmp + ": " + strerror(errno);
-    ::unlink(tmp.c_str());
-    return message;
+  return "";
+}
+
+// Prints the reader's findings (unresolved includes, unreadable inertials, ...) as `check` does,
+// so that nothing the reader skipped goes unsaid.
+void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
+  for (const Finding& f : ReaderFindings(read, options)) {
+    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
+              << f.message << " [" << f.rule << "]\n";
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string message =
-        "cannot rename " + tmp + " to " + path.string() + ": " + strerror(errno);
-    ::unlink(tmp.c_str());
-    return message;
+  for (const ReadError& w : read.warnings) {  // as `check` prints them
+    std::cerr << w.location.file << ":" << w.location.line
+              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
+              << " [" << kReadWarningRule << "]\n";
   }
-  const int dir_fd = ::open(dir.c_str(), O_RDONLY);  // Make the rename durable (best effort).
-  if (dir_fd >= 0) {
-    ::fsync(dir_fd);
-    ::close(dir_fd);
-  }
-  return std::nullopt;
 }
 
 int RunFix(const FixArgs& args) {
@@ -124,6 +104,11 @@ int RunFix(const FixArgs& args) {
   }
   if (args.in_place && args.file == "-") {
     std::cerr << "massprops: error: --in-place needs a file, not standard input\n";
+    return kExitError;
+  }
+  if (!(args.tolerance >= 0) || !std::isfinite(args.tolerance)) {
+    std::cerr << "massprops: error: --tolerance must be a finite number at least 0, got "
+              << args.tolerance << "\n";
     return kExitError;
   }
   if (!(args.density > 0) || !std::isfinite(args.density)) {
@@ -179,6 +164,8 @@ int RunFix(const FixArgs& args) {
     if (args.geometry) check_options.shape = options.shape;
   }
 
+  PrintReaderFindings(read, check_options);
+
   std::vector<Repair> repairs;
   std::vector<RefusedRepair> refused;
   std::vector<std::string> known_links;
@@ -198,6 +185,63 @@ int RunFix(const FixArgs& args) {
       const bool planned_already = std::any_of(planned.begin(), planned.end(),
                                                [&](const Repair& p) { return p.link == r.link; });
       if (!planned_already) not_asked[r.rule].push_back(std::move(r));
+    }
+  }
+  // Repairs of links defined in an included SDF model belong to that model's file: written there
+  // with --include-files, otherwise named (never applied to an element of the same name here).
+  std::map<std::string, std::vector<Repair>> included_repairs;  // by file
+  {
+    std::vector<Repair> top;
+    for (Repair& r : repairs) {
+      const std::string file = FileOfLink(read.models, r.link, r.link_line);
+      if (file.empty() || file == name) {
+        top.push_back(std::move(r));
+      } else {
+        included_repairs[file].push_back(std::move(r));
+      }
+    }
+    repairs = std::move(top);
+  }
+  int included_applied = 0;
+  int included_skipped = 0;
+  std::vector<std::pair<std::string, std::string>> included_outputs;  // file, patched text
+  std::vector<Finding> included_remaining;  // errors left in the repaired included files
+  for (const auto& [file, file_repairs] : included_repairs) {
+    if (!args.include_files) {
+      for (const Repair& r : file_repairs) {
+        ++included_skipped;
+        std::cerr << file << ":" << r.link_line << ": link '" << r.link << "' (" << r.rule
+                  << ") is defined in this included model, not in " << name
+                  << ": not repaired; fix that file, or run with --include-files\n";
+      }
+      continue;
+    }
+    std::string included_text;
+    if (std::optional<ReadError> error = ReadInputFile(file, kMaxModelFileBytes, &included_text)) {
+      std::cerr << error->ToString() << "\n";
+      return kExitError;
+    }
+    PatchOptions patch_options;
+    patch_options.included = true;
+    const PatchResult included =
+        PatchModelText(included_text, Model::Format::kSdf, file_repairs, patch_options);
+    for (const PatchError& e : included.errors) {
+      std::cerr << file << ":" << e.line << ": link '" << e.link
+                << "': the repair cannot be written: " << e.message << "\n";
+    }
+    const ReadResult reread_included = ReadModelString(included.text, file, read_options);
+    if (!reread_included.ok()) {
+      std::cerr << "massprops: internal error: the repaired " << file
+                << " does not read back; nothing written:\n";
+      for (const ReadError& e : reread_included.errors) std::cerr << "  " << e.ToString() << "\n";
+      return kExitError;
+    }
+    included_applied += included.applied;
+    if (included.text != included_text) included_outputs.emplace_back(file, included.text);
+    for (const Model& model : reread_included.models) {
+      for (const Finding& f : CheckModel(model, check_options)) {
+        if (f.severity == Severity::kError) included_remaining.push_back(f);
+      }
     }
   }
   for (const std::string& link : args.from_geometry_links) {
@@ -235,23 +279,44 @@ int RunFix(const FixArgs& args) {
     for (const ReadError& e : reread.errors) std::cerr << "  " << e.ToString() << "\n";
     return kExitError;
   }
-  int remaining_errors = 0;
-  for (const Model& model : reread.models) {
-    std::vector<Finding> remaining = CheckModel(model, check_options);
-    AddTargetFindings(model, fix_target, check_options, mujoco_options, &remaining, text);
-    for (const Finding& f : remaining) {
-      if (f.severity != Severity::kError) continue;
-      ++remaining_errors;
-      std::cerr << f.location.file << ":" << f.location.line << ": error: " << f.message << " ["
-                << f.rule << "] (no repair)\n";
+  // The errors left, listed once the output is final: when included files are repaired in place
+  // the top-level model is judged again after they are written (its welded groups use them).
+  // Error-level reader findings (urdf-not-loadable, inertial-unreadable, ...) count: fix cannot
+  // repair them, so the file is not clean.
+  auto list_remaining = [&](const ReadResult& final_read, bool includes_written) {
+    auto rewritten = [&](const std::string& file) {
+      return std::any_of(included_outputs.begin(), included_outputs.end(),
+                         [&](const auto& output) { return output.first == file; });
+    };
+    std::vector<Finding> remaining = includes_written ? std::vector<Finding>{} : included_remaining;
+    for (const Finding& f : ReaderFindings(final_read, check_options)) {
+      if (f.severity == Severity::kError) remaining.push_back(f);
     }
-  }
+    for (const Model& model : final_read.models) {
+      std::vector<Finding> found = CheckModel(model, check_options);
+      AddTargetFindings(model, fix_target, check_options, mujoco_options, &found, text);
+      for (const Finding& f : found) {
+        // Without the written includes, a file being repaired is judged on its repaired text.
+        if (f.severity != Severity::kError) continue;
+        if (!includes_written && rewritten(f.location.file)) continue;
+        remaining.push_back(f);
+      }
+    }
+    for (const Finding& f : remaining) {
+      std::cerr << f.location.file << ":" << f.location.line
+                << ": error: " << ShortenLongWords(f.message) << " [" << f.rule
+                << "] (no repair)\n";
+    }
+    return static_cast<int>(remaining.size());
+  };
   const bool changed = patched.text != text;
   for (const RefusedRepair& r : refused) {
     std::cerr << name << ":" << r.link_line << ": link '" << r.link << "' [" << r.rule
               << "]: " << r.why << "\n";
   }
 
+  int remaining_errors = 0;
+  if (args.dry_run || included_outputs.empty()) remaining_errors = list_remaining(reread, false);
   if (args.dry_run) {
     std::vector<bool> failed(repairs.size(), false);
     for (std::size_t i = 0; i < repairs.size(); ++i) {
@@ -277,22 +342,24 @@ int RunFix(const FixArgs& args) {
     }
     if (!changed) std::cout << name << ": no change needed\n";
   } else {
-    if (args.diff) std::cout << UnifiedDiff(text, patched.text, args.file);
+    if (args.diff) {
+      std::cout << UnifiedDiff(text, patched.text, args.file);
+      for (const auto& [file, included_text] : included_outputs) {
+        std::string before;
+        ReadInputFile(file, kMaxModelFileBytes, &before);
+        std::cout << UnifiedDiff(before, included_text, file);
+      }
+    }
+    std::vector<std::string> notes;
     if (args.in_place) {
       if (changed) {
-        std::error_code ec;
-        fs::path target = args.file;
-        if (fs::is_symlink(target, ec)) target = fs::canonical(target, ec);
-        struct stat st {};
-        std::optional<mode_t> mode;
-        if (::stat(target.c_str(), &st) == 0) mode = st.st_mode & 07777;
         if (!args.backup.empty()) {
-          if (auto error = WriteAtomically(target.string() + args.backup, text, mode)) {
+          if (auto error = WriteFileSafely(args.file + args.backup, text, &notes)) {
             std::cerr << "massprops: error: " << *error << "; nothing written\n";
             return kExitError;
           }
         }
-        if (auto error = WriteAtomically(target, patched.text, mode)) {
+        if (auto error = WriteFileSafely(args.file, patched.text, &notes)) {
           std::cerr << "massprops: error: " << *error << "; " << args.file << " is unchanged\n";
           return kExitError;
         }
@@ -301,17 +368,36 @@ int RunFix(const FixArgs& args) {
       std::error_code ec;
       if (!changed && args.file != "-" && fs::equivalent(args.output, args.file, ec)) {
         // -o FILE naming the input itself: a file that needs no change is not rewritten.
-      } else if (auto error = WriteAtomically(args.output, patched.text, std::nullopt)) {
-        std::cerr << "massprops: error: " << *error << "\n";
+      } else if (auto error = WriteFileSafely(args.output, patched.text, &notes)) {
+        std::cerr << "massprops: error: " << *error << "; nothing written\n";
         return kExitError;
       }
     } else if (!args.diff || args.output == "-") {
       std::cout << patched.text;
     }
+    // Included models are always repaired in place (they are other files than FILE).
+    for (const auto& [file, included_text] : included_outputs) {
+      if (auto error = WriteFileSafely(file, included_text, &notes)) {
+        std::cerr << "massprops: error: " << *error << "; " << file << " is unchanged\n";
+        return kExitError;
+      }
+      std::cerr << "massprops: " << file << ": repaired (an included model)\n";
+    }
+    if (!included_outputs.empty()) {
+      remaining_errors = list_remaining(ReadModelString(patched.text, name, read_options), true);
+    }
+    for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
   std::cout.flush();
-  std::cerr << "massprops: " << name << ": " << patched.applied << " link(s) repaired"
-            << (changed ? "" : ", no change needed");
+  std::cerr << "massprops: " << name << ": " << patched.applied + included_applied
+            << " link(s) repaired"
+            << (changed || !included_outputs.empty() ? "" : ", no change needed");
+  if (!patched.errors.empty()) {
+    std::cerr << "; " << patched.errors.size() << " repair(s) could not be written";
+  }
+  if (included_skipped > 0) {
+    std::cerr << "; " << included_skipped << " repair(s) of included models not applied";
+  }
   if (remaining_errors > 0) std::cerr << "; " << remaining_errors << " error(s) have no repair";
   if (!refused.empty()) std::cerr << "; " << refused.size() << " repair(s) refused";
   if (!not_asked.empty() && !args.dry_run) {
@@ -380,6 +466,9 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
   AddTargetOption(fix, &args->target);
   fix->add_option("--tolerance", args->tolerance,
                   "Validity tolerance relative to the trace (as check; default 1e-6)");
+  fix->add_flag("--include-files", args->include_files,
+                "SDF: also repair links of included models (<include>) in their own files, in "
+                "place (atomically; without it such a link is named with its file, not repaired)");
   fix->add_option("--model-path", args->model_paths, "Folder searched for SDF model:// URIs")
       ->type_name("DIR")
       ->allow_extra_args(false);

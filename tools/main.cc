@@ -33,6 +33,7 @@
 #include "massprops/model_reader.h"
 #include "massprops/reporters.h"
 #include "massprops/target_profile.h"
+#include "safe_write.h"
 #include "target_cli.h"
 
 namespace {
@@ -312,9 +313,19 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
   }
   std::vector<std::string> files;
   int skipped_files = 0;  // files of the folders given that are not models
+  bool unreadable_input = false;
   for (const std::string& input : inputs) {
     std::error_code ec;
     if (input != "-" && fs::is_directory(input, ec)) {
+      // A folder that cannot be listed is an error, not "nothing found" (exit 0).
+      std::error_code list_ec;
+      fs::directory_iterator probe(input, list_ec);
+      if (list_ec) {
+        std::cerr << "massprops: error: cannot read the folder " << input << ": "
+                  << list_ec.message() << "\n";
+        unreadable_input = true;
+        continue;
+      }
       const std::vector<std::string> found = CollectModelFiles(input, &skipped_files);
       if (found.empty() && !args.quiet) {
         std::cerr << "massprops: no URDF or SDF files found in " << input << "\n";
@@ -397,7 +408,7 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
   massprops::WriteReport(std::cout, format, results, report_options);
   std::cout.flush();
 
-  if (read_failed) return kExitError;
+  if (read_failed || unreadable_input) return kExitError;
   return findings_at_fail_level ? kExitFindings : kExitClean;
 }
 
@@ -496,8 +507,9 @@ int main(int argc, char** argv) {
   args.tolerance_given = tolerance->count() > 0;
 
   try {
-    if (run) return run();
-    return RunCheck(args, argc > 0 ? argv[0] : nullptr);
+    // A report that did not reach standard output (full disk, closed pipe end) is exit 2.
+    if (run) return massprops::cli::FinishStandardOutput(run());
+    return massprops::cli::FinishStandardOutput(RunCheck(args, argc > 0 ? argv[0] : nullptr));
   } catch (const UsageError& error) {
     std::cerr << "massprops: error: " << error.message << "\n";
     return kExitError;

@@ -14,10 +14,13 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
+#include "massprops/checks.h"
 #include "massprops/mass_report.h"
 #include "massprops/merge_fixed.h"
 #include "massprops/mesh_loader.h"
 #include "massprops/model_reader.h"
+#include "massprops/reporters.h"
+#include "safe_write.h"
 #include "target_cli.h"
 
 namespace massprops::cli {
@@ -143,6 +146,18 @@ int RunReport(const ReportArgs& args) {
   MeshCache mesh_cache;
   for (const std::string& file : args.files) {
     const ReadResult read = ReadModelFile(file, read_options);
+    // What the reader skipped or could not resolve (an <include> not found, an unreadable
+    // <inertial>) is said on standard error, in every format, as `check` says it: the numbers
+    // below leave those parts out.
+    for (const Finding& f : ReaderFindings(read)) {
+      std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
+                << f.message << " [" << f.rule << "]\n";
+    }
+    for (const ReadError& w : read.warnings) {  // as `check` prints them
+      std::cerr << w.location.file << ":" << w.location.line
+                << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
+                << " [" << kReadWarningRule << "]\n";
+    }
     for (const ReadError& e : read.errors) {
       errors.push_back({e.location.file, e.location.line,
                         e.element.empty() ? e.message : e.element + ": " + e.message});
@@ -196,28 +211,14 @@ int RunMerge(const MergeArgs& args) {
     std::cout << merged.text;
     std::cout.flush();
   } else {
-    // Written to a temporary file beside the output, renamed over it only when complete.
-    namespace fs = std::filesystem;
-    const fs::path out_path(args.output);
-    const fs::path tmp_path = out_path.string() + ".massprops-tmp";
-    {
-      std::ofstream out(tmp_path, std::ios::binary | std::ios::trunc);
-      out << merged.text;
-      out.close();
-      if (!out) {
-        std::cerr << "massprops: error: cannot write " << tmp_path.string() << "\n";
-        std::error_code ec;
-        fs::remove(tmp_path, ec);
-        return kExitError;
-      }
-    }
-    std::error_code ec;
-    fs::rename(tmp_path, out_path, ec);
-    if (ec) {
-      std::cerr << "massprops: error: cannot write " << args.output << ": " << ec.message() << "\n";
-      fs::remove(tmp_path, ec);
+    // Atomically (a temporary file created exclusively beside it, renamed when complete); a
+    // device, FIFO or symbolic link is written through, never replaced (safe_write.h).
+    std::vector<std::string> notes;
+    if (const auto error = WriteFileSafely(args.output, merged.text, &notes)) {
+      std::cerr << "massprops: error: " << *error << "; nothing written\n";
       return kExitError;
     }
+    for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
   std::cerr << "massprops: merged " << merged.merged_links << " link(s) into "
             << merged.groups_merged << " welded group root(s)\n";

@@ -13,6 +13,8 @@ packages+=(libmujoco-dev)
 # The HTML view (`massprops view`): three.js, embedded at build time; its browser test: headless
 # Chromium driven by Debian's python3-selenium.
 packages+=(libjs-three chromium chromium-driver python3-selenium)
+# The libFuzzer targets (tools/fuzz.sh, run by tools/test.sh): clang and its libFuzzer.
+packages+=(clang-14 libfuzzer-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

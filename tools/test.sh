@@ -2,7 +2,9 @@
 # Quick start, command 2: set up and run every test, twice:
 #   1. build/        Release, warnings are errors;
 #   2. build-asan/   Debug under AddressSanitizer + UndefinedBehaviorSanitizer.
-# Set MASSPROPS_SKIP_SANITIZERS=1 to run only the first.
+#   3. build-fuzz/   each libFuzzer target of tests/fuzz for 60 s under ASan + UBSan (clang-14;
+#                    tools/fuzz.sh). Set MASSPROPS_FUZZ_SECONDS to change the time per target.
+# Set MASSPROPS_SKIP_SANITIZERS=1 to run only the first (no sanitizer build, no fuzzing).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=$(nproc)
@@ -15,4 +17,12 @@ if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
     -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_SANITIZE=address,undefined
   (cd "$here/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
      ctest --output-on-failure -j "$jobs")
+fi
+
+if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
+  # A short fuzz run: any crash, sanitizer report or broken invariant fails the run (the input is
+  # left in build-fuzz/artifacts/TARGET/; keep it in testdata/fuzz/regressions/TARGET/).
+  for target in urdf sdf fix inertia; do
+    "$here/tools/fuzz.sh" "$target" "${MASSPROPS_FUZZ_SECONDS:-60}"
+  done
 fi

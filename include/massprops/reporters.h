@@ -97,6 +97,13 @@ std::string Render(ReportFormat format, const std::vector<FileResult>& results,
 void WriteReport(std::ostream& out, ReportFormat format, const std::vector<FileResult>& results,
                  const ReportOptions& options = {});
 
+/// Messages for people: every run of more than `max_word` bytes without white space (a hostile
+/// 10 MB link name) is shortened to its first and last bytes around "…[N bytes]…", cut at UTF-8
+/// character boundaries. Text up to that length comes back unchanged. Used for the messages of
+/// every format and the names in `report`'s tables; JSON and SARIF keep the full names in their
+/// "link" and "model" fields. Cost: linear.
+std::string ShortenLongWords(std::string_view text, std::size_t max_word = 200);
+
 /// Workflow-command escaping of a message: % → %25, CR → %0D, LF → %0A.
 std::string EscapeGithubData(std::string_view text);
 /// Workflow-command escaping of a property value: as EscapeGithubData, plus : → %3A and , → %2C.

@@ -32,15 +32,26 @@ struct PatchResult {
   int applied = 0;                 ///< Number of repairs written.
 };
 
+/// How PatchModelText finds links.
+struct PatchOptions {
+  /// The text is an SDF model included (<include>) by the file the repairs were planned on: a
+  /// repair of link "cargo::body" (the include named "cargo") matches the element whose scoped
+  /// name in this file is "body" (or "cargo::body"), at the repair's line.
+  bool included = false;
+};
+
 /// Writes the repairs into `original` (the text the model was read from). Each link is found by
-/// its line and name; its first <inertial> child, and in it <mass>, <inertia>, <origin> (URDF) or
+/// structure, never inside a comment: URDF robot/link, SDF sdf/[world/]model/[model/...]/link
+/// with nested model names as its scope ("inner::link"), by its name and at the repair's
+/// link_line (a link of the same name on the same line elsewhere in the tree, or in a comment, is
+/// not it); its first <inertial> child, and in it <mass>, <inertia>, <origin> (URDF) or
 /// <pose> (SDF), are found by structure, so several elements on one line are fine. URDF numbers are
 /// attribute values; SDF numbers are element texts (<mass>2</mass>, <inertia><ixx>…</ixx>).
 /// A repair that cannot be written exactly (element missing, a value with fewer numbers than
 /// expected, an SDF <pose relative_to> that is not the link) is skipped and reported; the others
 /// are applied. Never throws. Cost: linear in the text size plus the size of the patched links.
 PatchResult PatchModelText(std::string_view original, Model::Format format,
-                           const std::vector<Repair>& repairs);
+                           const std::vector<Repair>& repairs, const PatchOptions& options = {});
 
 /// A unified diff of two texts by lines (Myers' O(ND) algorithm, "An O(ND) Difference Algorithm
 /// and Its Variations", Algorithmica 1986), with `context` lines of context and the headers
