@@ -130,30 +130,36 @@ TEST_F(BadInputTest, UnclosedTag) {
          2, "u.urdf:");
 }
 
+// Since URDF is read through urdfdom (issue 13), a file urdfdom refuses is not a read error: it
+// gets the error finding urdf-not-loadable (and inertial-unreadable on the link whose number
+// cannot be read) and the rest is checked from a lenient reading, so check exits 1 (findings)
+// and fix exits 1 (errors it cannot repair remain) without writing. Exit 2 stays for text that
+// is not XML or not URDF at all.
 TEST_F(BadInputTest, NonNumericMass) {
-  Expect("n.urdf", Urdf(Inertial("heavy")), 2, 2, "n.urdf:4");
+  Expect("n.urdf", Urdf(Inertial("heavy")), 1, 1, "n.urdf:4");
 }
 
 TEST_F(BadInputTest, HexadecimalMass) {
-  Expect("h.urdf", Urdf(Inertial("0x1p3")), 2, 2, "h.urdf:4");
+  Expect("h.urdf", Urdf(Inertial("0x1p3")), 1, 1, "h.urdf:4");
 }
 
-TEST_F(BadInputTest, EmptyNumber) { Expect("z.urdf", Urdf(Inertial("")), 2, 2, "z.urdf:4"); }
+TEST_F(BadInputTest, EmptyNumber) { Expect("z.urdf", Urdf(Inertial("")), 1, 1, "z.urdf:4"); }
 
 TEST_F(BadInputTest, NanInertia) {
-  Expect("nan.urdf", Urdf(Inertial("1", "nan")), 2, 2, "nan.urdf:5");
+  Expect("nan.urdf", Urdf(Inertial("1", "nan")), 1, 1, "nan.urdf:5");
 }
 
 TEST_F(BadInputTest, InfiniteInertia) {
-  Expect("inf.urdf", Urdf(Inertial("1", "inf")), 2, 2, "inf.urdf:5");
+  Expect("inf.urdf", Urdf(Inertial("1", "inf")), 1, 1, "inf.urdf:5");
 }
 
 TEST_F(BadInputTest, OverflowingNumber) {
-  Expect("big.urdf", Urdf(Inertial("1e400")), 2, 2, "big.urdf:4");
+  Expect("big.urdf", Urdf(Inertial("1e400")), 1, 1, "big.urdf:4");
 }
 
-// DISABLED until the URDF reader refuses 1e-400 as the SDF reader does (issue 13; today it is
-// read as 0 without a word). Run with --gtest_also_run_disabled_tests.
+// DISABLED: urdfdom (the URDF loader of record, issue 13) reads 1e-400 as 0 without a word, while
+// the SDF reader refuses it as libsdformat 12 does (docs/sdf.md). Kept to show the difference:
+// run with --gtest_also_run_disabled_tests.
 TEST_F(BadInputTest, DISABLED_UnderflowingNumber) {
   Expect("tiny.urdf", Urdf(Inertial("1e-400")), 2, 2, "tiny.urdf:4");
 }
@@ -165,8 +171,8 @@ TEST_F(BadInputTest, NegativeMass) {
 }
 
 TEST_F(BadInputTest, DuplicateLinks) {
-  Expect("dl.urdf", "<robot name=\"r\">\n  <link name=\"a\"/>\n  <link name=\"a\"/>\n</robot>\n", 2,
-         2, "dl.urdf:3");
+  Expect("dl.urdf", "<robot name=\"r\">\n  <link name=\"a\"/>\n  <link name=\"a\"/>\n</robot>\n", 1,
+         1, "dl.urdf:3");
 }
 
 TEST_F(BadInputTest, DuplicateJoints) {
@@ -175,7 +181,7 @@ TEST_F(BadInputTest, DuplicateJoints) {
          "  <joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n"
          "  <joint name=\"j\" type=\"fixed\"><parent link=\"a\"/><child link=\"c\"/></joint>\n"
          "</robot>\n",
-         2, 2, "dj.urdf:6");
+         1, 1, "dj.urdf:6");
 }
 
 TEST_F(BadInputTest, MissingParentLink) {
@@ -183,21 +189,33 @@ TEST_F(BadInputTest, MissingParentLink) {
          "<robot name=\"r\">\n  <link name=\"a\"/>\n"
          "  <joint name=\"j\" type=\"fixed\"><parent link=\"nowhere\"/><child link=\"a\"/>"
          "</joint>\n</robot>\n",
-         2, 2, "mp.urdf:3");
+         1, 1, "mp.urdf:3");
 }
 
 TEST_F(BadInputTest, KinematicLoop) {
-  Expect("loop.urdf",
-         "<robot name=\"r\">\n  <link name=\"root\"/>\n  <link name=\"b\"/>\n  <link name=\"c\"/>\n"
-         "  <joint name=\"b_c\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>\n"
-         "  <joint name=\"c_b\" type=\"fixed\"><parent link=\"c\"/><child link=\"b\"/></joint>\n"
-         "</robot>\n",
-         2, 2, "loop.urdf:");
+  // b and c are each other's parent: a loop detached from the tree rooted at 'root'. urdfdom 3
+  // accepts it (its root search finds the one parentless link, 'root'), so massprops reads what
+  // ROS reads: no finding, exit 0, in bounded time (no endless walk), and fix writes nothing.
+  const std::string text =
+      "<robot name=\"r\">\n  <link name=\"root\"/>\n  <link name=\"b\"/>\n  <link name=\"c\"/>\n"
+      "  <joint name=\"b_c\" type=\"fixed\"><parent link=\"b\"/><child link=\"c\"/></joint>\n"
+      "  <joint name=\"c_b\" type=\"fixed\"><parent link=\"c\"/><child link=\"b\"/></joint>\n"
+      "</robot>\n";
+  WriteFile(dir_ / "loop.urdf", text);
+  const std::set<std::string> before = Listing();
+  const ToolRun check = Tool("check loop.urdf");
+  EXPECT_EQ(check.code, 0) << check.out;
+  EXPECT_LT(check.seconds, 30);
+  const ToolRun fix = Tool("fix loop.urdf --in-place");
+  EXPECT_EQ(fix.code, 0) << fix.out;
+  EXPECT_LT(fix.seconds, 30);
+  EXPECT_EQ(ReadFile(dir_ / "loop.urdf"), text);
+  EXPECT_EQ(Listing(), before);
 }
 
 TEST_F(BadInputTest, TwoRoots) {
   Expect("roots.urdf", "<robot name=\"r\">\n  <link name=\"a\"/>\n  <link name=\"b\"/>\n</robot>\n",
-         2, 2, "roots.urdf:");
+         1, 1, "roots.urdf:");
 }
 
 TEST_F(BadInputTest, HundredThousandDeepNesting) {
@@ -222,7 +240,9 @@ TEST_F(BadInputTest, BillionLaughsEntityExpansionIsNotExpanded) {
   WriteFile(dir_ / "lol.urdf", text);
   const ToolRun check = Tool("check lol.urdf");
   EXPECT_LT(check.seconds, 30);
-  EXPECT_TRUE(check.code == 0 || check.code == 2) << check.out.substr(0, 2000);
+  // urdfdom does not expand the DOCTYPE's entities either and refuses the file
+  // (urdf-not-loadable, exit 1); what matters is that nothing is expanded.
+  EXPECT_TRUE(check.code == 1 || check.code == 2) << check.out.substr(0, 2000);
   EXPECT_LT(check.out.size(), 100000u) << "an entity was expanded";
   EXPECT_EQ(Tool("fix lol.urdf --in-place").code == 0 || true, true);
   EXPECT_EQ(ReadFile(dir_ / "lol.urdf"), text);
@@ -303,10 +323,10 @@ TEST_F(BadInputTest, UnreadableFolderIsNotExitZero) {
 TEST_F(BadInputTest, StandardInputIsNamedStdin) {
   WriteFile(dir_ / "in.urdf", Urdf(Inertial("heavy")));
   const ToolRun check = Tool("check -", (dir_ / "in.urdf").string());
-  EXPECT_EQ(check.code, 2);
+  EXPECT_EQ(check.code, 1);  // inertial-unreadable (see NonNumericMass)
   EXPECT_NE(check.out.find("<stdin>:4"), std::string::npos) << check.out;
   const ToolRun fix = Tool("fix -", (dir_ / "in.urdf").string());
-  EXPECT_EQ(fix.code, 2);
+  EXPECT_EQ(fix.code, 1);
   EXPECT_NE(fix.out.find("<stdin>:4"), std::string::npos) << fix.out;
 }
 
@@ -324,9 +344,8 @@ TEST_F(BadInputTest, IncludeCycleIsAClearErrorInBoundedTime) {
   EXPECT_LT(check.seconds, 30);
 }
 
-// DISABLED until the include-expansion limits land (issue 14): today the 2^20 links are expanded
-// (minutes, gigabytes). Run with --gtest_also_run_disabled_tests.
-TEST_F(BadInputTest, DISABLED_ExponentialIncludesAreBounded) {
+// The include-expansion limits (issue 14: depth 32, 100 000 elements brought in by includes).
+TEST_F(BadInputTest, ExponentialIncludesAreBounded) {
   // Each model includes the next twice: 2^20 links if expanded. Expected: a clear error about
   // the expansion limit, in bounded time and memory (issue 15; the limits are issue 14's).
   fs::create_directories(dir_ / "x");

@@ -67,7 +67,7 @@ struct CheckArgs {
   std::vector<std::string> model_paths;
   bool quiet = false;
   bool list_rules = false;
-  int jobs = 0;         // 0: one per core
+  int jobs = 0;        // 0: one per core
   std::string target;  // --target; "" when not given
 };
 
