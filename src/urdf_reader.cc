@@ -267,6 +267,18 @@ urdf::ModelInterfaceSharedPtr ParseWithUrdfdom(const std::string& xml,
   return model;
 }
 
+// urdfdom's links hold their children by shared_ptr (parents by weak_ptr). A file whose joints
+// form a loop beside the root (which urdfdom accepts) makes a cycle of shared_ptrs that is never
+// freed: clear the child lists so that the whole model goes with its last owner.
+void ReleaseUrdfdomModel(urdf::ModelInterfaceSharedPtr model) {
+  if (!model) return;
+  for (auto& [name, link] : model->links_) {
+    if (!link) continue;
+    link->child_links.clear();
+    link->child_joints.clear();
+  }
+}
+
 // ------------------------------------------------------------------ from urdfdom's model
 
 Pose ToPose(const urdf::Pose& pose) {
@@ -917,6 +929,7 @@ ReadResult Reader::Read(const std::string& xml) {
   WarnAboutTextUrdfdomSkips();
   if (urdf) {
     result_.models.push_back(FromUrdfdom(*urdf, errors, xml));
+    ReleaseUrdfdomModel(urdf);
     return std::move(result_);
   }
   ReportNotLoadable(errors);

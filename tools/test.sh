@@ -16,6 +16,7 @@ if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   BUILD_DIR="$here/build-asan" BUILD_TYPE=Debug "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON \
     -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_SANITIZE=address,undefined
   (cd "$here/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+     LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
      ctest --output-on-failure -j "$jobs")
 fi
 
