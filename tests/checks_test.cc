@@ -1,5 +1,4 @@
 #include "massprops/checks.h"
-#include "massprops/target_profile.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +13,7 @@
 
 #include "corpus_manifest.h"
 #include "massprops/sdf_reader.h"
+#include "massprops/target_profile.h"
 #include "massprops/urdf_reader.h"
 
 namespace massprops {
