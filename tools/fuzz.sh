@@ -36,7 +36,10 @@ flags=(-max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len=65536
        -print_final_stats=1 -artifact_prefix="$artifacts/")
 if [[ $target == fix ]]; then seeds=("$here/testdata/fuzz/urdf" "$here/testdata/fuzz/sdf"); fi
 if [[ $target != inertia ]]; then flags+=(-dict="$here/testdata/fuzz/model.dict"); fi
-seeds+=("$here/testdata/fuzz/regressions/$target")
+# Inputs kept from earlier findings (git keeps no empty folder, so the folder may be absent).
+if [[ -d $here/testdata/fuzz/regressions/$target ]]; then
+  seeds+=("$here/testdata/fuzz/regressions/$target")
+fi
 
 log=$build/fuzz-$target.log
 status=0
