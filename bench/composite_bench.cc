@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "massprops/mass_report.h"
-#include "massprops/model.h"
-#include "massprops/welded_groups.h"
+#include "massprops/analysis/mass_report.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/model/model.h"
 
 namespace massprops {
 namespace {

@@ -10,9 +10,9 @@
 #include <array>
 #include <random>
 
-#include "massprops/rotational_inertia.h"
-#include "massprops/spatial_inertia.h"
-#include "massprops/unit_inertia.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/core/spatial_inertia.h"
+#include "massprops/core/unit_inertia.h"
 
 namespace massprops {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "../tests/test_shapes.h"
-#include "massprops/mesh_inertia.h"
+#include "massprops/mesh/mesh_inertia.h"
 
 namespace massprops {
 namespace {

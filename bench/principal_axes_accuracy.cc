@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "../tests/test_shapes.h"
-#include "massprops/principal_axes.h"
+#include "massprops/core/principal_axes.h"
 
 namespace {
 

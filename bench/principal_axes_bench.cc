@@ -17,8 +17,8 @@
 #include <random>
 #include <vector>
 
-#include "massprops/principal_axes.h"
-#include "massprops/rotational_inertia.h"
+#include "massprops/core/principal_axes.h"
+#include "massprops/core/rotational_inertia.h"
 
 namespace {
 

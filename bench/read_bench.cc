@@ -26,10 +26,10 @@
 #include <string>
 #include <vector>
 
-#include "massprops/checks.h"
-#include "massprops/model_reader.h"
-#include "massprops/reporters.h"
-#include "massprops/urdf_reader.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/io/urdf_reader.h"
+#include "massprops/output/reporters.h"
 
 namespace {
 
@@ -118,7 +118,7 @@ void BM_MasspropsRead(benchmark::State& state) {
   Report(state, n);
 }
 
-// What tools/main.cc does for `massprops check FILE` (text format).
+// What src/tool/main.cc does for `massprops check FILE` (text format).
 void BM_CheckEndToEnd(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const std::string& path = ChainFile(n);

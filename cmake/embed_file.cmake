@@ -2,7 +2,7 @@
 # HTML view's assets (page template, script, three.js) without reading anything at run time.
 # Script mode: cmake -DINPUT=file -DOUTPUT=file.cc -DSYMBOL=kName -P embed_file.cmake
 # The source defines massprops::cli::embedded::SYMBOL (the bytes, followed by a 0 byte) and
-# SYMBOL##Size (the number of bytes, without the 0), declared in tools/view/view_assets.h.
+# SYMBOL##Size (the number of bytes, without the 0), declared in src/tool/view/view_assets.h.
 # INPUT may be empty: the array is then empty (a build without libjs-three).
 if(INPUT)
   file(READ "${INPUT}" hex HEX)

@@ -383,7 +383,7 @@ TEST_F(BadInputTest, MeshUrisOutsideThePackageAreNotRead) {
     EXPECT_EQ(check.out.find("root:x:0:0"), std::string::npos) << "a system file was echoed";
     EXPECT_NE(check.out.find("mesh.urdf:"), std::string::npos) << check.out;
     if (uri.rfind("package://", 0) == 0) {
-      // Refused by name, never looked up (src/mesh_loader.cc).
+      // Refused by name, never looked up (src/mesh/mesh_loader.cc).
       EXPECT_NE(check.out.find("leaves the package folder"), std::string::npos) << check.out;
     }
   }

@@ -1,4 +1,4 @@
-#include "massprops/checks.h"
+#include "massprops/analysis/checks.h"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "corpus_manifest.h"
-#include "massprops/sdf_reader.h"
-#include "massprops/target_profile.h"
-#include "massprops/urdf_reader.h"
+#include "massprops/analysis/target_profile.h"
+#include "massprops/io/sdf_reader.h"
+#include "massprops/io/urdf_reader.h"
 
 namespace massprops {
 namespace {
@@ -44,7 +44,7 @@ std::string Dump(const std::vector<Finding>& findings) {
 }
 
 // Every rule has a fixture testdata/check/<rule>.urdf that triggers it and
-// testdata/check/<rule>-ok.urdf that barely does not (numbers explained in README.md (Rules)).
+// testdata/check/<rule>-ok.urdf that barely does not (numbers explained in docs/rules.md).
 class RuleFixtureTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RuleFixtureTest, TriggersOnItsFixtureAndNotOnTheBarelyValidOne) {

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "massprops/checks.h"
+#include "massprops/analysis/checks.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "massprops/config.h"
+#include "massprops/analysis/config.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

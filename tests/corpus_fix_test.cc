@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "corpus_manifest.h"
-#include "massprops/checks.h"
-#include "massprops/model_reader.h"
-#include "massprops/repair.h"
-#include "massprops/xml_patch.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/output/xml_patch.h"
 
 namespace massprops {
 namespace {

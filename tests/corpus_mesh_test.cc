@@ -15,10 +15,10 @@
 #include <utility>
 #include <vector>
 
-#include "massprops/checks.h"
-#include "massprops/geometry_checks.h"
-#include "massprops/mesh_loader.h"
-#include "massprops/model_reader.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/geometry_checks.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/mesh/mesh_loader.h"
 
 namespace massprops {
 namespace {
@@ -102,7 +102,8 @@ std::vector<Comparison> Compare(const std::string& urdf, MeshCache* cache) {
   if (read.models.empty()) return {};
   MeshResolveOptions options;
   options.use_environment = false;
-  options.package_paths = {MASSPROPS_CORPUS_DIR};  // package://example-robot-data/... (README)
+  options.package_paths = {
+      MASSPROPS_CORPUS_DIR};  // package://example-robot-data/... (corpus README)
   options.model_file = kRobots + urdf;
   options.cache = cache;
   std::vector<Comparison> rows;
@@ -225,8 +226,8 @@ TEST(CorpusMeshTest, SoloLegsShareMeshesLoadedOnce) {
 
 // `check --geometry` on the three robots (CheckModel with the mesh shape function): the checks
 // that judge mesh-only links against their meshes. The expected findings were read off the
-// files and the meshes (README, "What it reveals"): finger_middle_link declares iyz = +5e-5 where
-// its mesh gives −3.3e-5, while solo's upper legs (the same part, same mesh moments) declare
+// files and the meshes (docs/meshes.md, "What it reveals"): finger_middle_link declares iyz = +5e-5
+// where its mesh gives −3.3e-5, while solo's upper legs (the same part, same mesh moments) declare
 // +4.671e-5 against their meshes' +3.3e-5; finger_base_link's placeholder inertial is centered
 // 0.4 m above meshes no taller than 0.1 m.
 std::vector<Finding> CheckWithMeshes(const std::string& relative, MeshCache* cache) {

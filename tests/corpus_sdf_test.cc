@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "corpus_manifest.h"
-#include "massprops/model.h"
-#include "massprops/sdf_reader.h"
+#include "massprops/io/sdf_reader.h"
+#include "massprops/model/model.h"
 
 namespace massprops {
 namespace {

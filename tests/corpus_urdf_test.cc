@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "corpus_manifest.h"
-#include "massprops/urdf_reader.h"
+#include "massprops/io/urdf_reader.h"
 
 namespace massprops {
 namespace {

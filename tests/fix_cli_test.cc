@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "massprops/xml_patch.h"
+#include "massprops/output/xml_patch.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// End-to-end tests of how `massprops fix` and `massprops merge-fixed` write (tools/safe_write.h,
+// End-to-end tests of how `massprops fix` and `massprops merge-fixed` write (src/tool/safe_write.h,
 // docs/fix.md "How files are written"), of exit codes on write errors, and of `fix` on SDF
 // included models. Each test runs the built tool (MASSPROPS_TOOL_PATH) in a fresh folder.
 #include <gtest/gtest.h>

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "fuzz/fuzz_targets.h"
-#include "massprops/rotational_inertia.h"
+#include "massprops/core/rotational_inertia.h"
 
 namespace massprops::fuzz {
 namespace {

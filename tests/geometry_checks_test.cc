@@ -1,5 +1,5 @@
 // The geometry rules: inertia-disagrees-with-geometry and mesh-unreadable.
-#include "massprops/geometry_checks.h"
+#include "massprops/analysis/geometry_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "massprops/model_reader.h"
+#include "massprops/io/model_reader.h"
 #include "tool_runner.h"
 
 namespace massprops {

@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "corpus_manifest.h"
-#include "massprops/model_reader.h"
-#include "massprops/welded_groups.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/io/model_reader.h"
 
 namespace massprops {
 namespace {

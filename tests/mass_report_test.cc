@@ -1,10 +1,10 @@
-// Tests of include/massprops/mass_report.h on the analytic fixtures of testdata/report/.
+// Tests of include/massprops/analysis/mass_report.h on the analytic fixtures of testdata/report/.
 // Expected values are hand-derived in the comments (parallel-axis theorem:
 // I_about_C = I_cm + m·(|d|²·1 − d·dᵀ), d from C to the body's center of mass; uniform solid
 // shapes from any mechanics textbook, e.g. Meriam & Kraige, Dynamics, appendix D:
 // box m(b²+c²)/12 ..., solid cylinder axial m r²/2, transverse m(3r²+L²)/12, solid sphere 2/5 m
 // r²).
-#include "massprops/mass_report.h"
+#include "massprops/analysis/mass_report.h"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,9 @@
 #include <sstream>
 #include <string>
 
-#include "massprops/model_reader.h"
-#include "massprops/welded_groups.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/output/report_format.h"
 
 namespace massprops {
 namespace {

@@ -1,14 +1,14 @@
-// Tests of include/massprops/merge_fixed.h on testdata/report/welded.urdf (hand-derived values of
-// its composites are in tests/mass_report_test.cc; repeated here where used).
-#include "massprops/merge_fixed.h"
+// Tests of include/massprops/output/merge_fixed.h on testdata/report/welded.urdf (hand-derived
+// values of its composites are in tests/mass_report_test.cc; repeated here where used).
+#include "massprops/output/merge_fixed.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "massprops/model_reader.h"
-#include "massprops/welded_groups.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/io/model_reader.h"
 
 namespace massprops {
 namespace {

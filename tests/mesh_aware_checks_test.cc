@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "massprops/checks.h"
-#include "massprops/geometry_checks.h"
-#include "massprops/mesh_loader.h"
-#include "massprops/model_reader.h"
-#include "massprops/repair.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/mesh/mesh_loader.h"
 #include "tool_runner.h"
 
 namespace massprops {

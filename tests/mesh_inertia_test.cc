@@ -1,7 +1,7 @@
 // Tests of mesh_inertia.h: exact mass properties of polyhedra by the divergence theorem (the
 // signed-tetrahedron covariance form of Kallay 2006), against closed forms derived independently.
 
-#include "massprops/mesh_inertia.h"
+#include "massprops/mesh/mesh_inertia.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "massprops/unit_inertia.h"
+#include "massprops/core/unit_inertia.h"
 #include "test_shapes.h"
 
 namespace massprops {

@@ -1,7 +1,7 @@
 // Tests of mesh_loader.h: URI resolution, loading STL/OBJ/DAE through assimp, and the inertia a
 // link's geometry implies. Fixtures are in testdata/mesh (see the comments in each file).
 
-#include "massprops/mesh_loader.h"
+#include "massprops/mesh/mesh_loader.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "massprops/model_reader.h"
+#include "massprops/io/model_reader.h"
 
 namespace massprops {
 namespace {

@@ -1,8 +1,8 @@
-// Tests of include/massprops/model_reader.h: format detection by content, reading paths and
+// Tests of include/massprops/io/model_reader.h: format detection by content, reading paths and
 // standard input, and the errors for files that cannot be read. Expected values come from the
 // fixtures as written (testdata/urdf/features.urdf has 4 links, its root <robot> is on line 3).
 
-#include "massprops/model_reader.h"
+#include "massprops/io/model_reader.h"
 
 #include <gtest/gtest.h>
 

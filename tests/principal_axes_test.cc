@@ -1,4 +1,4 @@
-#include "massprops/principal_axes.h"
+#include "massprops/core/principal_axes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "massprops/repair.h"
+#include "massprops/analysis/repair.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "massprops/checks.h"
-#include "massprops/rotational_inertia.h"
-#include "massprops/urdf_reader.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/io/urdf_reader.h"
 
 namespace massprops {
 namespace {
@@ -59,7 +59,7 @@ std::optional<Repair> RepairOf(const std::vector<Repair>& repairs, const std::st
 }
 
 TEST(RepairInertiaTest, ValidInertiaIsReturnedUnchanged) {
-  // A thin disk diag(1, 1, 2) lies on the boundary and is valid (README.md (Rules)).
+  // A thin disk diag(1, 1, 2) lies on the boundary and is valid (docs/rules.md).
   const Eigen::Matrix3d disk = Eigen::Vector3d(1, 1, 2).asDiagonal();
   EXPECT_EQ(RepairInertia(disk, InertiaRepairMethod::kProject), disk);
   EXPECT_EQ(RepairInertia(disk, InertiaRepairMethod::kBalance), disk);
@@ -226,7 +226,7 @@ TEST(PlanRepairsTest, BalanceOptionSetsMomentsToTheirMean) {
 }
 
 TEST(PlanRepairsTest, ProductsWithTheWrongSignAreNegated) {
-  // README.md (Rules) products-sign-suspect example: products 0.0045 are invalid, -0.0045 valid.
+  // docs/rules.md products-sign-suspect example: products 0.0045 are invalid, -0.0045 valid.
   // With no geometry there is nothing to compare with: the negation is taken, when asked for
   // (a guess); by default the inertia is projected (physics).
   const Model model = Read(
@@ -247,7 +247,7 @@ TEST(PlanRepairsTest, ProductsWithTheWrongSignAreNegated) {
 }
 
 TEST(PlanRepairsTest, MassInGramsIsDividedByAThousandWhenUnambiguous) {
-  // README.md (Rules) units-suspect example: cylinder r 0.05, l 0.4 with m = 2000 "kg" and the
+  // docs/rules.md units-suspect example: cylinder r 0.05, l 0.4 with m = 2000 "kg" and the
   // inertia of a 2 kg cylinder ((3r² + l²)/12·2 = 0.0279167): only the grams reading lands in
   // the plausible band, so no --fix-units is needed.
   const Model model = Read(
@@ -292,7 +292,7 @@ TEST(PlanRepairsTest, AmbiguousUnitsAreRescaledOnlyWithFixUnits) {
 }
 
 TEST(PlanRepairsTest, InertiaAboutTheLinkOriginIsShiftedToTheCenterOfMass) {
-  // README.md (Rules) inertia-about-origin-suspect example: 0.251 − 1·0.5² = 0.001 (a solid
+  // docs/rules.md inertia-about-origin-suspect example: 0.251 − 1·0.5² = 0.001 (a solid
   // sphere's 2/5·m·r² for r = 0.05).
   const Model model = Read(ArmUrdf(
       "<inertial><origin xyz=\"0.5 0 0\"/><mass value=\"1\"/><inertia ixx=\"0.001\" ixy=\"0\" "

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "massprops/mass_report.h"
-#include "massprops/mesh_loader.h"
-#include "massprops/model_reader.h"
+#include "massprops/analysis/mass_report.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/mesh/mesh_loader.h"
 #include "tool_runner.h"
 
 namespace massprops {

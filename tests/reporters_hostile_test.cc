@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "massprops/reporters.h"
+#include "massprops/output/reporters.h"
 
 namespace massprops {
 namespace {

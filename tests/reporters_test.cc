@@ -1,4 +1,4 @@
-#include "massprops/reporters.h"
+#include "massprops/output/reporters.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Ixx = ∫(y²+z²) dm, Ixy (matrix entry) = −∫xy dm, or from the textbook formulas cited beside
 // each test; none is produced by the code under test.
 
-#include "massprops/rotational_inertia.h"
+#include "massprops/core/rotational_inertia.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Expected poses are hand-derived below (Rz(90°) maps (x, y, z) to (-y, x, z)); the same fixtures
 // are also compared with libsdformat 12 in sdf_reader_sdformat_test.cc.
 
-#include "massprops/sdf_reader.h"
+#include "massprops/io/sdf_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <random>
 #include <string>
 
-#include "massprops/model.h"
+#include "massprops/model/model.h"
 
 namespace massprops {
 namespace {

@@ -1,7 +1,7 @@
 // Tests of SpatialInertia<T>. Expected values are hand-derived (parallel-axis theorem, particle
 // sums, the two-particle reduced-mass formula) or textbook (box, sphere), cited per test.
 
-#include "massprops/spatial_inertia.h"
+#include "massprops/core/spatial_inertia.h"
 
 #include <gtest/gtest.h>
 

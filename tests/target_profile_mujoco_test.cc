@@ -36,9 +36,9 @@
 #include <vector>
 
 #include "corpus_manifest.h"
-#include "massprops/model_reader.h"
-#include "massprops/target_profile.h"
-#include "massprops/xml_patch.h"
+#include "massprops/analysis/target_profile.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/output/xml_patch.h"
 
 namespace massprops {
 namespace {

@@ -1,8 +1,9 @@
-// Target profiles (include/massprops/target_profile.h) on small hand-made URDFs whose outcome is
-// worked out by hand from MuJoCo 2.2.2's compiler rules (user_objects.cc mjCBody::Compile: exact
-// A + B >= C; user_model.cc: fusestatic and mjMINVAL = 1e-15 on moving bodies). The same rules
-// are checked against libmujoco itself on the corpus in target_profile_mujoco_test.cc.
-#include "massprops/target_profile.h"
+// Target profiles (include/massprops/analysis/target_profile.h) on small hand-made URDFs whose
+// outcome is worked out by hand from MuJoCo 2.2.2's compiler rules (user_objects.cc
+// mjCBody::Compile: exact A + B >= C; user_model.cc: fusestatic and mjMINVAL = 1e-15 on moving
+// bodies). The same rules are checked against libmujoco itself on the corpus in
+// target_profile_mujoco_test.cc.
+#include "massprops/analysis/target_profile.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +12,9 @@
 #include <fstream>
 #include <string>
 
-#include "massprops/config.h"
-#include "massprops/model_reader.h"
-#include "massprops/repair.h"
+#include "massprops/analysis/config.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/io/model_reader.h"
 #include "tool_runner.h"
 
 namespace massprops {

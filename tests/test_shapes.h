@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <random>
 
-#include "massprops/eigen_types.h"
-#include "massprops/mesh_inertia.h"
+#include "massprops/core/eigen_types.h"
+#include "massprops/mesh/mesh_inertia.h"
 
 namespace massprops::test_support {
 

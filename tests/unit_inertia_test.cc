@@ -4,7 +4,7 @@
 // independent numerical integration, or from F. Tonon, "Explicit exact formulas for the 3-D
 // tetrahedron inertia tensor in terms of its vertex coordinates", J. Math. Stat. 1(1), 2004.
 
-#include "massprops/unit_inertia.h"
+#include "massprops/core/unit_inertia.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Tests of the URDF reader (include/massprops/urdf_reader.h) on small fixtures written for them
+// Tests of the URDF reader (include/massprops/io/urdf_reader.h) on small fixtures written for them
 // (testdata/urdf/) and on inline texts. The model comes from urdfdom (urdf::parseURDF); what
 // urdfdom does with each case is quoted from its source (urdfdom 3.0.1,
 // urdf_parser/src/{model,link,joint, pose}.cpp) in the test's comment. Expected line numbers are
@@ -7,7 +7,7 @@
 // x, then pitch about y, then yaw about z, i.e. R = Rz(yaw)·Ry(pitch)·Rx(roll); URDF XML
 // specification, <origin> element).
 
-#include "massprops/urdf_reader.h"
+#include "massprops/io/urdf_reader.h"
 
 #include <console_bridge/console.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "massprops/welded_groups.h"
+#include "massprops/analysis/welded_groups.h"
 
 #include <gtest/gtest.h>
 

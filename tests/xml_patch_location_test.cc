@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "massprops/repair.h"
-#include "massprops/xml_patch.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/output/xml_patch.h"
 
 namespace massprops {
 namespace {

@@ -1,4 +1,4 @@
-#include "massprops/xml_patch.h"
+#include "massprops/output/xml_patch.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "massprops/repair.h"
+#include "massprops/analysis/repair.h"
 
 namespace massprops {
 namespace {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs `massprops check --format json` over every model file of ../shared/corpus/MANIFEST.tsv in
-one process and prints a Markdown table of findings per source and rule (the README's corpus
-table). Usage: tools/corpus_summary.py [BUILD_DIR/massprops] [CORPUS_DIR]"""
+one process and prints a Markdown table of findings per source and rule (the corpus
+table of docs/corpus.md). Usage: tools/corpus_summary.py [BUILD_DIR/massprops] [CORPUS_DIR]"""
 import collections
 import csv
 import json

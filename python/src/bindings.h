@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "massprops/principal_axes.h"
+#include "massprops/core/principal_axes.h"
 
 namespace massprops::python {
 

@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "bindings.h"
-#include "massprops/principal_axes.h"
-#include "massprops/rotational_inertia.h"
-#include "massprops/spatial_inertia.h"
-#include "massprops/unit_inertia.h"
-#include "massprops/xml_patch.h"
+#include "massprops/core/principal_axes.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/core/spatial_inertia.h"
+#include "massprops/core/unit_inertia.h"
+#include "massprops/output/xml_patch.h"
 
 namespace py = pybind11;
 

@@ -1,7 +1,7 @@
 // Python bindings of the file side: read (Model, Link, Joint, ...), check (Finding), report
 // (the JSON report as Python data) and fix (FixResult). Files are read as the `massprops` tool
-// reads them (tools/main.cc, tools/fix_command.cc, tools/report_command.cc): the same readers,
-// configuration lookup, checks and repairs, so the findings are the tool's.
+// reads them (src/tool/main.cc, src/tool/fix_command.cc, src/tool/report_command.cc): the same
+// readers, configuration lookup, checks and repairs, so the findings are the tool's.
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -18,19 +18,20 @@
 #include <vector>
 
 #include "bindings.h"
-#include "massprops/checks.h"
-#include "massprops/config.h"
-#include "massprops/geometry_checks.h"
-#include "massprops/mass_report.h"
-#include "massprops/mesh_loader.h"
-#include "massprops/model.h"
-#include "massprops/model_reader.h"
-#include "massprops/repair.h"
-#include "massprops/reporters.h"
-#include "massprops/rotational_inertia.h"
-#include "massprops/spatial_inertia.h"
-#include "massprops/welded_groups.h"
-#include "massprops/xml_patch.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/config.h"
+#include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/mass_report.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/core/spatial_inertia.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/mesh/mesh_loader.h"
+#include "massprops/model/model.h"
+#include "massprops/output/report_format.h"
+#include "massprops/output/reporters.h"
+#include "massprops/output/xml_patch.h"
 
 namespace py = pybind11;
 

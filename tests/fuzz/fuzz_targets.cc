@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "massprops/checks.h"
-#include "massprops/model_reader.h"
-#include "massprops/repair.h"
-#include "massprops/rotational_inertia.h"
-#include "massprops/sdf_reader.h"
-#include "massprops/urdf_reader.h"
-#include "massprops/welded_groups.h"
-#include "massprops/xml_patch.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/io/sdf_reader.h"
+#include "massprops/io/urdf_reader.h"
+#include "massprops/output/xml_patch.h"
 
 namespace massprops::fuzz {
 namespace {

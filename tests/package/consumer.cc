@@ -1,10 +1,10 @@
 // Uses the installed library: a solid cube of mass 2 kg and side 0.3 m has Ixx = m·L²/6 = 0.03
 // kg·m² (textbook: I = m(b² + c²)/12 for a box), and its principal moments are all equal to that.
+// Through the umbrella header, so that every installed header is shown to compile on its own.
 #include <cmath>
 #include <iostream>
 
-#include "massprops/rotational_inertia.h"
-#include "massprops/unit_inertia.h"
+#include "massprops/massprops.h"
 
 int main() {
   const massprops::UnitInertia<double> G = massprops::UnitInertia<double>::SolidCube(0.3);

@@ -1,0 +1,55 @@
+#pragma once
+/// @file
+/// Check rules that read a link's geometry (meshes included): `inertia-disagrees-with-geometry`
+/// and `mesh-unreadable`. Both are off unless asked for (`massprops check --geometry`), since
+/// they read mesh files. They live apart from checks.h's CheckModel, which never reads files.
+
+#include <string>
+#include <vector>
+
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/link_shape.h"
+#include "massprops/mesh/mesh_loader.h"
+#include "massprops/model/model.h"
+
+namespace massprops {
+
+inline constexpr const char* kInertiaDisagreesWithGeometryRule = "inertia-disagrees-with-geometry";
+inline constexpr const char* kMeshUnreadableRule = "mesh-unreadable";
+
+/// What the geometry rules need.
+struct GeometryCheckOptions {
+  /// Run the rules at all (`--geometry`); when false CheckModelGeometry returns nothing.
+  bool enabled = false;
+  /// `inertia-disagrees-with-geometry` fires when, for some k, the declared and the
+  /// geometry-implied principal moments (both ascending) differ by more than this factor:
+  /// max(d_k/g_k, g_k/d_k) > factor. Must be > 1.
+  double factor = 2;
+  /// Where meshes are found, and the cache that reads each file once (model_file is set per
+  /// model by CheckModelGeometry from Model::file).
+  MeshResolveOptions resolve;
+  /// Severity overrides and disabling (CheckOptions::overrides) for these two rules.
+  CheckOptions check;
+};
+
+/// The LinkShapeFunction that reads meshes: for a link, CalcLinkGeometryInertia at unit mass
+/// (collision geometry if all of it can be computed, else visual; meshes resolved by `resolve`,
+/// whose model_file should be the model's file and whose cache should be set so that each mesh
+/// is read once), as a LinkShape with the box of the geometries used. nullopt when the link has
+/// no usable geometry. Give it to CheckOptions::shape and RepairOptions::shape so that the
+/// units, products-sign and about-origin rules and `fix --from-geometry` use meshes.
+/// The returned function holds a copy of `resolve` (the cache by pointer: it must outlive it).
+LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve);
+
+/// The two rules above, as RuleInfo (both warnings, both off by default).
+const std::vector<RuleInfo>& GeometryRules();
+
+/// Runs the geometry rules on every link of `model` that has geometry and a positive mass:
+/// `mesh-unreadable` for each mesh that cannot be resolved or read (its uri and the reason), and
+/// `inertia-disagrees-with-geometry` when the declared central inertia's principal moments and
+/// those the geometry implies for the declared mass (CalcLinkGeometryInertia) differ by more
+/// than options.factor. Honours options.check.overrides and Link::ignored_rules. Returns
+/// findings in link order. Never throws for bad input. Cost: loads each mesh once per cache.
+std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckOptions& options);
+
+}  // namespace massprops

@@ -1,0 +1,47 @@
+#pragma once
+/// @file
+/// Reading URDF into a massprops Model through urdfdom (ROS's URDF parser, `urdf::parseURDF`), so
+/// that massprops judges exactly the model that robot_state_publisher, MoveIt and the URDF
+/// importers of Gazebo and Drake load. A light tinyxml2 index of the same text adds the line of
+/// every <link>, <joint>, <inertial>, <mass>, <inertia>, <origin>, <collision> and <visual>, and
+/// the
+/// `<!-- massprops: ignore ... -->` comments of each link; the index decides nothing about
+/// validity.
+///
+/// What urdfdom says while it reads (through console_bridge) is captured, never printed:
+/// - urdfdom refuses the file: a ReadFinding "urdf-not-loadable" quoting urdfdom's reason, located
+///   at the element it names, and a lenient reading of only what carries mass properties (link
+///   inertials and geometries; joint type, parent, child, origin, axis), so that files written for
+///   Drake or MuJoCo (a `world` parent link, a <limit> without velocity, ...) are still checked;
+/// - urdfdom cannot read a link's <inertial> (it logs and keeps a partly read one): a ReadFinding
+///   "inertial-unreadable" on that link quoting the text, Link::inertial_unreadable set;
+/// - urdfdom drops a <visual>, <collision> or <material> and goes on: nothing is said (no inertial
+///   number depends on them; the Model holds the geometries urdfdom kept).
+/// A link with several <inertial>s (urdfdom reads the first) and a joint axis of zero length are
+/// read warnings. Only an unreadable input (missing file, too large, NUL bytes, malformed XML, no
+/// <robot>) is a ReadError.
+///
+/// urdfdom logs through one process-wide console_bridge handler: reads are serialized around
+/// `urdf::parseURDF` (a mutex), so reading from several threads is safe.
+
+#include <cstddef>
+#include <string>
+
+#include "massprops/model/model.h"
+
+namespace massprops {
+
+/// URDF files (or standard input) larger than this are refused with a ReadError, so that hostile
+/// input cannot exhaust memory.
+inline constexpr std::size_t kMaxUrdfFileBytes = std::size_t{256} << 20;  // 256 MiB
+
+/// Reads the URDF file at `path`; "-" reads standard input to its end (locations then name the
+/// file "<stdin>"). Yields one Model unless the input cannot be read as XML with a <robot> root.
+/// Never throws for bad input: each problem is a ReadError, a warning or a ReadFinding naming the
+/// file, line and element. Cost: that of urdf::parseURDF plus one tinyxml2 parse of the text.
+ReadResult ReadUrdfFile(const std::string& path);
+
+/// Same as ReadUrdfFile for URDF text already in memory; `file_name` is used in SourceLocations.
+ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name);
+
+}  // namespace massprops

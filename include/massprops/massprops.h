@@ -1,0 +1,44 @@
+#pragma once
+/// @file
+/// Everything of the massprops library in one include. The parts, from the bottom up
+/// (docs/architecture.md): core (inertia classes and solvers), model (what a reader produces),
+/// mesh (triangle meshes), io (readers), analysis (welded groups, checks, repairs, targets,
+/// report numbers), output (renderings, the patcher, merge-fixed). Include a part's header
+/// directly to depend on less.
+
+// core
+#include "massprops/core/eigen_types.h"
+#include "massprops/core/format_number.h"
+#include "massprops/core/principal_axes.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/core/spatial_inertia.h"
+#include "massprops/core/unit_inertia.h"
+
+// model
+#include "massprops/model/model.h"
+
+// mesh
+#include "massprops/mesh/mesh_inertia.h"
+#include "massprops/mesh/mesh_loader.h"
+
+// io
+#include "massprops/io/auto_inertia.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/io/sdf_reader.h"
+#include "massprops/io/urdf_reader.h"
+
+// analysis
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/config.h"
+#include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/link_shape.h"
+#include "massprops/analysis/mass_report.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/analysis/target_profile.h"
+#include "massprops/analysis/welded_groups.h"
+
+// output
+#include "massprops/output/merge_fixed.h"
+#include "massprops/output/report_format.h"
+#include "massprops/output/reporters.h"
+#include "massprops/output/xml_patch.h"

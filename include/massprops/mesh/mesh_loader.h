@@ -1,0 +1,159 @@
+#pragma once
+/// @file
+/// Meshes referenced by URDF/SDF geometries: resolving their URIs, loading them (STL ascii and
+/// binary, OBJ, DAE through assimp), and the unit-density mass properties of a link's geometry in
+/// the link frame — the entry points for checks and reports that compare declared inertias with
+/// the geometry (CalcGeometryMassProperties, CalcLinkGeometryInertia).
+///
+/// Failures (a file not found, unreadable, empty, an unsupported geometry) are values: a
+/// function returns false/nullopt and sets *error to a message naming the URI and the reason.
+/// Nothing here throws for bad input.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/mesh/mesh_inertia.h"
+#include "massprops/model/model.h"
+
+namespace massprops {
+
+class MeshCache;
+
+/// Where mesh URIs are looked up, and how meshes are modelled.
+struct MeshResolveOptions {
+  /// `package://NAME/rest`: these folders first (e.g. from --package-path), then the folders of
+  /// ROS_PACKAGE_PATH, then DIR/share for each DIR of AMENT_PREFIX_PATH (when use_environment).
+  /// In each folder P the package is P/NAME, or P itself or a child folder of P whose
+  /// package.xml has <name>NAME</name>.
+  std::vector<std::string> package_paths;
+  /// `model://NAME/rest`: these folders first, then SDF_PATH, GZ_SIM_RESOURCE_PATH,
+  /// IGN_GAZEBO_RESOURCE_PATH and GAZEBO_MODEL_PATH (when use_environment); the model is P/NAME.
+  std::vector<std::string> model_paths;
+  /// Read the environment variables above.
+  bool use_environment = true;
+  /// The model file that references the meshes: relative paths (and `file://` relative paths)
+  /// are relative to its folder (to the current directory when empty or "-"). A geometry whose
+  /// location names another file (a model included by an SDF world) is resolved relative to
+  /// that file instead (CalcGeometryMassProperties).
+  std::string model_file;
+  /// How open or non-manifold meshes are modelled (density is ignored: results are per unit
+  /// density, or scaled to a given mass).
+  MeshInertiaOptions inertia;
+  /// Loads each file once and reuses it (and its mass properties per scale); may be null.
+  /// The cache must outlive the calls that use it.
+  MeshCache* cache = nullptr;
+};
+
+/// The path of the file a mesh URI names, checked to exist as a regular file. Returns nullopt
+/// and sets *error (if not null) when the scheme is not supported (http://, ...), the package or
+/// model is not found on any search path (the message lists the paths searched), or the file is
+/// not there. Cost: a few file-system queries per search path (package.xml files are read).
+std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshResolveOptions& options,
+                                          std::string* error);
+
+/// Loads a mesh file (format chosen by assimp from the content and extension: STL ascii or
+/// binary, OBJ, DAE, ...) as one triangle mesh in the file's length unit converted to meters
+/// where the format says so: the scene graph's node transforms are applied, and a DAE
+/// <unit meter="..."> is honoured (assimp 5.2 puts it into the root node's transform; the DAE
+/// <up_axis> is ignored: URDF and SDF take mesh coordinates as they are written). Only assimp's
+/// aiProcess_Triangulate and aiProcess_JoinIdenticalVertices are applied (nothing that changes the
+/// geometry); points and lines are dropped. Assimp holds coordinates as 32-bit floats, so
+/// vertices carry a relative rounding of up to 6e-8. Returns false and sets *error (if not null)
+/// when the file cannot be read or parsed, or holds no triangle.
+bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error);
+
+/// Mesh files loaded once per run, and their mass properties per (file, scale). Thread-safe.
+class MeshCache {
+ public:
+  /// The mesh at `path` (LoadMeshFile), loading it on first use; failures are remembered too.
+  /// Returns null and sets *error on failure.
+  std::shared_ptr<const TriangleMesh> Load(const std::string& path, std::string* error);
+
+  /// Unit-density mass properties of the mesh at `path` scaled by diag(scale), in the mesh
+  /// frame G, computed once per (path, scale, options). Returns nullopt and sets *error on
+  /// failure.
+  std::optional<MeshMassProperties> MassProperties(const std::string& path,
+                                                   const Eigen::Vector3d& scale,
+                                                   const MeshInertiaOptions& options,
+                                                   std::string* error);
+
+  /// How many times a file was actually read (for tests and statistics).
+  int files_loaded() const;
+
+ private:
+  struct Entry {
+    std::shared_ptr<const TriangleMesh> mesh;
+    std::string error;
+  };
+  std::shared_ptr<const TriangleMesh> LoadLocked(const std::string& path, std::string* error);
+
+  mutable std::mutex mutex_;
+  std::map<std::string, Entry> meshes_;
+  std::map<std::tuple<std::string, double, double, double, int, double, double>, MeshMassProperties>
+      properties_;
+  int files_loaded_ = 0;
+};
+
+/// The mesh scaled by diag(scale): every vertex multiplied componentwise. A scale with an odd
+/// number of negative factors mirrors the mesh, so the triangles' vertex order is reversed to
+/// keep their winding. Precondition: finite scale (not checked).
+TriangleMesh ScaleMesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
+
+/// Unit-density mass properties of one geometry, in the link frame B.
+struct GeometryMassProperties {
+  double volume = 0;                                    ///< = mass at density 1.
+  Eigen::Vector3d p_BoGcm_B = Eigen::Vector3d::Zero();  ///< Center of mass, in the link frame.
+  RotationalInertia<double> I_GGcm_B;  ///< About the center of mass, expressed in B, density 1.
+  /// Axis-aligned bounding box in B: of the posed shape for primitives (CalcPrimitiveBounds), of
+  /// the scaled and posed vertices for meshes.
+  Eigen::AlignedBox3d box_B;
+  /// Meshes only: the resolved path and what the mesh looked like (model used, defects).
+  std::string mesh_path;
+  std::optional<MeshDiagnostics> mesh_diagnostics;
+};
+
+/// The unit-density volume, center and central inertia of a geometry, expressed in the link
+/// frame (X_BG applied): boxes, cylinders, spheres, capsules and ellipsoids from their closed
+/// forms (unit_inertia.h), meshes from their triangles (scaled by the geometry's scale, see
+/// CalcMeshMassProperties for open meshes). Returns nullopt and sets *error (if not null) for
+/// a mesh that cannot be resolved or loaded, a geometry of type kOther, or a negative or
+/// non-finite dimension. Cost: primitives about 100 flops; meshes linear in the triangles (once
+/// per file and scale with a cache).
+std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry& geometry,
+                                                                 const MeshResolveOptions& options,
+                                                                 std::string* error);
+
+/// The inertia a link's geometry implies for a given mass.
+struct LinkGeometryInertia {
+  double mass = 0;
+  double volume = 0;  ///< Sum of the geometries' volumes (overlaps counted twice).
+  Eigen::Vector3d p_BoBcm_B = Eigen::Vector3d::Zero();  ///< Center of mass in the link frame.
+  RotationalInertia<double> I_BBcm_B;              ///< About the center of mass, expressed in B.
+  bool from_collision = true;                      ///< false when the visual geometries were used.
+  Eigen::AlignedBox3d box_B;                       ///< Bounding box of the geometries used, in B.
+  std::vector<GeometryMassProperties> geometries;  ///< The geometries used, in file order.
+  /// Why the collision geometries were not used, when the visual ones were (empty otherwise).
+  std::string note;
+};
+
+/// The center of mass and central inertia of `link` if it were a uniform body of mass `mass`
+/// filling its geometry: the collision geometries if the link has any and all of them can be
+/// computed, else the visual ones. Several geometries are summed as separate solids of the same
+/// density (overlapping volumes count twice: a union is not computed). Returns nullopt and sets
+/// *error (if not null) when the link has no geometry, a geometry of the chosen set fails (the
+/// message names it), or the total volume is zero. Precondition: mass >= 0 and finite (else
+/// nullopt with an error).
+std::optional<LinkGeometryInertia> CalcLinkGeometryInertia(const Link& link, double mass,
+                                                           const MeshResolveOptions& options,
+                                                           std::string* error);
+
+}  // namespace massprops

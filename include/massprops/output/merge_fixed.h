@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// `massprops merge-fixed`: a model in which every welded group (links joined by fixed joints) is
+/// one link carrying the composite inertial, as simulators that lump fixed joints do. For URDF the
+/// original document is edited (tinyxml2), so every other element of the file is kept: the merged
+/// child links and the fixed joints that held them are removed, their <visual>s and <collision>s
+/// move into the group's root link with composed origins, joints whose parent was a merged link
+/// are re-parented to the root link with composed origins, and the root link's <inertial> becomes
+/// the group's composite (center of mass as origin, rpy 0, inertia about it in the root frame,
+/// numbers written with max_digits10 so they read back exactly).
+
+#include <string>
+#include <vector>
+
+#include "massprops/model/model.h"
+
+namespace massprops {
+
+/// What MergeFixedJoints returns.
+struct MergeFixedResult {
+  std::string text;               ///< The merged model (empty when errors is not empty).
+  std::vector<ReadError> errors;  ///< Read errors of the input, or "not supported".
+  int merged_links = 0;           ///< Links folded into their group's root link.
+  int groups_merged = 0;          ///< Welded groups of more than one link.
+};
+
+/// Merges the welded groups of the model text `xml` (`file_name` names it in errors). URDF only:
+/// SDF input gives the error "merge-fixed does not support SDF yet". A file without any fixed
+/// joint between links comes back re-printed with no change of content. Elements that name a
+/// removed link elsewhere (<gazebo reference>, <transmission>) are kept as written. A group's
+/// root link keeps its inertial as written when no other member has mass.
+/// Never throws for bad input. Cost: linear in the size of the file.
+MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name);
+
+/// URDF roll-pitch-yaw angles (R = Rz(yaw)·Ry(pitch)·Rx(roll)) of the rotation R; near pitch
+/// ±90° yaw is set to 0. Precondition: R is a rotation matrix (not checked).
+Eigen::Vector3d RotationToRollPitchYaw(const Eigen::Matrix3d& R);
+
+}  // namespace massprops

@@ -1,0 +1,112 @@
+#pragma once
+/// @file
+/// Reporters: render the results of `massprops check` (per file: its models, its findings and the
+/// errors that kept it from being read) as text, JSON, SARIF 2.1.0 or GitHub workflow commands.
+/// Reporters only render; the tool decides exit codes.
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "massprops/analysis/checks.h"
+#include "massprops/model/model.h"
+
+namespace massprops {
+
+/// Everything `check` learned about one input file.
+struct FileResult {
+  std::string path;                 ///< As given by the user; "<stdin>" for standard input.
+  std::string format;               ///< "urdf" or "sdf"; empty when the file could not be read.
+  std::vector<std::string> models;  ///< Names of the models read from the file.
+  std::vector<Finding> findings;    ///< In the order CheckModel returned them.
+  std::vector<ReadError> errors;    ///< Why the file (or part of it) could not be read.
+};
+
+/// Counts over a list of results. `errors`, `warnings` and `notes` count findings by severity;
+/// `read_errors` counts ReadErrors.
+struct ReportSummary {
+  int files = 0;
+  int errors = 0;
+  int warnings = 0;
+  int notes = 0;
+  int read_errors = 0;
+};
+
+enum class ReportFormat { kText, kJson, kSarif, kGithub };
+
+/// Parses "text", "json", "sarif", "github"; nullopt otherwise.
+std::optional<ReportFormat> ParseReportFormat(std::string_view text);
+
+/// How to render.
+struct ReportOptions {
+  /// Text only: wrap locations, severities and rule ids in ANSI colour escapes.
+  bool color = false;
+  /// Text only: leave out the closing summary line.
+  bool quiet = false;
+  /// Files of the folders given that were not taken as models (text summary line, JSON
+  /// summary "skipped_files").
+  int skipped_files = 0;
+  /// The tool's version, written into JSON and SARIF.
+  std::string tool_version = MASSPROPS_VERSION;
+  /// SARIF `tool.driver.informationUri` (and the base of each rule's helpUri, as
+  /// `information_uri + "#" + rule id`); omitted when empty. Must be an absolute URI.
+  std::string information_uri;
+};
+
+/// The rule id given to ReadErrors in every format.
+inline constexpr const char* kReadErrorRule = "read-error";
+/// The rule id the tool gives to a reader's warnings (elements it skipped), reported as findings.
+inline constexpr const char* kReadWarningRule = "read-warning";
+
+/// Counts findings by severity, and read errors, over `results`. Cost: linear.
+ReportSummary Summarize(const std::vector<FileResult>& results);
+
+/// One line per finding, `file:line:col: severity: message [rule-id]` (`:col` left out when the
+/// column is unknown, `:line` too when the line is), one line per ReadError,
+/// `file:line:col: error: element: message [read-error]`, then (unless quiet) a summary line.
+/// The file named is the finding's own location file when it has one (an SDF <include> may point
+/// into another file), else the FileResult's path.
+std::string RenderText(const std::vector<FileResult>& results, const ReportOptions& options = {});
+
+/// The JSON document described in docs/cli.md:
+/// {"version", "files": [{"path", "format", "models", "findings": [{"rule", "severity", "model",
+/// "link", "file", "line", "column", "message", "values": {name: number}}], "errors": [{"file",
+/// "line", "column", "element", "message"}]}], "summary": {"files", "errors", "warnings", "notes",
+/// "read_errors"}}. Non-finite values are written as null. Indented by two spaces.
+std::string RenderJson(const std::vector<FileResult>& results, const ReportOptions& options = {});
+
+/// A SARIF 2.1.0 log with one run: the driver lists every rule of AllRules(), "read-error" and
+/// "read-warning";
+/// each finding and ReadError is a result with ruleId, ruleIndex, level, message and a physical
+/// location (artifact URI relative to the working directory when the path is relative, a
+/// file:// URI when absolute; region only when the line is known).
+std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options = {});
+
+/// One GitHub Actions workflow command per finding and ReadError:
+/// `::error file=F,line=L,col=C,title=RULE::message` (warning for warnings, notice for notes),
+/// escaped per the workflow-command rules (EscapeGithubData / EscapeGithubProperty).
+std::string RenderGithub(const std::vector<FileResult>& results, const ReportOptions& options = {});
+
+/// Dispatches to the Render* function of `format`.
+std::string Render(ReportFormat format, const std::vector<FileResult>& results,
+                   const ReportOptions& options = {});
+
+/// Writes Render(format, results, options) to `out`.
+void WriteReport(std::ostream& out, ReportFormat format, const std::vector<FileResult>& results,
+                 const ReportOptions& options = {});
+
+/// Messages for people: every run of more than `max_word` bytes without white space (a hostile
+/// 10 MB link name) is shortened to its first and last bytes around "…[N bytes]…", cut at UTF-8
+/// character boundaries. Text up to that length comes back unchanged. Used for the messages of
+/// every format and the names in `report`'s tables; JSON and SARIF keep the full names in their
+/// "link" and "model" fields. Cost: linear.
+std::string ShortenLongWords(std::string_view text, std::size_t max_word = 200);
+
+/// Workflow-command escaping of a message: % → %25, CR → %0D, LF → %0A.
+std::string EscapeGithubData(std::string_view text);
+/// Workflow-command escaping of a property value: as EscapeGithubData, plus : → %3A and , → %2C.
+std::string EscapeGithubProperty(std::string_view text);
+
+}  // namespace massprops

@@ -1,0 +1,949 @@
+#include "massprops/analysis/checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstddef>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/target_profile.h"
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/core/principal_axes.h"
+#include "massprops/core/rotational_inertia.h"
+
+namespace massprops {
+namespace {
+
+// Rule ids (stable; documented in docs/rules.md).
+constexpr const char* kMassNotPositive = "mass-not-positive";
+constexpr const char* kInertiaNotFinite = "inertia-not-finite";
+constexpr const char* kInertiaNotPhysical = "inertia-not-physical";
+constexpr const char* kMasslessMovingBody = "massless-moving-body";
+constexpr const char* kZeroInertiaAboutJointAxis = "zero-inertia-about-joint-axis";
+constexpr const char* kInertialMissing = "inertial-missing";
+constexpr const char* kProductsSignSuspect = "products-sign-suspect";
+constexpr const char* kUnitsSuspect = "units-suspect";
+constexpr const char* kInertiaAboutOriginSuspect = "inertia-about-origin-suspect";
+constexpr const char* kInertiaExceedsGeometry = "inertia-exceeds-geometry";
+constexpr const char* kComOutsideGeometry = "com-outside-geometry";
+constexpr const char* kInertiaNearBoundary = "inertia-near-boundary";
+// Rules whose findings the readers make (ReadResult::findings).
+constexpr const char* kUrdfNotLoadable = "urdf-not-loadable";
+constexpr const char* kInertialUnreadable = "inertial-unreadable";
+constexpr const char* kIncludeUnresolved = "include-unresolved";
+
+// units-suspect: the radius of gyration k = sqrt(tr(I)/(2m)) is flagged when k / (half-diagonal
+// of the geometry's bounding box) is above kUnitsRatio or below 1/kUnitsRatio (a kg·mm² inertia
+// makes k sqrt(1e6) = 1000 times too large, a mass in grams makes it sqrt(1000) = 31.6 times too
+// small), or, without known geometry, when k exceeds kMaxGyrationRadiusWithoutGeometry.
+constexpr double kUnitsRatio = 30;
+constexpr double kMaxGyrationRadiusWithoutGeometry = 10;  // metres
+
+// Collision and visual primitives are often simplified (smaller than the body: a cylinder for the
+// motor of a link whose casting reaches farther). The geometry rules therefore allow the body to
+// reach kGeometryMargin times the half-diagonal r of the geometry's bounding box: they flag an
+// inertia only if its mass cannot fit in the sphere of radius kGeometryMargin·r about the box
+// center, and a center of mass only if it is more than (kGeometryMargin − 1)·r outside the box.
+constexpr double kGeometryMargin = 2;
+
+// Placeholder geometry: a link whose geometry's half-diagonal is below this (a 1 mm sphere, a
+// zero-size box) has no size to judge its inertia by. Dummy masses: a link of at most this mass
+// (0.1 to 1 g markers, frames given a token mass so that a parser accepts them) is not a body
+// whose inertia matters; the geometry rules say nothing about either.
+constexpr double kPlaceholderHalfDiagonal = 0.005;  // metres
+constexpr double kDummyMass = 1e-3;                 // kg
+// Where part of a welded group's geometry is a mesh of unknown size, the known geometry may cover
+// only part of the body: the geometry rules allow it to reach this many times farther.
+constexpr double kPartialGeometryMargin = 3;
+
+std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char* format, ...) {
+  char buffer[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof(buffer), format, args);
+  va_end(args);
+  return buffer;
+}
+
+// A number as %g with 6 significant digits (enough to recognise the file's numbers).
+std::string Num(double x) { return Format("%.6g", x); }
+
+std::string Vec(const Eigen::Vector3d& v) {
+  return "(" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + ")";
+}
+
+// The physical-validity facts of an inertia matrix at a center of mass.
+struct Validity {
+  bool finite = false;
+  Eigen::Vector3d moments = Eigen::Vector3d::Zero();  // ascending principal moments
+  double trace = 0;
+  double excess = 0;  // λ3 − (λ1 + λ2): positive when the triangle inequality fails
+};
+
+Validity Analyze(const Eigen::Matrix3d& I) {
+  Validity v;
+  v.finite = I.allFinite();
+  if (!v.finite) return v;
+  v.moments = internal::ScaledPrincipalMoments(I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1),
+                                               PrincipalSolver::kAccurate);
+  v.trace = I.trace();
+  v.excess = v.moments(2) - (v.moments(0) + v.moments(1));
+  return v;
+}
+
+bool IsValid(const Eigen::Matrix3d& I, double relative_tolerance) {
+  return internal::IsPhysicallyValidInertia(I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1),
+                                            relative_tolerance);
+}
+
+// "principal moments 0.1, 0.2, 0.5: 0.1 + 0.2 < 0.5 (by 0.2 = 25% of the trace)".
+std::string DescribeViolation(const Validity& v) {
+  const Eigen::Vector3d& m = v.moments;
+  std::string text = "principal moments " + Num(m(0)) + ", " + Num(m(1)) + ", " + Num(m(2)) + ": ";
+  if (m(0) < 0) text += "a negative moment, and ";
+  text += Num(m(0)) + " + " + Num(m(1)) + " < " + Num(m(2)) + " (by " + Num(v.excess);
+  if (v.trace > 0) {
+    text += " = " + Format("%.3g%%", 100 * v.excess / v.trace) + " of the trace";
+  }
+  return text + ")";
+}
+
+Eigen::Matrix3d WrittenMatrix(const Inertial& in) {
+  Eigen::Matrix3d I;
+  I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  return I;
+}
+
+std::optional<GeometryBounds> BoundsOf(const Link& link, bool collision) {
+  GeometryBounds bounds;
+  bounds.from_collision = collision;
+  for (const Geometry& g : link.geometries) {
+    if (g.is_collision != collision) continue;
+    const std::optional<Eigen::AlignedBox3d> box = CalcPrimitiveBounds(g);
+    if (!box) return std::nullopt;
+    bounds.box_B.extend(*box);
+    ++bounds.count;
+  }
+  if (bounds.count == 0) return std::nullopt;
+  return bounds;
+}
+
+// Which unit mistake makes tr(I)/m off by `factor` (= (k / k_expected)²), by nearest power of ten.
+std::string GuessUnitError(double factor) {
+  struct Candidate {
+    double factor;
+    const char* text;
+  };
+  static const Candidate kCandidates[] = {
+      {1e6, "the inertia looks like kg·mm² (1e6 too large): multiply it by 1e-6"},
+      {1e4, "the inertia looks like kg·cm² (1e4 too large): multiply it by 1e-4"},
+      {1e-3, "the mass looks like grams (1000 too large): divide it by 1000"},
+      {1e-6, "the inertia looks 1e6 too small (converted from kg·mm² twice?)"},
+  };
+  const Candidate* best = &kCandidates[0];
+  for (const Candidate& c : kCandidates) {
+    if (std::abs(std::log10(factor / c.factor)) < std::abs(std::log10(factor / best->factor))) {
+      best = &c;
+    }
+  }
+  return best->text;
+}
+
+// The causes that fit a radius of gyration `ratio` times the geometry's half-diagonal: the numbers
+// alone cannot tell a unit slip from a placeholder, an edited mass or stabilisation values.
+std::string Causes(double ratio) {
+  const double factor = ratio * ratio / 0.25;  // (k / k_expected)², k_expected = half-diagonal / 2
+  std::string text = "the causes that fit: ";
+  if (ratio > 1) {
+    text +=
+        "an inertia raised on purpose (to stabilise a simulation) or copied from a bigger "
+        "part, a mass lowered without its inertia, a placeholder inertia, or a unit slip (" +
+        GuessUnitError(factor) + ")";
+  } else {
+    text +=
+        "a placeholder inertia, a mass raised without its inertia (the inertia of the old "
+        "mass), or " +
+        GuessUnitError(factor) + ")";
+  }
+  return text;
+}
+
+// A mesh 1000 times too large (an STL in millimetres referenced without scale="0.001 ...") makes
+// a right inertia look 1e6 too small: say so when the geometry is a mesh and k/e is near 1/1000
+// of a solid body's 0.5.
+std::string MeshScaleHint(const GeometryBounds& bounds, double ratio) {
+  if (!bounds.from_mesh || !(ratio < 0.5 / 100)) return "";
+  return "; or the mesh is in millimetres and lacks scale=\"0.001 0.001 0.001\" (its box is " +
+         Format("%.3g", 0.5 / ratio) + " times the size the radius of gyration suggests)";
+}
+
+class Checker {
+ public:
+  Checker(const Model& model, const CheckOptions& options) : model_(model), options_(options) {}
+
+  std::vector<Finding> Run() {
+    groups_ = FindWeldedGroups(model_);
+    group_of_.assign(model_.links.size(), -1);
+    for (std::size_t g = 0; g < groups_.size(); ++g) {
+      for (int i : groups_[g].links) group_of_[i] = static_cast<int>(g);
+    }
+    for (std::size_t i = 0; i < model_.links.size(); ++i) CheckLink(static_cast<int>(i));
+    kinematic_only_ = model_.format == Model::Format::kUrdf;
+    for (const Link& link : model_.links) kinematic_only_ = kinematic_only_ && !link.inertial;
+    if (kinematic_only_) {
+      CheckKinematicOnlyModel();
+    } else {
+      for (const WeldedGroup& group : groups_) CheckGroup(group);
+    }
+    std::stable_sort(findings_.begin(), findings_.end(), [](const Finding& a, const Finding& b) {
+      if (a.location.line != b.location.line) return a.location.line < b.location.line;
+      return a.rule < b.rule;
+    });
+    return std::move(findings_);
+  }
+
+ private:
+  // The severity of `rule` after the overrides, or nullopt when the rule is off.
+  std::optional<Severity> SeverityOf(const char* rule) const {
+    const auto it = options_.overrides.find(rule);
+    if (it != options_.overrides.end()) return it->second;
+    for (const RuleInfo& info : AllRules()) {
+      if (info.id == rule) {
+        return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
+                                       : std::nullopt;
+      }
+    }
+    return std::nullopt;
+  }
+
+  bool Enabled(const char* rule, const Link& link) const {
+    for (const std::string& ignored : link.ignored_rules) {
+      if (ignored == "all" || ignored == rule) return false;
+    }
+    return SeverityOf(rule).has_value();
+  }
+
+  void Emit(const char* rule, const Link& link, const SourceLocation& location, std::string message,
+            std::vector<std::pair<std::string, double>> values) {
+    if (!Enabled(rule, link)) return;
+    Finding f;
+    f.rule = rule;
+    f.severity = *SeverityOf(rule);
+    f.model = model_.name;
+    f.link = link.name;
+    f.location = location;
+    f.message = std::move(message);
+    f.values = std::move(values);
+    findings_.push_back(std::move(f));
+  }
+
+  // The <inertia> element if present, else the <inertial>, else the <link>.
+  static const SourceLocation& InertiaLocation(const Link& link) {
+    if (link.inertial) {
+      if (link.inertial->inertia_location.line > 0) return link.inertial->inertia_location;
+      if (link.inertial->location.line > 0) return link.inertial->location;
+    }
+    return link.location;
+  }
+  static const SourceLocation& MassLocation(const Link& link) {
+    if (link.inertial && link.inertial->mass_location.line > 0) {
+      return link.inertial->mass_location;
+    }
+    return InertiaLocation(link);
+  }
+  static const SourceLocation& PoseLocation(const Link& link) {
+    if (link.inertial && link.inertial->pose_location.line > 0) {
+      return link.inertial->pose_location;
+    }
+    return InertiaLocation(link);
+  }
+
+  void CheckLink(int link_index) {
+    const Link& link = model_.links[link_index];
+    if (!link.inertial) return;  // inertial-missing is judged with the link's group.
+    const Inertial& in = *link.inertial;
+    const std::string who = "link '" + link.name + "'";
+    const double m = in.mass;
+    if (!std::isfinite(m) || m < 0) {
+      Emit(kMassNotPositive, link, MassLocation(link),
+           who + ": mass " + Num(m) + " is " + (std::isfinite(m) ? "negative" : "not finite") +
+               " (a mass must be a finite number >= 0; 0 only for a massless frame welded to a "
+               "body)",
+           {{"mass", m}});
+    }
+    const Eigen::Matrix3d I_written = WrittenMatrix(in);
+    if (!I_written.allFinite() || !in.X_BBi.p_AB.allFinite() || !in.X_BBi.R_AB.allFinite()) {
+      Emit(kInertiaNotFinite, link, InertiaLocation(link),
+           who + ": the inertial has a NaN or infinite number: ixx " + Num(in.ixx) + ", iyy " +
+               Num(in.iyy) + ", izz " + Num(in.izz) + ", ixy " + Num(in.ixy) + ", ixz " +
+               Num(in.ixz) + ", iyz " + Num(in.iyz) + ", center of mass " + Vec(in.X_BBi.p_AB),
+           {{"ixx", in.ixx},
+            {"iyy", in.iyy},
+            {"izz", in.izz},
+            {"ixy", in.ixy},
+            {"ixz", in.ixz},
+            {"iyz", in.iyz}});
+      return;
+    }
+    // Validity does not depend on the frame the inertia is expressed in: judge the numbers as
+    // written (about the center of mass, in the inertial frame), free of rotation round-off.
+    const double tol = options_.tolerance;
+    const bool valid = IsValid(I_written, tol);
+    if (!valid) {
+      const Validity v = Analyze(I_written);
+      Emit(kInertiaNotPhysical, link, InertiaLocation(link),
+           who + ": the inertia about the center of mass is not physically valid: " +
+               DescribeViolation(v) + GroupNote(link_index),
+           {{"principal_min", v.moments(0)},
+            {"principal_mid", v.moments(1)},
+            {"principal_max", v.moments(2)},
+            {"trace", v.trace},
+            {"violation", v.excess},
+            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+            {"tolerance", tol}});
+      Eigen::Matrix3d I_negated = -I_written;
+      I_negated.diagonal() = I_written.diagonal();
+      if (IsValid(I_negated, tol)) {
+        const Validity vn = Analyze(I_negated);
+        Emit(kProductsSignSuspect, link, InertiaLocation(link),
+             who +
+                 ": the inertia is invalid as written but valid with the products of inertia "
+                 "negated (ixy, ixz, iyz = " +
+                 Num(in.ixy) + ", " + Num(in.ixz) + ", " + Num(in.iyz) +
+                 "; negated, the principal moments are " + Num(vn.moments(0)) + ", " +
+                 Num(vn.moments(1)) + ", " + Num(vn.moments(2)) +
+                 "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
+             {{"ixy", in.ixy},
+              {"ixz", in.ixz},
+              {"iyz", in.iyz},
+              {"negated_principal_min", vn.moments(0)},
+              {"negated_principal_mid", vn.moments(1)},
+              {"negated_principal_max", vn.moments(2)}});
+      }
+    } else if (!IsValid(I_written, internal::DefaultInertiaValidityTolerance<double>())) {
+      const Validity v = Analyze(I_written);
+      Emit(kInertiaNearBoundary, link, InertiaLocation(link),
+           who + ": the inertia is valid only within the tolerance " + Num(tol) +
+               " of the trace: " + DescribeViolation(v) +
+               " (the body is a thin shape, written with rounded numbers?)",
+           {{"principal_min", v.moments(0)},
+            {"principal_mid", v.moments(1)},
+            {"principal_max", v.moments(2)},
+            {"trace", v.trace},
+            {"violation", v.excess},
+            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+            {"tolerance", tol}});
+    }
+    if (!(m > 0) || !std::isfinite(m)) return;
+
+    const MassProperties props = LinkMassProperties(link, model_.format);
+    const Eigen::Vector3d& c = props.p_FoScm_F;
+    const Eigen::Matrix3d& I_B = props.I_SScm_F;
+    // The link as a solid of its geometry (primitives; meshes through options_.shape), and its
+    // extent.
+    const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
+    std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, shape);
+    // Placeholder geometry and dummy masses: nothing to judge by (see kPlaceholderHalfDiagonal).
+    if (bounds && 0.5 * bounds->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
+      bounds.reset();
+    }
+    if (m <= kDummyMass) bounds.reset();
+    // A mass lumped onto one link of a welded group shows as a center of mass outside the link's
+    // own geometry: such a link is judged against the geometry of the whole group (in this link's
+    // frame); any other link against its own (collision and visual).
+    std::optional<GeometryBounds> group_bounds = bounds;
+    if (bounds) {
+      const Eigen::Vector3d h_own = 0.5 * bounds->box_B.sizes();
+      const Eigen::Vector3d out_own =
+          ((c - bounds->box_B.center()).cwiseAbs() - h_own).cwiseMax(Eigen::Vector3d::Zero());
+      if (out_own.norm() > (kGeometryMargin - 1) * h_own.norm()) {
+        group_bounds = GroupBounds(link_index, *bounds);
+      }
+    }
+    const std::string geometry_name =
+        std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
+        (bounds && bounds->from_mesh ? " mesh" : "");
+    const double trace = I_written.trace();
+
+    // products-sign-suspect for an inertia valid both ways: the geometry decides.
+    if (valid && shape) {
+      Eigen::Matrix3d I_negated = -I_written;
+      I_negated.diagonal() = I_written.diagonal();
+      const std::optional<ProductsSignEvidence> evidence = FindProductsSignEvidence(in, *shape);
+      if (evidence && IsValid(I_negated, tol)) {
+        const Eigen::Vector3d& g = evidence->geometry_products;
+        Emit(kProductsSignSuspect, link, InertiaLocation(link),
+             who + ": the products of inertia (ixy, ixz, iyz = " + Num(in.ixy) + ", " +
+                 Num(in.ixz) + ", " + Num(in.iyz) + ") have the opposite sign of those its " +
+                 geometry_name + " geometry implies for its mass (" + Num(g.x()) + ", " +
+                 Num(g.y()) + ", " + Num(g.z()) + "; negated they differ by " +
+                 Format("%.2g%%", 100 * evidence->mismatch_negated) + ", as written by " +
+                 Format("%.3g%%", 100 * evidence->mismatch_as_written) +
+                 "): they were probably written as +∫xy dm where URDF/SDF expect -∫xy dm, or "
+                 "copied from a mirror-image part",
+             {{"ixy", in.ixy},
+              {"ixz", in.ixz},
+              {"iyz", in.iyz},
+              {"geometry_ixy", g.x()},
+              {"geometry_ixz", g.y()},
+              {"geometry_iyz", g.z()},
+              {"cosine", evidence->cosine},
+              {"mismatch_as_written", evidence->mismatch_as_written},
+              {"mismatch_negated", evidence->mismatch_negated}});
+      }
+    }
+
+    // units-suspect.
+    bool units_flagged = false;
+    if (trace > 0) {
+      const double k = std::sqrt(trace / (2 * m));
+      if (bounds) {
+        const double extent = 0.5 * bounds->box_B.diagonal().norm();
+        if (extent > 0) {
+          const double ratio = k / extent;
+          const double group_extent = 0.5 * group_bounds->box_B.diagonal().norm();
+          // Too large only against the whole group's known geometry; too small against the link.
+          const bool too_large = ratio > kUnitsRatio && k / group_extent > kUnitsRatio;
+          if (too_large || ratio < 1 / kUnitsRatio) {
+            units_flagged = true;
+            // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
+            Emit(kUnitsSuspect, link, InertiaLocation(link),
+                 who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
+                     " times the half-diagonal " + Num(extent) + " m of its " + geometry_name +
+                     " geometry (expected " + "about 0.3 to 1): " + Causes(ratio) +
+                     MeshScaleHint(*bounds, ratio),
+                 {{"radius_of_gyration", k},
+                  {"geometry_half_diagonal", extent},
+                  {"ratio", ratio},
+                  {"mass", m},
+                  {"trace", trace}});
+          }
+        }
+      } else if (k > kMaxGyrationRadiusWithoutGeometry) {
+        units_flagged = true;
+        Emit(kUnitsSuspect, link, InertiaLocation(link),
+             who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
+                 Num(kMaxGyrationRadiusWithoutGeometry) +
+                 " m (the link has no geometry of known size): the inertia looks like kg·mm² "
+                 "(1e6 too large), which would make it " +
+                 Num(k / 1000) + " m",
+             {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
+      }
+    }
+    // The "too large" verdicts below are made against the group's known geometry; where some of
+    // it is of unknown size (a mesh not read), the body may reach farther: the allowance is then
+    // kPartialGeometryMargin times larger.
+    if (!group_bounds) return;
+    const double allowance = group_bounds->partial ? kPartialGeometryMargin : 1.0;
+    const Eigen::Vector3d o = group_bounds->box_B.center();
+    const Eigen::Vector3d h = 0.5 * group_bounds->box_B.sizes();
+    const double scale2 = h.squaredNorm();
+    const std::string& geometry_kind = geometry_name;
+
+    // inertia-exceeds-geometry / inertia-about-origin-suspect (valid inertias only). A body inside
+    // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
+    // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
+    if (valid && !units_flagged) {
+      const double r2 = allowance * allowance * kGeometryMargin * kGeometryMargin * scale2;
+      const Eigen::Vector3d d = c - o;
+      // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
+      const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
+      const double bound = m * r2;
+      if (spread - bound > tol * bound) {
+        // Would the numbers fit as the inertia about the link origin Bo? Then I_Bcm = I − m·(|c|²1
+        // − c·cᵀ) must be valid and fit the sphere.
+        const Eigen::Matrix3d I_shifted =
+            I_B - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+        const double shifted_spread = 0.5 * I_shifted.trace() + m * d.squaredNorm();
+        const bool shifted_fits =
+            !c.isZero(0) && IsValid(I_shifted, tol) && shifted_spread - bound <= tol * bound;
+        if (shifted_fits) {
+          const Validity vs = Analyze(I_shifted);
+          Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
+               who + ": the inertia needs more room than the " + geometry_kind +
+                   " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
+                   " kg·m² about the center o of its bounding box, r = " +
+                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " m), but taken as the inertia about the link origin and shifted to the center "
+                   "of mass " +
+                   Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) +
+                   ", " + Num(vs.moments(1)) + ", " + Num(vs.moments(2)) +
+                   "): it was probably written about the link origin",
+               {{"spread", spread},
+                {"bound", bound},
+                {"shifted_spread", shifted_spread},
+                {"shifted_principal_min", vs.moments(0)},
+                {"shifted_principal_mid", vs.moments(1)},
+                {"shifted_principal_max", vs.moments(2)}});
+        } else {
+          Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
+               who + ": no mass distribution inside the bounding box of the " + geometry_kind +
+                   " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
+                   " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
+                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " +
+                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
+                   " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
+               {{"spread", spread},
+                {"bound", bound},
+                {"ratio", spread / bound},
+                {"half_diagonal", std::sqrt(r2)}});
+        }
+      }
+    }
+
+    // com-outside-geometry.
+    const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
+    const double distance = outside.norm();
+    const double allowed = allowance * (kGeometryMargin - 1) * std::sqrt(scale2);
+    if (distance - allowed > tol * std::sqrt(scale2)) {
+      Emit(kComOutsideGeometry, link, PoseLocation(link),
+           who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
+               " m outside the bounding box " + Vec(group_bounds->box_B.min()) + " to " +
+               Vec(group_bounds->box_B.max()) + " of its " + geometry_kind +
+               " geometry, farther than its half-diagonal " + Num(allowed) + " m",
+           {{"com_x", c.x()},
+            {"com_y", c.y()},
+            {"com_z", c.z()},
+            {"distance", distance},
+            {"allowed", allowed}});
+    }
+  }
+
+  // The union of the known geometry (collision and visual) of every link of `link_index`'s welded
+  // group, in that link's frame, starting from the link's own `bounds`. Partial when a member's
+  // geometry size is not known (meshes).
+  std::optional<GeometryBounds> GroupBounds(int link_index, const GeometryBounds& bounds) const {
+    GeometryBounds result = bounds;
+    const WeldedGroup& group = groups_[group_of_[link_index]];
+    Pose X_RL;
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      if (group.links[k] == link_index) X_RL = group.X_RL[k];
+    }
+    const Pose X_LR = X_RL.Inverse();
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      const int j = group.links[k];
+      if (j == link_index) continue;
+      const Link& member = model_.links[j];
+      if (member.geometries.empty()) continue;
+      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      if (!b) {
+        result.partial = true;
+        continue;
+      }
+      result.partial |= b->partial;
+      const Pose X_LM = X_LR * group.X_RL[k];
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        result.box_B.extend(X_LM.p_AB + X_LM.R_AB * p);
+      }
+    }
+    return result;
+  }
+
+  // Whether `box` (in the frame of link `link_index`) lies, or may lie, inside the geometry of
+  // another member of `group` that has a positive mass.
+  bool InsideMassiveNeighbour(const WeldedGroup& group, int link_index,
+                              const Eigen::AlignedBox3d& box) const {
+    Pose X_RL;
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      if (group.links[k] == link_index) X_RL = group.X_RL[k];
+    }
+    const Pose X_LR = X_RL.Inverse();
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      const Link& member = model_.links[group.links[k]];
+      if (group.links[k] == link_index || !member.inertial || !(member.inertial->mass > 0)) {
+        continue;
+      }
+      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      // A neighbour with geometry of unknown size (a mesh not read) may hold the box: cannot
+      // tell, say nothing.
+      if (!member.geometries.empty() && (!b || b->partial)) return true;
+      if (!b) continue;
+      const Pose X_LM = X_LR * group.X_RL[k];
+      Eigen::AlignedBox3d in_link;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        in_link.extend(X_LM.p_AB + X_LM.R_AB * p);
+      }
+      const double slack = 1e-9 * (1 + in_link.diagonal().norm());
+      if ((box.min().array() >= in_link.min().array() - slack).all() &&
+          (box.max().array() <= in_link.max().array() + slack).all()) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // For an invalid member of a welded group: whether the group is valid as a whole.
+  std::string GroupNote(int link_index) const {
+    const WeldedGroup& group = groups_[group_of_[link_index]];
+    if (group.links.size() < 2) return "";
+    const CompositeInertia composite = CalcCompositeInertia(model_, group);
+    if (composite.I_SScm_R.allFinite() && IsValid(composite.I_SScm_R, options_.tolerance)) {
+      return "; its welded group rooted at '" + group.root_link +
+             "' is valid as a whole (as a simulator that merges fixed joints sees it)";
+    }
+    return "";
+  }
+
+  // A URDF without any <inertial> describes kinematics only: one finding for the whole model
+  // instead of one per moving body and one per link with collision geometry.
+  void CheckKinematicOnlyModel() {
+    int moving = 0;
+    const WeldedGroup* first = nullptr;
+    for (const WeldedGroup& group : groups_) {
+      if (!group.is_moving) continue;
+      ++moving;
+      if (first == nullptr) first = &group;
+    }
+    if (first == nullptr) return;
+    const Link& root = model_.links[first->links.front()];
+    Emit(kMasslessMovingBody, root, root.location,
+         "the model has no <inertial> at all (a kinematics-only description): its " +
+             std::to_string(moving) + " moving bod" + (moving == 1 ? "y is" : "ies are") +
+             " massless, starting with link '" + root.name + "'; a simulator cannot use it",
+         {{"mass", 0}, {"moving_groups", static_cast<double>(moving)}});
+  }
+
+  void CheckGroup(const WeldedGroup& group) {
+    // A static SDF model never moves: missing or zero mass properties are what it should have.
+    if (model_.is_static) return;
+    // A member whose <inertial> could not be read makes the group's mass properties unknown (the
+    // reader's inertial-unreadable finding says why): judge nothing about the group.
+    for (int i : group.links) {
+      if (model_.links[i].inertial_unreadable) return;
+    }
+    const Link& root = model_.links[group.links.front()];
+    const CompositeInertia composite = CalcCompositeInertia(model_, group);
+    bool all_massless = true;
+    int contributing = 0;
+    std::vector<std::string> invalid_members;
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      if (!link.inertial) {
+        if (model_.format == Model::Format::kSdf) {  // SDF default: mass 1, inertia diag(1,1,1).
+          all_massless = false;
+          ++contributing;
+        }
+        continue;
+      }
+      if (link.inertial->mass != 0) all_massless = false;
+      if (link.inertial->mass != 0 || !WrittenMatrix(*link.inertial).isZero(0)) ++contributing;
+    }
+    const std::string who = group.links.size() > 1
+                                ? "the welded group rooted at '" + root.name + "' (" +
+                                      std::to_string(group.links.size()) + " links)"
+                                : "link '" + root.name + "'";
+    bool massless_moving = false;
+    if (group.is_moving && all_massless) {
+      massless_moving = true;
+      std::string how = "is free-floating";
+      if (group.parent_joint >= 0) {
+        const Joint& joint = model_.joints[group.parent_joint];
+        how = "moves on " + joint.type_name + " joint '" + joint.name + "'";
+      }
+      Emit(kMasslessMovingBody, root, MassLocation(root),
+           who + " " + how +
+               " but has zero mass: simulators reject a moving body without mass or become "
+               "unstable",
+           {{"mass", 0}, {"group_links", static_cast<double>(group.links.size())}});
+    }
+    // inertial-missing: links with collision geometry and no <inertial>.
+    double group_mass = 0;
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      if (link.inertial && std::isfinite(link.inertial->mass) && link.inertial->mass > 0) {
+        group_mass += link.inertial->mass;
+      }
+    }
+    if (!massless_moving) {
+      for (int i : group.links) {
+        const Link& link = model_.links[i];
+        if (link.inertial) continue;
+        int collisions = 0;
+        for (const Geometry& g : link.geometries) collisions += g.is_collision ? 1 : 0;
+        if (collisions == 0) continue;
+        // Zero-size or 1 mm placeholder collisions on a frame link: nothing to give a mass to.
+        const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(link);
+        if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
+          continue;
+        }
+        // URDF: a collision-helper link whose geometry lies inside the geometry of a welded
+        // neighbour that carries mass: that body's mass is given once, on the neighbour.
+        if (model_.format == Model::Format::kUrdf && group_mass > 0 && b && !b->partial &&
+            InsideMassiveNeighbour(group, i, b->box_B)) {
+          continue;
+        }
+        Emit(kInertialMissing, link, link.location,
+             "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
+                 (collisions == 1 ? "y" : "ies") +
+                 " but no <inertial>: its mass was probably forgotten (" +
+                 (model_.format == Model::Format::kSdf
+                      ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
+                      : "URDF makes it massless)"),
+             {{"collisions", collisions}});
+      }
+    }
+    if (!composite.I_SScm_R.allFinite() || !std::isfinite(composite.mass)) return;
+    // inertia-not-physical for the group as one rigid body.
+    if (contributing > 1 && !IsValid(composite.I_SScm_R, options_.tolerance)) {
+      const Validity v = Analyze(composite.I_SScm_R);
+      Emit(kInertiaNotPhysical, root, InertiaLocation(root),
+           who + ": the composite inertia about the composite center of mass " +
+               Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
+               ") is not physically valid: " + DescribeViolation(v),
+           {{"principal_min", v.moments(0)},
+            {"principal_mid", v.moments(1)},
+            {"principal_max", v.moments(2)},
+            {"trace", v.trace},
+            {"violation", v.excess},
+            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+            {"tolerance", options_.tolerance},
+            {"group_links", static_cast<double>(group.links.size())}});
+    }
+    // zero-inertia-about-joint-axis.
+    if (group.parent_joint >= 0 && composite.mass > 0) {
+      const Joint& joint = model_.joints[group.parent_joint];
+      if (joint.type != Joint::Type::kRevolute && joint.type != Joint::Type::kContinuous) return;
+      const double norm = joint.axis.norm();
+      if (!(norm > 0) || !joint.axis.allFinite()) return;
+      const Eigen::Vector3d a = joint.axis / norm;
+      const Eigen::Matrix3d I_Ro = composite.CalcInertiaAboutOrigin();
+      const double I_axis = a.dot(I_Ro * a);
+      if (I_axis <= options_.tolerance * I_Ro.trace()) {
+        Emit(kZeroInertiaAboutJointAxis, root, InertiaLocation(root),
+             who + " turns on " + joint.type_name + " joint '" + joint.name +
+                 "' but its moment of inertia about the joint axis " + Vec(a) + " is " +
+                 Num(I_axis) + " kg·m² (mass " + Num(composite.mass) +
+                 "): a torque would give it infinite angular acceleration",
+             {{"moment_about_axis", I_axis},
+              {"mass", composite.mass},
+              {"trace", I_Ro.trace()},
+              {"group_links", static_cast<double>(group.links.size())}});
+      }
+    }
+  }
+
+  const Model& model_;
+  const CheckOptions& options_;
+  std::vector<WeldedGroup> groups_;
+  std::vector<int> group_of_;  // link index -> index into groups_
+  bool kinematic_only_ = false;
+  std::vector<Finding> findings_;
+};
+
+}  // namespace
+
+const char* ToString(Severity severity) {
+  switch (severity) {
+    case Severity::kNote:
+      return "note";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kError:
+      return "error";
+  }
+  return "error";
+}
+
+std::optional<Severity> ParseSeverity(std::string_view text) {
+  if (text == "note") return Severity::kNote;
+  if (text == "warning") return Severity::kWarning;
+  if (text == "error") return Severity::kError;
+  return std::nullopt;
+}
+
+const std::vector<RuleInfo>& AllRules() {
+  static const std::vector<RuleInfo> kRules = {
+      {kMassNotPositive, Severity::kError, true,
+       "An inertial's mass is negative, NaN or infinite."},
+      {kInertiaNotFinite, Severity::kError, true,
+       "An inertial has a NaN or infinite inertia entry or center of mass."},
+      {kInertiaNotPhysical, Severity::kError, true,
+       "At the center of mass, a principal moment is negative or the triangle inequality fails "
+       "(per link and per welded group)."},
+      {kMasslessMovingBody, Severity::kError, true,
+       "A welded group that moves relative to its parent has zero mass."},
+      {kZeroInertiaAboutJointAxis, Severity::kWarning, true,
+       "A revolute/continuous joint's child group has zero moment of inertia about the axis."},
+      {kInertialMissing, Severity::kWarning, true,
+       "A link has collision geometry but no <inertial>."},
+      {kProductsSignSuspect, Severity::kWarning, true,
+       "The products of inertia have the wrong sign: the inertia is invalid as written but valid "
+       "with them negated, or the geometry's products have the opposite sign."},
+      {kUnitsSuspect, Severity::kWarning, true,
+       "The radius of gyration is out of proportion with the link's geometry (unit mistake)."},
+      {kInertiaAboutOriginSuspect, Severity::kWarning, true,
+       "The inertia looks like it is about the link origin rather than the center of mass."},
+      {kInertiaExceedsGeometry, Severity::kWarning, true,
+       "No mass distribution inside the link's geometry bounding box has this inertia."},
+      {kComOutsideGeometry, Severity::kWarning, true,
+       "The center of mass is outside the bounding box of the link's geometry."},
+      {kInertiaNearBoundary, Severity::kNote, true,
+       "The inertia is physically valid only within the tolerance."},
+      {kUrdfNotLoadable, Severity::kError, true,
+       "urdfdom (ROS's URDF parser) refuses the file; its mass properties are checked from a "
+       "lenient reading."},
+      {kInertialUnreadable, Severity::kError, true,
+       "A number of a link's <inertial> cannot be read; the other links are still checked."},
+      {kIncludeUnresolved, Severity::kWarning, true,
+       "An SDF <include> cannot be resolved; the rest of the file is still checked."},
+      {"inertial-auto", Severity::kNote, true,
+       "An SDF 1.11 <inertial auto=\"true\"> was computed from the link's collisions."},
+  };
+  // The geometry rules (geometry_checks.h) run only with --geometry; listed here so that every
+  // rule id is known to the tool, the configuration file and SARIF.
+  static const std::vector<RuleInfo> kAll = [] {
+    std::vector<RuleInfo> all = kRules;
+    all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
+    all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
+    return all;
+  }();
+  return kAll;
+}
+
+std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {
+  return Checker(model, options).Run();
+}
+
+std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& options) {
+  std::vector<Finding> findings;
+  for (const ReadFinding& rf : read.findings) {
+    std::optional<Severity> severity;
+    const auto it = options.overrides.find(rf.rule);
+    if (it != options.overrides.end()) {
+      severity = it->second;
+    } else {
+      for (const RuleInfo& info : AllRules()) {
+        if (info.id == rf.rule && info.enabled_by_default) severity = info.default_severity;
+      }
+    }
+    if (!severity) continue;
+    bool ignored = false;
+    for (const Model& model : read.models) {
+      if (!rf.model.empty() && model.name != rf.model) continue;
+      const int index = rf.link.empty() ? -1 : model.FindLink(rf.link);
+      if (index < 0) continue;
+      for (const std::string& rule : model.links[index].ignored_rules) {
+        ignored = ignored || rule == "all" || rule == rf.rule;
+      }
+    }
+    if (ignored) continue;
+    Finding f;
+    f.rule = rf.rule;
+    f.severity = *severity;
+    f.model = rf.model;
+    f.link = rf.link;
+    f.location = rf.location;
+    f.message = rf.message;
+    f.values = rf.values;
+    findings.push_back(std::move(f));
+  }
+  return findings;
+}
+
+std::optional<LinkShape> CalcLinkShape(const Link& link, const LinkShapeFunction& fallback) {
+  for (const bool collision : {true, false}) {
+    const std::optional<GeometryBounds> bounds = BoundsOf(link, collision);
+    if (!bounds) continue;
+    Link primitives;  // only the chosen set, so that CalcPrimitiveMassProperties uses it
+    for (const Geometry& g : link.geometries) {
+      if (g.is_collision == collision) primitives.geometries.push_back(g);
+    }
+    const std::optional<PrimitiveMassProperties> unit =
+        CalcPrimitiveMassProperties(primitives, /*density=*/1, /*mass=*/1);
+    if (!unit) continue;
+    LinkShape shape;
+    shape.from_collision = collision;
+    shape.box_B = bounds->box_B;
+    shape.volume = unit->volume;
+    shape.p_BoBcm_B = unit->p_BoBcm_B;
+    shape.G_BBcm_B = unit->I_BBcm_B;
+    shape.kind = "primitive";
+    return shape;
+  }
+  if (!fallback) return std::nullopt;
+  try {
+    return fallback(link);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<ProductsSignEvidence> FindProductsSignEvidence(const Inertial& in,
+                                                             const LinkShape& shape) {
+  const double m = in.mass;
+  if (!(m > 0) || !std::isfinite(m)) return std::nullopt;
+  const Eigen::Matrix3d I = WrittenMatrix(in);
+  const Eigen::Matrix3d& R = in.X_BBi.R_AB;
+  const Eigen::Matrix3d G = m * (R.transpose() * shape.G_BBcm_B * R);  // in Bi
+  if (!I.allFinite() || !G.allFinite()) return std::nullopt;
+  const Eigen::Vector3d p_written(I(0, 1), I(0, 2), I(1, 2));
+  const Eigen::Vector3d p_geometry(G(0, 1), G(0, 2), G(1, 2));
+  const double mean_geometry = G.trace() / 3;
+  const double mean_written = I.trace() / 3;
+  // Products of at least 10% of the mean moment on both sides: smaller ones are within what a
+  // simplified geometry or a non-uniform density can change, and say nothing about the sign.
+  if (!(mean_geometry > 0) || !(mean_written > 0)) return std::nullopt;
+  if (p_geometry.norm() < 0.1 * mean_geometry || p_written.norm() < 0.1 * mean_written) {
+    return std::nullopt;
+  }
+  // The geometry must describe the body: every moment within a factor 2.
+  for (int i = 0; i < 3; ++i) {
+    const double d = I(i, i), g = G(i, i);
+    if (!(d > 0) || !(g > 0) || std::max(d / g, g / d) > 2) return std::nullopt;
+  }
+  // The direction of the products is what a uniform-density model gets right; their size less
+  // so (a motor inside a shell): the written products must point within about 25° of the
+  // opposite of the geometry's (cosine <= -0.9) and be within a factor 2 of their size.
+  const double size_ratio = p_written.norm() / p_geometry.norm();
+  const double cosine = p_written.dot(p_geometry) / (p_written.norm() * p_geometry.norm());
+  if (!(cosine <= -0.9) || size_ratio > 2 || size_ratio < 0.5) return std::nullopt;
+  ProductsSignEvidence evidence;
+  evidence.geometry_products = p_geometry;
+  evidence.cosine = cosine;
+  evidence.mismatch_as_written = (p_written - p_geometry).norm() / p_geometry.norm();
+  evidence.mismatch_negated = (p_written + p_geometry).norm() / p_geometry.norm();
+  return evidence;
+}
+
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link) {
+  bool has_collision = false, has_visual = false;
+  for (const Geometry& g : link.geometries) (g.is_collision ? has_collision : has_visual) = true;
+  std::optional<GeometryBounds> collision = BoundsOf(link, /*collision=*/true);
+  std::optional<GeometryBounds> visual = BoundsOf(link, /*collision=*/false);
+  // Collision geometry often covers only part of the body while the visual covers all of it:
+  // the union of both, marked partial when one of them is not all primitives.
+  if (collision && visual) {
+    collision->box_B.extend(visual->box_B);
+    collision->count += visual->count;
+    return collision;
+  }
+  if (collision) {
+    collision->partial = has_visual;
+    return collision;
+  }
+  if (visual) visual->partial = has_collision;
+  return visual;
+}
+
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
+                                                     const std::optional<LinkShape>& shape) {
+  std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link);
+  if (bounds && !bounds->partial) return bounds;
+  // A shape from the same primitives adds nothing; a mesh shape fills in what is not known.
+  if (!shape || (bounds && shape->kind != "mesh")) return bounds;
+  GeometryBounds from_shape{shape->box_B, shape->from_collision, 1, shape->kind == "mesh", false};
+  if (bounds) from_shape.box_B.extend(bounds->box_B);
+  return from_shape;
+}
+
+}  // namespace massprops

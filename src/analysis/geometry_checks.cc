@@ -1,0 +1,147 @@
+#include "massprops/analysis/geometry_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "massprops/analysis/mass_report.h"
+
+namespace massprops {
+namespace {
+
+// The severity of `rule` after overrides, or nullopt when it is disabled.
+std::optional<Severity> EffectiveSeverity(const std::string& rule, const CheckOptions& options) {
+  const auto it = options.overrides.find(rule);
+  if (it != options.overrides.end()) return it->second;
+  return Severity::kWarning;
+}
+
+bool IgnoredOnLink(const Link& link, const std::string& rule) {
+  return std::any_of(link.ignored_rules.begin(), link.ignored_rules.end(),
+                     [&](const std::string& id) { return id == rule || id == "all"; });
+}
+
+std::string Format(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.4g", value);
+  return buffer;
+}
+
+}  // namespace
+
+LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve) {
+  return [resolve](const Link& link) -> std::optional<LinkShape> {
+    std::optional<LinkGeometryInertia> g = CalcLinkGeometryInertia(link, 1.0, resolve, nullptr);
+    if (!g || !(g->volume > 0) || !std::isfinite(g->volume) || g->box_B.isEmpty()) {
+      return std::nullopt;
+    }
+    LinkShape shape;
+    shape.from_collision = g->from_collision;
+    shape.box_B = g->box_B;
+    shape.volume = g->volume;
+    shape.p_BoBcm_B = g->p_BoBcm_B;
+    shape.G_BBcm_B = g->I_BBcm_B.CopyToFullMatrix3();
+    shape.kind = "primitive";
+    for (const GeometryMassProperties& part : g->geometries) {
+      if (!part.mesh_path.empty()) shape.kind = "mesh";
+    }
+    if (!shape.G_BBcm_B.allFinite() || !shape.p_BoBcm_B.allFinite()) return std::nullopt;
+    return shape;
+  };
+}
+
+const std::vector<RuleInfo>& GeometryRules() {
+  static const std::vector<RuleInfo> rules = {
+      {kInertiaDisagreesWithGeometryRule, Severity::kWarning, false,
+       "the declared principal moments differ from those the link's geometry implies for its "
+       "mass by more than --geometry-factor (default 2x); needs --geometry"},
+      {kMeshUnreadableRule, Severity::kWarning, false,
+       "a mesh the link references cannot be found or read; needs --geometry"},
+  };
+  return rules;
+}
+
+std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckOptions& options) {
+  std::vector<Finding> findings;
+  if (!options.enabled) return findings;
+  const std::optional<Severity> disagree_severity =
+      EffectiveSeverity(kInertiaDisagreesWithGeometryRule, options.check);
+  const std::optional<Severity> unreadable_severity =
+      EffectiveSeverity(kMeshUnreadableRule, options.check);
+  MeshResolveOptions resolve = options.resolve;
+  resolve.model_file = model.file;
+  for (const Link& link : model.links) {
+    if (link.geometries.empty()) continue;
+    // mesh-unreadable: every mesh of the link, collision or visual.
+    if (unreadable_severity && !IgnoredOnLink(link, kMeshUnreadableRule)) {
+      for (const Geometry& geometry : link.geometries) {
+        if (geometry.type != Geometry::Type::kMesh) continue;
+        std::string error;
+        if (CalcGeometryMassProperties(geometry, resolve, &error)) continue;
+        Finding finding;
+        finding.rule = kMeshUnreadableRule;
+        finding.severity = *unreadable_severity;
+        finding.model = model.name;
+        finding.link = link.name;
+        finding.location = geometry.location;
+        finding.message = "link '" + link.name + "': mesh '" + geometry.uri +
+                          "' cannot be used: " + (error.empty() ? "unknown error" : error);
+        findings.push_back(std::move(finding));
+      }
+    }
+    // inertia-disagrees-with-geometry.
+    if (!disagree_severity || IgnoredOnLink(link, kInertiaDisagreesWithGeometryRule)) continue;
+    if (!link.inertial || !(link.inertial->mass > 0)) continue;
+    const LinkGeometryComparison comparison = CompareLinkWithGeometry(link, resolve);
+    if (!comparison.error.empty()) continue;
+    double worst = 1;
+    int worst_k = -1;
+    const Eigen::Vector3d& declared = comparison.declared_moments;
+    for (int k = 0; k < 3; ++k) {
+      const double g = comparison.geometry.principal_moments(k);
+      const double d = declared(k);
+      double ratio;
+      if (g > 0 && d > 0) {
+        ratio = std::max(d / g, g / d);
+      } else if (g == 0 && d == 0) {
+        ratio = 1;
+      } else {
+        ratio = HUGE_VAL;
+      }
+      if (ratio > worst) {
+        worst = ratio;
+        worst_k = k;
+      }
+    }
+    if (!(worst > options.factor) || worst_k < 0) continue;
+    const double g = comparison.geometry.principal_moments(worst_k);
+    Finding finding;
+    finding.rule = kInertiaDisagreesWithGeometryRule;
+    finding.severity = *disagree_severity;
+    finding.model = model.name;
+    finding.link = link.name;
+    finding.location = link.inertial->inertia_location.line > 0 ? link.inertial->inertia_location
+                                                                : link.inertial->location;
+    finding.message = "link '" + link.name + "': principal moment " + std::to_string(worst_k + 1) +
+                      " of the declared inertia is " + Format(declared(worst_k)) +
+                      " kg m^2, but its " + (comparison.from_collision ? "collision" : "visual") +
+                      " geometry implies " + Format(g) + " kg m^2 for mass " +
+                      Format(link.inertial->mass) + " kg (a factor " + Format(worst) +
+                      ", more than " + Format(options.factor) + ")";
+    for (const LinkGeometryComparison::Mesh& mesh : comparison.meshes) {
+      const std::string note = DescribeMeshDiagnostics(mesh.diagnostics);
+      if (!note.empty()) finding.message += "; mesh '" + mesh.uri + "': " + note;
+    }
+    finding.values = {{"mass", link.inertial->mass},
+                      {"declared_moment", declared(worst_k)},
+                      {"geometry_moment", g},
+                      {"factor", worst}};
+    findings.push_back(std::move(finding));
+  }
+  return findings;
+}
+
+}  // namespace massprops

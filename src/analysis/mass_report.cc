@@ -1,0 +1,482 @@
+#include "massprops/analysis/mass_report.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "analysis/name_index.h"
+#include "massprops/core/principal_axes.h"
+
+namespace massprops {
+namespace {
+
+// The tree of the model as welded_groups.cc sees it: each link's parent joint is the first joint
+// in file order that names it as child (self-loops ignored); its parent link is -1 when that
+// joint's parent is not a link of the model (SDF "world").
+struct ModelIndex {
+  explicit ModelIndex(const Model& model)
+      : link(static_cast<int>(model.links.size()),
+             [&model](int i) -> const std::string& { return model.links[i].name; }) {}
+  internal::NameIndex link;
+  std::vector<int> parent_joint;
+  std::vector<int> parent_link;
+  // Children of link p: child_list[child_start[p] .. child_start[p + 1]).
+  std::vector<int> child_start;
+  std::vector<int> child_list;
+
+  int FindLink(const std::string& name) const { return link.Find(name); }
+  bool IsFixedChild(const Model& model, int c) const {
+    return parent_joint[c] >= 0 && model.joints[parent_joint[c]].type == Joint::Type::kFixed;
+  }
+};
+
+ModelIndex BuildIndex(const Model& model) {
+  ModelIndex index(model);
+  const int n = static_cast<int>(model.links.size());
+  index.parent_joint.assign(n, -1);
+  index.parent_link.assign(n, -1);
+  for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
+    const Joint& joint = model.joints[j];
+    const int child = index.FindLink(joint.child);
+    if (child < 0 || index.parent_joint[child] >= 0) continue;
+    const int parent = index.FindLink(joint.parent);
+    if (parent == child) continue;
+    index.parent_joint[child] = j;
+    index.parent_link[child] = parent;
+  }
+  index.child_start.assign(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    if (index.parent_link[i] >= 0) ++index.child_start[index.parent_link[i] + 1];
+  }
+  for (int i = 0; i < n; ++i) index.child_start[i + 1] += index.child_start[i];
+  index.child_list.resize(index.child_start[n]);
+  std::vector<int> fill(index.child_start.begin(), index.child_start.end() - 1);
+  for (int i = 0; i < n; ++i) {
+    if (index.parent_link[i] >= 0) index.child_list[fill[index.parent_link[i]]++] = i;
+  }
+  return index;
+}
+
+// Poses X_AL of links L in the frame of an anchor link A at the configuration, computed on demand
+// by walking toward A and memoized, so the cost is that of the paths actually asked for.
+class PoseSolver {
+ public:
+  PoseSolver(const Model& model, const ModelIndex& index,
+             const std::unordered_map<int, double>& joint_values, int anchor)
+      : model_(model), index_(index), joint_values_(joint_values), anchor_(anchor) {}
+
+  // X_AL; nullopt when L cannot be reached from A going down the tree.
+  std::optional<Pose> Get(int link) {
+    if (anchor_ < 0 || link < 0) return std::nullopt;
+    if (link == anchor_) return Pose();
+    if (known_.empty()) {  // First use: one slot per link (no hashing, no node per pose).
+      known_.assign(model_.links.size(), 0);
+      memo_.resize(model_.links.size());
+    }
+    std::vector<int> path;
+    int cur = link;
+    std::optional<Pose> base;
+    const std::size_t n = model_.links.size();
+    for (;;) {
+      if (cur == anchor_) {
+        base = Pose();
+        break;
+      }
+      if (cur >= 0 && known_[cur]) {
+        base = memo_[cur];
+        break;
+      }
+      if (cur < 0 || path.size() > n) break;  // Above the root, or a cycle: unreachable.
+      path.push_back(cur);
+      cur = index_.parent_link[cur];
+    }
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      if (base) {
+        const int j = index_.parent_joint[*it];
+        const auto q = joint_values_.find(j);
+        base = *base * CalcJointPose(model_.joints[j], q == joint_values_.end() ? 0.0 : q->second);
+      }
+      known_[*it] = 1;
+      memo_[*it] = base;
+    }
+    return base;
+  }
+
+ private:
+  const Model& model_;
+  const ModelIndex& index_;
+  const std::unordered_map<int, double>& joint_values_;
+  int anchor_;
+  std::vector<char> known_;                // per link: memo_ holds its pose (or nullopt)
+  std::vector<std::optional<Pose>> memo_;  // per link
+};
+
+// The group of links welded to `root` below it (root first, the others in file order), with
+// their poses in root's frame. Follows only fixed joints down the tree.
+WeldedGroup CollectGroupBelow(const Model& model, const ModelIndex& index, int root) {
+  std::vector<std::pair<int, Pose>> members{{root, Pose()}};
+  std::unordered_set<int> seen{root};
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const int p = members[k].first;
+    for (int c_pos = index.child_start[p]; c_pos < index.child_start[p + 1]; ++c_pos) {
+      const int c = index.child_list[c_pos];
+      if (!index.IsFixedChild(model, c) || !seen.insert(c).second) continue;
+      members.emplace_back(c, members[k].second * model.joints[index.parent_joint[c]].X_PC);
+    }
+  }
+  std::sort(members.begin() + 1, members.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  WeldedGroup group;
+  group.root_link = model.links[root].name;
+  for (const auto& [link, X_RL] : members) {
+    group.links.push_back(link);
+    group.X_RL.push_back(X_RL);
+  }
+  group.parent_joint = index.parent_joint[root];
+  return group;
+}
+
+// The body's mass properties given in frame A, re-expressed in frame F (X_FA given).
+BodyMassProperties ReExpress(const BodyMassProperties& body_A, const std::string& frame_F,
+                             const Pose& X_FA) {
+  const Eigen::Matrix3d& R = X_FA.R_AB;
+  Eigen::Matrix3d I_F = R * body_A.inertia_about_com * R.transpose();
+  I_F = (0.5 * (I_F + I_F.transpose())).eval();
+  return MakeBodyMassProperties(frame_F, body_A.mass, X_FA.p_AB + R * body_A.com, I_F);
+}
+
+BodyMassProperties FromComposite(const std::string& frame, const CompositeInertia& c) {
+  return MakeBodyMassProperties(frame, c.mass, c.p_RoScm_R, c.I_SScm_R);
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> CalcEquivalentBox(double mass, const Eigen::Vector3d& moments) {
+  if (!(mass > 0) || !std::isfinite(mass) || !moments.allFinite()) return std::nullopt;
+  const double tolerance = 32 * std::numeric_limits<double>::epsilon() * moments.cwiseAbs().sum();
+  if ((moments.array() < -tolerance).any()) return std::nullopt;
+  Eigen::Vector3d sides;
+  for (int k = 0; k < 3; ++k) {
+    const double excess = moments.sum() - 2 * moments(k);  // I_i + I_j − I_k
+    if (excess < -tolerance) return std::nullopt;
+    sides(k) = std::sqrt(6 * std::max(excess, 0.0) / mass);
+  }
+  return sides;
+}
+
+BodyMassProperties MakeBodyMassProperties(const std::string& frame, double mass,
+                                          const Eigen::Vector3d& p_FoScm_F,
+                                          const Eigen::Matrix3d& I_SScm_F) {
+  BodyMassProperties body;
+  body.frame = frame;
+  body.mass = mass;
+  body.com = p_FoScm_F;
+  body.inertia_about_com = I_SScm_F;
+  if (I_SScm_F.allFinite()) {
+    const auto [moments, axes] = CalcSymmetricEigensystem<double>(I_SScm_F);
+    body.principal_moments = moments;
+    body.principal_axes = axes;
+  } else {
+    body.principal_moments.setConstant(std::numeric_limits<double>::quiet_NaN());
+    body.principal_axes.setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
+  body.equivalent_box = CalcEquivalentBox(mass, body.principal_moments);
+  const double shift = mass * p_FoScm_F.squaredNorm();
+  if (mass > 0 && std::isfinite(shift) && shift > 0 && std::isfinite(I_SScm_F.trace())) {
+    // The floor eps·m·|c|² caps the estimate at all ~15.7 digits of a double (a point mass).
+    const double floor = std::max(std::numeric_limits<double>::min(),
+                                  std::numeric_limits<double>::epsilon() * shift);
+    body.digits_lost = std::max(0.0, std::log10(shift / std::max(I_SScm_F.trace(), floor)));
+  }
+  return body;
+}
+
+Pose CalcJointPose(const Joint& joint, double q) {
+  if (q == 0) return joint.X_PC;
+  Pose X_CCq;  // the child frame at q, in the child frame at 0
+  switch (joint.type) {
+    case Joint::Type::kRevolute:
+    case Joint::Type::kContinuous:
+      X_CCq.R_AB = Eigen::AngleAxisd(q, joint.axis).toRotationMatrix();
+      break;
+    case Joint::Type::kPrismatic:
+      X_CCq.p_AB = joint.axis * q;
+      break;
+    default:
+      throw std::invalid_argument("joint '" + joint.name + "' of type '" + joint.type_name +
+                                  "' cannot be given a value");
+  }
+  return joint.X_PC * X_CCq;
+}
+
+bool ComputeMassReport(const Model& model, const MassReportOptions& options,
+                       ModelMassReport* report, std::string* error) {
+  *report = ModelMassReport();
+  report->name = model.name;
+  report->file = model.file;
+  if (!options.only.empty() && !options.subtree.empty()) {
+    *error = "--only and --subtree cannot be combined";
+    return false;
+  }
+  const ModelIndex index = BuildIndex(model);
+
+  std::unordered_map<int, double> joint_values;
+  std::optional<internal::NameIndex> joint_index;  // only when joint values are given
+  if (!options.joint_values.empty()) {
+    joint_index.emplace(static_cast<int>(model.joints.size()),
+                        [&model](int j) -> const std::string& { return model.joints[j].name; });
+  }
+  for (const auto& [name, value] : options.joint_values) {
+    const int joint_number = joint_index->Find(name);
+    if (joint_number < 0) {
+      *error = "model '" + model.name + "' has no joint named '" + name + "'";
+      return false;
+    }
+    const Joint& joint = model.joints[joint_number];
+    if (joint.type == Joint::Type::kFixed) {
+      *error = "joint '" + name + "' is fixed: it has no value to set";
+      return false;
+    }
+    if (joint.type != Joint::Type::kRevolute && joint.type != Joint::Type::kContinuous &&
+        joint.type != Joint::Type::kPrismatic) {
+      *error = "joint '" + name + "' is of type '" + joint.type_name +
+               "': only revolute, continuous and prismatic joints take a value";
+      return false;
+    }
+    if (!std::isfinite(value)) {
+      *error = "the value of joint '" + name + "' is not finite";
+      return false;
+    }
+    joint_values.emplace(joint_number, value);
+  }
+  auto find_link = [&](const std::string& name, const char* what, int* out) {
+    *out = index.FindLink(name);
+    if (*out < 0)
+      *error = std::string(what) + ": model '" + model.name + "' has no link '" + name + "'";
+    return *out >= 0;
+  };
+  int frame = -1;
+  if (!options.frame.empty() && !find_link(options.frame, "--frame", &frame)) return false;
+  int subtree = -1;
+  if (!options.subtree.empty() && !find_link(options.subtree, "--subtree", &subtree)) return false;
+  std::vector<int> only;
+  for (const std::string& name : options.only) {
+    int link = -1;
+    if (!find_link(name, "--only", &link)) return false;
+    if (std::find(only.begin(), only.end(), link) == only.end()) only.push_back(link);
+  }
+
+  const int root = index.FindLink(model.root_link);
+  PoseSolver root_poses(model, index, joint_values, root);
+  std::optional<Pose> X_WF;
+  if (frame >= 0) {
+    X_WF = root_poses.Get(frame);
+    if (!X_WF) {
+      *error = "--frame: link '" + options.frame + "' is not connected to the root link '" +
+               model.root_link + "'";
+      return false;
+    }
+  }
+  // With --frame: whether link A's pose is known (else sets *error); in_frame re-expresses.
+  auto express = [&](int link_A) -> bool {
+    if (frame < 0 || link_A == frame) return true;
+    if (!root_poses.Get(link_A)) {
+      *error = "--frame: link '" + model.links[link_A].name +
+               "' is not connected to the root link '" + model.root_link + "'";
+      return false;
+    }
+    return true;
+  };
+  auto in_frame = [&](const BodyMassProperties& body_A, int link_A) {
+    if (frame < 0 || link_A == frame) return body_A;
+    const Pose X_FA = X_WF->Inverse() * *root_poses.Get(link_A);
+    return ReExpress(body_A, options.frame, X_FA);
+  };
+
+  // Which links and groups are reported.
+  std::vector<int> links;
+  std::vector<WeldedGroup> groups;
+  if (!only.empty()) {
+    links = only;
+    std::unordered_set<int> group_roots;
+    for (int link : only) {
+      int top = link;
+      for (std::size_t steps = 0; index.IsFixedChild(model, top) && steps <= model.links.size();
+           ++steps) {
+        const int up = index.parent_link[top];
+        if (up < 0) break;
+        top = up;
+      }
+      if (group_roots.insert(top).second) groups.push_back(CollectGroupBelow(model, index, top));
+    }
+  } else if (subtree >= 0) {
+    links.push_back(subtree);
+    std::unordered_set<int> seen{subtree};
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      const int p = links[k];
+      for (int pos = index.child_start[p]; pos < index.child_start[p + 1]; ++pos) {
+        if (seen.insert(index.child_list[pos]).second) links.push_back(index.child_list[pos]);
+      }
+    }
+    std::sort(links.begin(), links.end());
+    for (int link : links) {
+      if (link == subtree || !index.IsFixedChild(model, link)) {
+        groups.push_back(CollectGroupBelow(model, index, link));
+      }
+    }
+  } else {
+    links.resize(model.links.size());
+    for (std::size_t i = 0; i < links.size(); ++i) links[i] = static_cast<int>(i);
+    groups = FindWeldedGroups(model);
+  }
+
+  // Reserved: LinkMassReport is large (it may hold a geometry comparison) and its implicit move
+  // may copy, so growing the vector re-copied every entry so far at each reallocation: with the
+  // page faults of the new blocks, the superlinear step of the report (docs/benchmarks.md).
+  report->links.reserve(links.size());
+  report->welded_groups.reserve(groups.size());
+  for (int link : links) {
+    const MassProperties props = LinkMassProperties(model.links[link], model.format);
+    const BodyMassProperties body =
+        MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
+    if (!express(link)) return false;
+    LinkMassReport entry;
+    entry.name = model.links[link].name;
+    entry.properties = in_frame(body, link);
+    if (options.geometry != nullptr) {
+      entry.geometry = CompareLinkWithGeometry(model.links[link], *options.geometry);
+    }
+    report->links.push_back(std::move(entry));
+  }
+  for (const WeldedGroup& group : groups) {
+    GroupMassReport entry;
+    entry.root_link = group.root_link;
+    for (int link : group.links) entry.links.push_back(model.links[link].name);
+    const BodyMassProperties body =
+        FromComposite(group.root_link, CalcCompositeInertia(model, group));
+    if (!express(group.links.front())) return false;
+    entry.properties = in_frame(body, group.links.front());
+    report->welded_groups.push_back(std::move(entry));
+  }
+  if (!only.empty()) return true;
+
+  // The total: every link of the model (or subtree) at its pose in the anchor's frame.
+  const int anchor = subtree >= 0 ? subtree : root;
+  PoseSolver anchor_poses(model, index, joint_values, anchor);
+  std::vector<MassProperties> parts;
+  parts.reserve(links.size());
+  for (int link : links) {
+    const std::optional<Pose> X_AL = anchor_poses.Get(link);
+    if (!X_AL) {
+      report->unreachable_links.push_back(model.links[link].name);
+      continue;
+    }
+    const MassProperties props_L = LinkMassProperties(model.links[link], model.format);
+    MassProperties props_A;
+    props_A.mass = props_L.mass;
+    props_A.p_FoScm_F = X_AL->p_AB + X_AL->R_AB * props_L.p_FoScm_F;
+    props_A.I_SScm_F = X_AL->R_AB * props_L.I_SScm_F * X_AL->R_AB.transpose();
+    props_A.I_SScm_F = (0.5 * (props_A.I_SScm_F + props_A.I_SScm_F.transpose())).eval();
+    parts.push_back(props_A);
+  }
+  const std::string anchor_name = anchor >= 0 ? model.links[anchor].name : model.root_link;
+  const BodyMassProperties total = FromComposite(anchor_name, ComposeMassProperties(parts));
+  if (anchor >= 0 && !express(anchor)) return false;
+  report->total = anchor >= 0 ? in_frame(total, anchor) : total;
+  return true;
+}
+
+// ------------------------------------------------------------------------------ geometry
+std::optional<double> CalcPrincipalAxisAngle(const Eigen::Vector3d& moments_A,
+                                             const Eigen::Matrix3d& axes_A,
+                                             const Eigen::Vector3d& moments_B,
+                                             const Eigen::Matrix3d& axes_B, double rel_gap) {
+  // Which adjacent pairs (0-1, 1-2) of ascending moments count as equal.
+  auto equal_pairs = [rel_gap](const Eigen::Vector3d& m, bool eq[2]) {
+    const double scale = std::max({std::abs(m(0)), std::abs(m(1)), std::abs(m(2))});
+    eq[0] = !(std::abs(m(1) - m(0)) > rel_gap * scale);
+    eq[1] = !(std::abs(m(2) - m(1)) > rel_gap * scale);
+  };
+  bool eq_A[2], eq_B[2];
+  equal_pairs(moments_A, eq_A);
+  equal_pairs(moments_B, eq_B);
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  if (!eq_A[0] && !eq_A[1] && !eq_B[0] && !eq_B[1]) {
+    // R = A^T B maps B's axes into A's; flipping two axes of B keeps it a rotation. The rotation
+    // angle θ satisfies trace(R) = 1 + 2 cos θ.
+    const Eigen::Matrix3d R = axes_A.transpose() * axes_B;
+    double best = 180;
+    const double signs[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    for (const auto& d : signs) {
+      const double trace = d[0] * R(0, 0) + d[1] * R(1, 1) + d[2] * R(2, 2);
+      const double c = std::clamp((trace - 1) / 2, -1.0, 1.0);
+      best = std::min(best, std::acos(c) * kDegrees);
+    }
+    return best;
+  }
+  // Exactly one equal pair in each, the same pair: the remaining distinct axis is defined.
+  if (eq_A[0] != eq_A[1] && eq_B[0] == eq_A[0] && eq_B[1] == eq_A[1]) {
+    const int k = eq_A[0] ? 2 : 0;
+    const double c = std::min(1.0, std::abs(axes_A.col(k).dot(axes_B.col(k))));
+    return std::acos(c) * kDegrees;
+  }
+  return std::nullopt;
+}
+
+LinkGeometryComparison CompareLinkWithGeometry(const Link& link,
+                                               const MeshResolveOptions& options) {
+  LinkGeometryComparison result;
+  const double mass = link.inertial ? link.inertial->mass : 0;
+  if (!(mass > 0) || !std::isfinite(mass)) {
+    result.error = "the link declares no positive mass to give its geometry";
+    return result;
+  }
+  std::string error;
+  const std::optional<LinkGeometryInertia> implied =
+      CalcLinkGeometryInertia(link, mass, options, &error);
+  if (!implied) {
+    result.error = error.empty() ? "the link's geometry gives no inertia" : error;
+    return result;
+  }
+  result.from_collision = implied->from_collision;
+  // implied->geometries are the link's geometries of the chosen kind, in file order.
+  std::size_t part = 0;
+  for (const Geometry& g : link.geometries) {
+    if (g.is_collision != implied->from_collision) continue;
+    if (part >= implied->geometries.size()) break;
+    const GeometryMassProperties& used = implied->geometries[part++];
+    if (g.type == Geometry::Type::kMesh && used.mesh_diagnostics) {
+      result.meshes.push_back({g.uri, used.mesh_path, *used.mesh_diagnostics});
+    }
+  }
+  result.geometry = MakeBodyMassProperties(link.name, mass, implied->p_BoBcm_B,
+                                           implied->I_BBcm_B.CopyToFullMatrix3());
+  // The declared inertia, about its center of mass, expressed in B: R_BBi I_Bi R_BBi^T.
+  const Inertial& in = *link.inertial;
+  Eigen::Matrix3d I_Bi;
+  I_Bi << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  const Eigen::Matrix3d& R = in.X_BBi.R_AB;
+  const BodyMassProperties declared =
+      MakeBodyMassProperties(link.name, mass, in.X_BBi.p_AB, R * I_Bi * R.transpose());
+  result.declared_moments = declared.principal_moments;
+  for (int k = 0; k < 3; ++k) {
+    const double g = result.geometry.principal_moments(k);
+    result.moment_rel_diff(k) =
+        g != 0 ? (declared.principal_moments(k) - g) / g : std::numeric_limits<double>::quiet_NaN();
+  }
+  result.axis_angle_deg =
+      CalcPrincipalAxisAngle(declared.principal_moments, declared.principal_axes,
+                             result.geometry.principal_moments, result.geometry.principal_axes);
+  return result;
+}
+
+}  // namespace massprops

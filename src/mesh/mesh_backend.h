@@ -1,0 +1,39 @@
+#pragma once
+// Private to the library: the code that needs the mesh libraries (assimp, with draco; qhull) is
+// a separate shared object, libmassprops_meshlibs.so (src/mesh/mesh_libraries.cc),
+// loaded with dlopen the first time a mesh is read or a convex hull computed. A process that
+// never reads a mesh (`massprops check` without --geometry) neither maps those libraries nor
+// binds their symbols: about half of the tool's start-up time (docs/benchmarks.md). Static builds
+// (BUILD_SHARED_LIBS=OFF) link it into the library instead (MASSPROPS_MESH_BACKEND_STATIC).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "massprops/mesh/mesh_inertia.h"
+
+namespace massprops::internal {
+
+/// What the mesh libraries do for massprops. Version 1; a changed layout gets a new entry name.
+struct MeshBackend {
+  /// Reads the mesh file at `path` with assimp (triangulated, identical vertices joined, every
+  /// node's transform applied, mirrored nodes re-wound). Returns false and sets *error (which
+  /// names the file) when assimp cannot read it or it holds no triangle. Never throws.
+  bool (*load_mesh)(const char* path, TriangleMesh* mesh, std::string* error);
+  /// qhull ("Qt") on `count` points (x, y, z consecutive): the hull's triangles as indices into
+  /// the points, and each triangle's outward normal. Returns qhull's exit code (0 on success);
+  /// *messages gets qhull's messages. Never throws.
+  int (*convex_hull)(const double* points, int count, std::vector<std::array<int, 3>>* triangles,
+                     std::vector<std::array<double, 3>>* normals, std::string* messages);
+};
+
+/// The mesh libraries, loaded on the first call (thread-safe); later calls return the same.
+/// Returns null and sets *error (if not null) when the shared object cannot be loaded; the
+/// message names it and says why (dlerror).
+const MeshBackend* GetMeshBackend(std::string* error);
+
+}  // namespace massprops::internal
+
+/// The entry point of libmassprops_meshlibs.so (C linkage: found with dlsym).
+extern "C" const massprops::internal::MeshBackend* massprops_mesh_backend_v1();

@@ -1,0 +1,476 @@
+#include "massprops/mesh/mesh_loader.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include "massprops/core/unit_inertia.h"
+#include "mesh/mesh_backend.h"
+
+namespace massprops {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool StartsWith(const std::string& text, const std::string& prefix) {
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+bool IsRegularFile(const fs::path& path) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec);
+}
+
+bool IsDirectory(const fs::path& path) {
+  std::error_code ec;
+  return fs::is_directory(path, ec);
+}
+
+// The folders of a ':'-separated environment variable (empty entries skipped).
+std::vector<std::string> SplitEnvironmentPath(const char* variable, const std::string& suffix) {
+  std::vector<std::string> folders;
+  const char* value = std::getenv(variable);
+  if (value == nullptr) return folders;
+  std::string text(value);
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(':', begin), text.size());
+    if (end > begin) folders.push_back(text.substr(begin, end - begin) + suffix);
+    begin = end + 1;
+  }
+  return folders;
+}
+
+// The <name> of the package.xml in `folder`, or "" if there is none.
+std::string PackageXmlName(const fs::path& folder) {
+  const fs::path manifest = folder / "package.xml";
+  if (!IsRegularFile(manifest)) return "";
+  tinyxml2::XMLDocument document;
+  if (document.LoadFile(manifest.string().c_str()) != tinyxml2::XML_SUCCESS) return "";
+  const tinyxml2::XMLElement* package = document.FirstChildElement("package");
+  const tinyxml2::XMLElement* name = package ? package->FirstChildElement("name") : nullptr;
+  if (name == nullptr || name->GetText() == nullptr) return "";
+  std::string text = name->GetText();
+  const auto first = text.find_first_not_of(" \t\r\n");
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+}
+
+// Folders that are the package `name` under search folder P: P/name, P itself or a child of P
+// whose package.xml names it.
+std::vector<fs::path> PackageRootsIn(const fs::path& folder, const std::string& name) {
+  std::vector<fs::path> roots;
+  if (!IsDirectory(folder)) return roots;
+  if (IsDirectory(folder / name)) roots.push_back(folder / name);
+  if (PackageXmlName(folder) == name) roots.push_back(folder);
+  std::error_code ec;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code entry_ec;
+    if (!it->is_directory(entry_ec) || it->path().filename() == name) continue;
+    if (PackageXmlName(it->path()) == name) roots.push_back(it->path());
+  }
+  return roots;
+}
+
+fs::path BaseFolder(const MeshResolveOptions& options) {
+  if (options.model_file.empty() || options.model_file == "-") return fs::current_path();
+  fs::path folder = fs::path(options.model_file).parent_path();
+  return folder.empty() ? fs::path(".") : folder;
+}
+
+std::string JoinList(const std::vector<std::string>& items) {
+  if (items.empty()) return "(no search path)";
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::optional<std::string> CheckFile(const fs::path& path, const std::string& uri,
+                                     std::string* error) {
+  if (IsRegularFile(path)) return path.lexically_normal().string();
+  if (error) {
+    *error = "mesh '" + uri + "': " + (IsDirectory(path) ? "is a directory: " : "no such file: ") +
+             path.string();
+  }
+  return std::nullopt;
+}
+
+// `rest` of "SCHEME://NAME/rest" split into NAME and the path after it.
+std::pair<std::string, std::string> SplitNameAndPath(const std::string& rest) {
+  const std::size_t slash = rest.find('/');
+  if (slash == std::string::npos) return {rest, ""};
+  return {rest.substr(0, slash), rest.substr(slash + 1)};
+}
+
+std::string Describe(const Geometry& geometry) {
+  std::ostringstream out;
+  out << (geometry.is_collision ? "collision" : "visual");
+  if (geometry.location.line > 0) out << " at line " << geometry.location.line;
+  if (geometry.type == Geometry::Type::kMesh) out << " (mesh '" << geometry.uri << "')";
+  return out.str();
+}
+
+}  // namespace
+
+std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshResolveOptions& options,
+                                          std::string* error) {
+  if (uri.empty()) {
+    if (error) *error = "mesh with an empty filename";
+    return std::nullopt;
+  }
+  const bool is_package = StartsWith(uri, "package://");
+  const bool is_model = StartsWith(uri, "model://");
+  if (is_package || is_model) {
+    const auto [name, rest] = SplitNameAndPath(uri.substr(is_package ? 10 : 8));
+    if (name.empty()) {
+      if (error) *error = "mesh '" + uri + "': no package or model name";
+      return std::nullopt;
+    }
+    // "package://x/../../etc/passwd" names no file of package x: refused, never looked up.
+    const fs::path inside = fs::path(std::string(rest)).lexically_normal();
+    if (inside.is_absolute() || (!inside.empty() && *inside.begin() == "..")) {
+      if (error) {
+        *error = "mesh '" + uri + "': the path leaves the " +
+                 std::string(is_package ? "package" : "model") + " folder ('..'); not read";
+      }
+      return std::nullopt;
+    }
+    std::vector<std::string> folders = is_package ? options.package_paths : options.model_paths;
+    if (options.use_environment) {
+      const std::vector<std::pair<const char*, const char*>> variables =
+          is_package
+              ? std::vector<std::pair<const char*, const char*>>{{"ROS_PACKAGE_PATH", ""},
+                                                                 {"AMENT_PREFIX_PATH", "/share"}}
+              : std::vector<std::pair<const char*, const char*>>{{"SDF_PATH", ""},
+                                                                 {"GZ_SIM_RESOURCE_PATH", ""},
+                                                                 {"IGN_GAZEBO_RESOURCE_PATH", ""},
+                                                                 {"GAZEBO_MODEL_PATH", ""}};
+      for (const auto& [variable, suffix] : variables) {
+        for (auto& folder : SplitEnvironmentPath(variable, suffix)) folders.push_back(folder);
+      }
+    }
+    std::vector<std::string> found_without_file;
+    for (const auto& folder : folders) {
+      std::vector<fs::path> roots;
+      if (is_package) {
+        roots = PackageRootsIn(folder, name);
+      } else if (IsDirectory(fs::path(folder) / name)) {
+        roots.push_back(fs::path(folder) / name);
+      }
+      for (const auto& root : roots) {
+        const fs::path candidate = root / rest;
+        if (IsRegularFile(candidate)) return candidate.lexically_normal().string();
+        found_without_file.push_back(candidate.string());
+      }
+    }
+    if (error) {
+      const char* kind = is_package ? "package" : "model";
+      if (!found_without_file.empty()) {
+        *error = "mesh '" + uri + "': " + kind + " '" + name +
+                 "' found but the file is not there: " + JoinList(found_without_file);
+      } else {
+        *error =
+            "mesh '" + uri + "': " + kind + " '" + name + "' not found in " + JoinList(folders);
+      }
+    }
+    return std::nullopt;
+  }
+  if (StartsWith(uri, "file://")) {
+    fs::path path(uri.substr(7));
+    if (path.is_relative()) path = BaseFolder(options) / path;
+    return CheckFile(path, uri, error);
+  }
+  const std::size_t scheme_end = uri.find("://");
+  if (scheme_end != std::string::npos && scheme_end > 0 &&
+      uri.find('/') > scheme_end) {  // "http://...", not "dir/a://b"
+    if (error) {
+      *error = "mesh '" + uri + "': the URI scheme '" + uri.substr(0, scheme_end) +
+               "' is not supported (package://, model://, file:// and paths are)";
+    }
+    return std::nullopt;
+  }
+  fs::path path(uri);
+  if (path.is_relative()) path = BaseFolder(options) / path;
+  return CheckFile(path, uri, error);
+}
+
+bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error) {
+  if (!IsRegularFile(path)) {
+    if (error) *error = "mesh file '" + path + "' does not exist or is not a regular file";
+    return false;
+  }
+  std::error_code ec;
+  if (fs::file_size(path, ec) == 0 || ec) {
+    if (error) *error = "mesh file '" + path + "' is empty or unreadable";
+    return false;
+  }
+  std::string why;
+  const internal::MeshBackend* backend = internal::GetMeshBackend(&why);
+  if (backend == nullptr) {
+    if (error) *error = "mesh file '" + path + "' cannot be read: " + why;
+    return false;
+  }
+  return backend->load_mesh(path.c_str(), mesh, error);
+}
+
+TriangleMesh ScaleMesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
+  TriangleMesh scaled;
+  scaled.vertices.reserve(mesh.vertices.size());
+  for (const auto& v : mesh.vertices) scaled.vertices.push_back(v.cwiseProduct(scale));
+  scaled.triangles = mesh.triangles;
+  if (scale.x() * scale.y() * scale.z() < 0) {
+    for (auto& t : scaled.triangles) std::swap(t[1], t[2]);
+  }
+  return scaled;
+}
+
+// ------------------------------------------------------------------------------- MeshCache
+
+std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(const std::string& path,
+                                                          std::string* error) {
+  auto found = meshes_.find(path);
+  if (found == meshes_.end()) {
+    Entry entry;
+    auto mesh = std::make_shared<TriangleMesh>();
+    if (LoadMeshFile(path, mesh.get(), &entry.error)) entry.mesh = std::move(mesh);
+    ++files_loaded_;
+    found = meshes_.emplace(path, std::move(entry)).first;
+  }
+  if (!found->second.mesh && error) *error = found->second.error;
+  return found->second.mesh;
+}
+
+std::shared_ptr<const TriangleMesh> MeshCache::Load(const std::string& path, std::string* error) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return LoadLocked(path, error);
+}
+
+std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& path,
+                                                            const Eigen::Vector3d& scale,
+                                                            const MeshInertiaOptions& options,
+                                                            std::string* error) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto key = std::make_tuple(path, scale.x(), scale.y(), scale.z(),
+                                   static_cast<int>(options.open_mesh_model),
+                                   options.shell_thickness, options.closure_tolerance);
+  if (auto found = properties_.find(key); found != properties_.end()) return found->second;
+  const std::shared_ptr<const TriangleMesh> mesh = LoadLocked(path, error);
+  if (!mesh) return std::nullopt;
+  MeshInertiaOptions unit_density = options;
+  unit_density.density = 1;
+  try {
+    MeshMassProperties properties = CalcMeshMassProperties(ScaleMesh(*mesh, scale), unit_density);
+    properties_.emplace(key, properties);
+    return properties;
+  } catch (const std::exception& e) {
+    if (error) *error = "mesh file '" + path + "': " + e.what();
+    return std::nullopt;
+  }
+}
+
+int MeshCache::files_loaded() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return files_loaded_;
+}
+
+// ------------------------------------------------------------------------------- geometry
+
+std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry& geometry,
+                                                                 const MeshResolveOptions& options,
+                                                                 std::string* error) {
+  GeometryMassProperties result;
+  Eigen::Vector3d p_GoGcm_G = Eigen::Vector3d::Zero();
+  RotationalInertia<double> I_GGcm_G;
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  try {
+    switch (geometry.type) {
+      case Geometry::Type::kBox: {
+        const Eigen::Vector3d& s = geometry.size;
+        const UnitInertia<double> G = UnitInertia<double>::SolidBox(s.x(), s.y(), s.z());
+        result.volume = s.x() * s.y() * s.z();
+        I_GGcm_G = G * result.volume;
+        break;
+      }
+      case Geometry::Type::kCylinder: {
+        const double r = geometry.radius, L = geometry.length;
+        const UnitInertia<double> G = UnitInertia<double>::SolidCylinder(r, L, z);
+        result.volume = kPi * r * r * L;
+        I_GGcm_G = G * result.volume;
+        break;
+      }
+      case Geometry::Type::kSphere: {
+        const double r = geometry.radius;
+        const UnitInertia<double> G = UnitInertia<double>::SolidSphere(r);
+        result.volume = 4.0 / 3.0 * kPi * r * r * r;
+        I_GGcm_G = G * result.volume;
+        break;
+      }
+      case Geometry::Type::kCapsule: {
+        const double r = geometry.radius, L = geometry.length;
+        const UnitInertia<double> G = UnitInertia<double>::SolidCapsule(r, L, z);
+        result.volume = kPi * r * r * L + 4.0 / 3.0 * kPi * r * r * r;
+        I_GGcm_G = G * result.volume;
+        break;
+      }
+      case Geometry::Type::kEllipsoid: {
+        const Eigen::Vector3d& a = geometry.radii;
+        const UnitInertia<double> G = UnitInertia<double>::SolidEllipsoid(a.x(), a.y(), a.z());
+        result.volume = 4.0 / 3.0 * kPi * a.x() * a.y() * a.z();
+        I_GGcm_G = G * result.volume;
+        break;
+      }
+      case Geometry::Type::kMesh: {
+        std::string reason;
+        // A relative URI is relative to the file that holds the geometry: for an SDF model
+        // included from another folder, that is the included model's file, not options.model_file.
+        MeshResolveOptions where = options;
+        const std::string& holder = geometry.location.file;
+        if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
+          where.model_file = holder;
+        }
+        const std::optional<std::string> path = ResolveMeshUri(geometry.uri, where, &reason);
+        if (!path) {
+          if (error) *error = Describe(geometry) + ": " + reason;
+          return std::nullopt;
+        }
+        if (!geometry.scale.allFinite()) {
+          if (error) *error = Describe(geometry) + ": the scale is not finite";
+          return std::nullopt;
+        }
+        std::optional<MeshMassProperties> mesh;
+        std::shared_ptr<const TriangleMesh> vertices;  // for the bounding box
+        if (options.cache != nullptr) {
+          mesh = options.cache->MassProperties(*path, geometry.scale, options.inertia, &reason);
+          if (mesh) vertices = options.cache->Load(*path, &reason);
+        } else {
+          auto triangles = std::make_shared<TriangleMesh>();
+          if (LoadMeshFile(*path, triangles.get(), &reason)) {
+            MeshInertiaOptions unit_density = options.inertia;
+            unit_density.density = 1;
+            mesh = CalcMeshMassProperties(ScaleMesh(*triangles, geometry.scale), unit_density);
+            vertices = std::move(triangles);
+          }
+        }
+        if (!mesh || !vertices) {
+          if (error) *error = Describe(geometry) + ": " + reason;
+          return std::nullopt;
+        }
+        // The box of the scaled vertices as posed in B (exact; one pass over the vertices).
+        for (const Eigen::Vector3d& v : vertices->vertices) {
+          result.box_B.extend(geometry.X_BG.p_AB +
+                              geometry.X_BG.R_AB * v.cwiseProduct(geometry.scale));
+        }
+        result.volume = mesh->mass;  // Density 1.
+        p_GoGcm_G = mesh->p_GoGcm_G;
+        I_GGcm_G = mesh->I_GGcm_G;
+        result.mesh_path = *path;
+        result.mesh_diagnostics = mesh->diagnostics;
+        break;
+      }
+      case Geometry::Type::kOther:
+        if (error) *error = Describe(geometry) + ": this geometry type has no volume model";
+        return std::nullopt;
+    }
+  } catch (const std::exception& e) {
+    if (error) *error = Describe(geometry) + ": " + e.what();
+    return std::nullopt;
+  }
+  if (!(result.volume > 0) || !std::isfinite(result.volume)) {
+    if (error) {
+      std::ostringstream message;
+      message << Describe(geometry) << ": the volume is " << result.volume
+              << " (a zero dimension or scale?)";
+      *error = message.str();
+    }
+    return std::nullopt;
+  }
+  if (geometry.type != Geometry::Type::kMesh) {
+    const std::optional<Eigen::AlignedBox3d> box = CalcPrimitiveBounds(geometry);
+    if (!box) {
+      if (error) *error = Describe(geometry) + ": its pose or a dimension is not finite";
+      return std::nullopt;
+    }
+    result.box_B = *box;
+  }
+  result.p_BoGcm_B = geometry.X_BG.p_AB + geometry.X_BG.R_AB * p_GoGcm_G;
+  result.I_GGcm_B = I_GGcm_G.ReExpress(geometry.X_BG.R_AB);
+  return result;
+}
+
+std::optional<LinkGeometryInertia> CalcLinkGeometryInertia(const Link& link, double mass,
+                                                           const MeshResolveOptions& options,
+                                                           std::string* error) {
+  if (!(mass >= 0) || !std::isfinite(mass)) {
+    if (error) {
+      std::ostringstream message;
+      message << "link '" << link.name << "': the mass " << mass << " is negative or not finite";
+      *error = message.str();
+    }
+    return std::nullopt;
+  }
+  // Sums the geometries of one kind (collision or visual) as separate uniform solids.
+  auto from_set = [&](bool collision,
+                      std::string* set_error) -> std::optional<LinkGeometryInertia> {
+    LinkGeometryInertia result;
+    result.from_collision = collision;
+    for (const Geometry& geometry : link.geometries) {
+      if (geometry.is_collision != collision) continue;
+      std::string reason;
+      std::optional<GeometryMassProperties> part =
+          CalcGeometryMassProperties(geometry, options, &reason);
+      if (!part) {
+        *set_error = reason;
+        return std::nullopt;
+      }
+      result.volume += part->volume;
+      result.box_B.extend(part->box_B);
+      result.geometries.push_back(std::move(*part));
+    }
+    Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();
+    for (const auto& part : result.geometries) first_moment += part.volume * part.p_BoGcm_B;
+    result.p_BoBcm_B = first_moment / result.volume;
+    // Each part's central inertia shifted away from its center to the composite center
+    // (additions of positive semi-definite terms only), then scaled to the mass.
+    RotationalInertia<double> I = RotationalInertia<double>::TriaxiallySymmetric(0);
+    for (const auto& part : result.geometries) {
+      I += part.I_GGcm_B.ShiftFromCenterOfMass(part.volume, result.p_BoBcm_B - part.p_BoGcm_B);
+    }
+    result.I_BBcm_B = I.MultiplyByScalarSkipValidityCheck(mass / result.volume);
+    result.mass = mass;
+    return result;
+  };
+  const bool has_collision = std::any_of(link.geometries.begin(), link.geometries.end(),
+                                         [](const Geometry& g) { return g.is_collision; });
+  const bool has_visual = std::any_of(link.geometries.begin(), link.geometries.end(),
+                                      [](const Geometry& g) { return !g.is_collision; });
+  std::string collision_error, visual_error;
+  if (has_collision) {
+    if (auto result = from_set(true, &collision_error)) return result;
+  }
+  if (has_visual) {
+    if (auto result = from_set(false, &visual_error)) {
+      result->note = collision_error;
+      return result;
+    }
+  }
+  if (error) {
+    if (!has_collision && !has_visual) {
+      *error = "link '" + link.name + "' has no collision or visual geometry";
+    } else {
+      *error = "link '" + link.name + "': " + (has_collision ? collision_error : visual_error);
+      if (has_collision && has_visual) *error += "; and " + visual_error;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace massprops

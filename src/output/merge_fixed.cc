@@ -1,0 +1,223 @@
+#include "massprops/output/merge_fixed.h"
+
+#include <tinyxml2.h>
+
+#include <Eigen/Geometry>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <unordered_map>
+#include <vector>
+
+#include "massprops/analysis/welded_groups.h"
+#include "massprops/io/model_reader.h"
+
+namespace massprops {
+namespace {
+
+ReadError MakeError(const std::string& file, int line, const std::string& message) {
+  ReadError error;
+  error.location.file = file;
+  error.location.line = line;
+  error.message = message;
+  return error;
+}
+
+std::string Number(double value) {
+  if (value == 0) value = 0;  // no "-0"
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", std::numeric_limits<double>::max_digits10, value);
+  return buffer;
+}
+
+std::string Triple(const Eigen::Vector3d& v) {
+  return Number(v(0)) + " " + Number(v(1)) + " " + Number(v(2));
+}
+
+// Three numbers of an attribute ("0 0 0" when absent). The reader has validated them already.
+Eigen::Vector3d ParseTriple(const tinyxml2::XMLElement* element, const char* name) {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  const char* text = element == nullptr ? nullptr : element->Attribute(name);
+  if (text == nullptr) return v;
+  std::istringstream in{std::string(text)};
+  std::string piece;
+  for (int i = 0; i < 3 && in >> piece; ++i) {
+    // The reader (urdfdom) has read this text already: a plain decimal, perhaps with '+'.
+    const std::size_t skip = !piece.empty() && piece[0] == '+' ? 1 : 0;
+    double value = 0;
+    const std::from_chars_result r =
+        std::from_chars(piece.data() + skip, piece.data() + piece.size(), value);
+    if (r.ec == std::errc() && r.ptr == piece.data() + piece.size()) v(i) = value;
+  }
+  return v;
+}
+
+Eigen::Matrix3d RotationFromRollPitchYaw(const Eigen::Vector3d& rpy) {
+  return (Eigen::AngleAxisd(rpy(2), Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(rpy(1), Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(rpy(0), Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
+// The pose written by an element's <origin> child (identity when absent).
+Pose OriginOf(const tinyxml2::XMLElement* element) {
+  const tinyxml2::XMLElement* origin = element->FirstChildElement("origin");
+  Pose X;
+  X.p_AB = ParseTriple(origin, "xyz");
+  X.R_AB = RotationFromRollPitchYaw(ParseTriple(origin, "rpy"));
+  return X;
+}
+
+// Writes X as the element's <origin> (created as its first child when absent).
+void SetOrigin(tinyxml2::XMLElement* element, const Pose& X) {
+  tinyxml2::XMLElement* origin = element->FirstChildElement("origin");
+  if (origin == nullptr) {
+    origin = element->GetDocument()->NewElement("origin");
+    element->InsertFirstChild(origin);
+  }
+  origin->SetAttribute("xyz", Triple(X.p_AB).c_str());
+  origin->SetAttribute("rpy", Triple(RotationToRollPitchYaw(X.R_AB)).c_str());
+}
+
+}  // namespace
+
+Eigen::Vector3d RotationToRollPitchYaw(const Eigen::Matrix3d& R) {
+  const double cos_pitch = std::hypot(R(0, 0), R(1, 0));
+  const double pitch = std::atan2(-R(2, 0), cos_pitch);
+  if (cos_pitch < 1e-12) {
+    // Gimbal lock: only roll − yaw (or roll + yaw) is defined; put it all in roll.
+    return {std::atan2(-R(1, 2), R(1, 1)), pitch, 0.0};
+  }
+  return {std::atan2(R(2, 1), R(2, 2)), pitch, std::atan2(R(1, 0), R(0, 0))};
+}
+
+MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name) {
+  MergeFixedResult result;
+  ReadResult read = ReadModelString(xml, file_name);
+  if (!read.ok() || read.models.empty()) {
+    result.errors = read.errors;
+    if (result.errors.empty()) {
+      result.errors.push_back(MakeError(file_name, 0, "the file holds no model"));
+    }
+    return result;
+  }
+  const Model& model = read.models.front();
+  if (model.format != Model::Format::kUrdf) {
+    result.errors.push_back(
+        {model.location, "<sdf>", "merge-fixed does not support SDF yet (URDF only)"});
+    return result;
+  }
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
+    result.errors.push_back(MakeError(file_name, doc.ErrorLineNum(), doc.ErrorStr()));
+    return result;
+  }
+  tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
+  if (robot == nullptr) {
+    result.errors.push_back(MakeError(file_name, 0, "no <robot> element"));
+    return result;
+  }
+  std::unordered_map<std::string, tinyxml2::XMLElement*> link_elements;
+  std::vector<tinyxml2::XMLElement*> joint_elements;
+  for (tinyxml2::XMLElement* e = robot->FirstChildElement(); e != nullptr;
+       e = e->NextSiblingElement()) {
+    const char* name = e->Attribute("name");
+    if (name == nullptr) continue;
+    if (std::string(e->Name()) == "link") link_elements.emplace(name, e);
+    if (std::string(e->Name()) == "joint") joint_elements.push_back(e);
+  }
+  std::unordered_map<std::string, const Joint*> joint_by_name;
+  for (const Joint& joint : model.joints) joint_by_name.emplace(joint.name, &joint);
+
+  // Which group, and at which pose in its root, each merged (non-root) link is.
+  struct Merged {
+    const std::string* root;
+    Pose X_RL;
+  };
+  std::unordered_map<std::string, Merged> merged;
+  const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
+  for (const WeldedGroup& group : groups) {
+    if (group.links.size() < 2) continue;
+    ++result.groups_merged;
+    for (std::size_t k = 1; k < group.links.size(); ++k) {
+      merged.emplace(model.links[group.links[k]].name, Merged{&group.root_link, group.X_RL[k]});
+    }
+  }
+
+  // Joints: remove the fixed ones that hold a merged link; re-parent those leaving a merged link.
+  for (tinyxml2::XMLElement* joint_element : joint_elements) {
+    const auto joint_it = joint_by_name.find(joint_element->Attribute("name"));
+    if (joint_it == joint_by_name.end()) continue;
+    const Joint& joint = *joint_it->second;
+    const auto child = merged.find(joint.child);
+    const auto parent = merged.find(joint.parent);
+    const bool internal = joint.type == Joint::Type::kFixed && child != merged.end() &&
+                          (parent != merged.end() ? *parent->second.root == *child->second.root
+                                                  : joint.parent == *child->second.root);
+    if (internal) {
+      robot->DeleteChild(joint_element);
+      continue;
+    }
+    if (parent != merged.end()) {
+      tinyxml2::XMLElement* parent_element = joint_element->FirstChildElement("parent");
+      if (parent_element != nullptr) {
+        parent_element->SetAttribute("link", parent->second.root->c_str());
+      }
+      SetOrigin(joint_element, parent->second.X_RL * joint.X_PC);
+    }
+  }
+
+  // Links: move visuals and collisions into the root, then remove the merged link.
+  for (const WeldedGroup& group : groups) {
+    if (group.links.size() < 2) continue;
+    tinyxml2::XMLElement* root_element = link_elements.at(group.root_link);
+    bool members_have_mass = false;
+    for (std::size_t k = 1; k < group.links.size(); ++k) {
+      const Link& link = model.links[group.links[k]];
+      members_have_mass = members_have_mass || (link.inertial && link.inertial->mass != 0);
+      tinyxml2::XMLElement* link_element = link_elements.at(link.name);
+      std::vector<tinyxml2::XMLElement*> geometries;
+      for (tinyxml2::XMLElement* e = link_element->FirstChildElement(); e != nullptr;
+           e = e->NextSiblingElement()) {
+        const std::string name = e->Name();
+        if (name == "visual" || name == "collision") geometries.push_back(e);
+      }
+      for (tinyxml2::XMLElement* geometry : geometries) {
+        SetOrigin(geometry, group.X_RL[k] * OriginOf(geometry));
+        root_element->InsertEndChild(geometry);  // Moves the element.
+      }
+      robot->DeleteChild(link_element);
+      ++result.merged_links;
+    }
+    if (!members_have_mass) continue;
+    const CompositeInertia composite = CalcCompositeInertia(model, group);
+    while (tinyxml2::XMLElement* old = root_element->FirstChildElement("inertial")) {
+      root_element->DeleteChild(old);
+    }
+    tinyxml2::XMLElement* inertial = doc.NewElement("inertial");
+    root_element->InsertFirstChild(inertial);
+    tinyxml2::XMLElement* origin = inertial->InsertNewChildElement("origin");
+    origin->SetAttribute("xyz", Triple(composite.p_RoScm_R).c_str());
+    origin->SetAttribute("rpy", "0 0 0");
+    inertial->InsertNewChildElement("mass")->SetAttribute("value", Number(composite.mass).c_str());
+    tinyxml2::XMLElement* inertia = inertial->InsertNewChildElement("inertia");
+    const Eigen::Matrix3d& I = composite.I_SScm_R;
+    inertia->SetAttribute("ixx", Number(I(0, 0)).c_str());
+    inertia->SetAttribute("ixy", Number(I(0, 1)).c_str());
+    inertia->SetAttribute("ixz", Number(I(0, 2)).c_str());
+    inertia->SetAttribute("iyy", Number(I(1, 1)).c_str());
+    inertia->SetAttribute("iyz", Number(I(1, 2)).c_str());
+    inertia->SetAttribute("izz", Number(I(2, 2)).c_str());
+  }
+
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
+  result.text = printer.CStr();
+  return result;
+}
+
+}  // namespace massprops

@@ -1,0 +1,352 @@
+// The renderings of the mass report (text tables, JSON, CSV); the numbers come from
+// ComputeMassReport (analysis/mass_report.h).
+#include "massprops/output/report_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "massprops/output/reporters.h"
+
+namespace massprops {
+
+namespace {
+
+nlohmann::json Vec(const Eigen::Vector3d& v) { return {v(0), v(1), v(2)}; }
+nlohmann::json Mat(const Eigen::Matrix3d& m) {
+  return {Vec(m.row(0).transpose()), Vec(m.row(1).transpose()), Vec(m.row(2).transpose())};
+}
+
+void AddBody(const BodyMassProperties& body, nlohmann::json* out) {
+  nlohmann::json& j = *out;
+  j["frame"] = body.frame;
+  j["mass"] = body.mass;
+  j["com"] = Vec(body.com);
+  j["inertia_about_com"] = Mat(body.inertia_about_com);
+  j["principal_moments"] = Vec(body.principal_moments);
+  j["principal_axes"] = Mat(body.principal_axes);
+  j["equivalent_box"] = body.equivalent_box ? Vec(*body.equivalent_box) : nlohmann::json();
+  j["digits_lost"] = body.digits_lost;
+}
+
+void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
+               const std::vector<MassReportError>& errors) {
+  nlohmann::json root;
+  root["models"] = nlohmann::json::array();
+  for (const ModelMassReport& report : reports) {
+    nlohmann::json model;
+    model["name"] = report.name;
+    model["file"] = report.file;
+    model["links"] = nlohmann::json::array();
+    for (const LinkMassReport& link : report.links) {
+      nlohmann::json j;
+      j["name"] = link.name;
+      AddBody(link.properties, &j);
+      if (link.geometry) {
+        const LinkGeometryComparison& g = *link.geometry;
+        if (!g.error.empty()) {
+          j["geometry"] = {{"error", g.error}};
+        } else {
+          nlohmann::json rel = nlohmann::json::array();
+          for (int k = 0; k < 3; ++k) {
+            const double v = g.moment_rel_diff(k);
+            rel.push_back(std::isfinite(v) ? nlohmann::json(v) : nlohmann::json());
+          }
+          j["geometry"] = {{"source", g.from_collision ? "collision" : "visual"},
+                           {"com", Vec(g.geometry.com)},
+                           {"inertia_about_com", Mat(g.geometry.inertia_about_com)},
+                           {"principal_moments", Vec(g.geometry.principal_moments)},
+                           {"moment_rel_diff", std::move(rel)},
+                           {"axis_angle_deg", g.axis_angle_deg ? nlohmann::json(*g.axis_angle_deg)
+                                                               : nlohmann::json()}};
+          nlohmann::json meshes = nlohmann::json::array();
+          for (const LinkGeometryComparison::Mesh& mesh : g.meshes) {
+            const MeshDiagnostics& d = mesh.diagnostics;
+            meshes.push_back({{"uri", mesh.uri},
+                              {"path", mesh.path},
+                              {"triangles", d.num_triangles},
+                              {"model", ToString(d.model)},
+                              {"winding_inverted", d.winding_inverted},
+                              {"boundary_edges", d.boundary_edges},
+                              {"non_manifold_edges", d.non_manifold_edges},
+                              {"inconsistent_edges", d.inconsistent_edges},
+                              {"degenerate_triangles", d.degenerate_triangles},
+                              {"note", DescribeMeshDiagnostics(d)}});
+          }
+          j["geometry"]["meshes"] = std::move(meshes);
+        }
+      }
+      model["links"].push_back(std::move(j));
+    }
+    model["welded_groups"] = nlohmann::json::array();
+    for (const GroupMassReport& group : report.welded_groups) {
+      nlohmann::json j;
+      j["root_link"] = group.root_link;
+      j["links"] = group.links;
+      AddBody(group.properties, &j);
+      model["welded_groups"].push_back(std::move(j));
+    }
+    if (report.total) {
+      nlohmann::json j;
+      AddBody(*report.total, &j);
+      j["unreachable_links"] = report.unreachable_links;
+      model["total"] = std::move(j);
+    } else {
+      model["total"] = nullptr;
+    }
+    root["models"].push_back(std::move(model));
+  }
+  root["errors"] = nlohmann::json::array();
+  for (const MassReportError& e : errors) {
+    root["errors"].push_back({{"file", e.file}, {"line", e.line}, {"message", e.message}});
+  }
+  // nlohmann::json prints the shortest decimal that reads back to the same double.
+  out << root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+}
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+std::string Number(double value, int digits) {
+  if (value == 0) value = 0;  // no "-0"
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+  return buffer;
+}
+
+void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports) {
+  out << "file,model,kind,name,frame,mass,com_x,com_y,com_z,ixx,iyy,izz,ixy,ixz,iyz,"
+         "principal_moment_1,principal_moment_2,principal_moment_3,"
+         "axis_1_x,axis_1_y,axis_1_z,axis_2_x,axis_2_y,axis_2_z,axis_3_x,axis_3_y,axis_3_z,"
+         "box_1,box_2,box_3,digits_lost,links";
+  // With --geometry, every row gets the geometry comparison's columns too (empty for groups,
+  // totals and links without one), so that the header does not change otherwise.
+  bool geometry = false;
+  for (const ModelMassReport& report : reports) {
+    for (const LinkMassReport& link : report.links) geometry = geometry || link.geometry;
+  }
+  if (geometry) {
+    out << ",geometry_source,geometry_com_x,geometry_com_y,geometry_com_z,geometry_ixx,"
+           "geometry_iyy,geometry_izz,geometry_ixy,geometry_ixz,geometry_iyz,"
+           "geometry_principal_moment_1,geometry_principal_moment_2,geometry_principal_moment_3,"
+           "geometry_rel_diff_1,geometry_rel_diff_2,geometry_rel_diff_3,geometry_axis_angle_deg,"
+           "geometry_error";
+  }
+  out << '\n';
+  constexpr int kDigits = std::numeric_limits<double>::max_digits10;
+  auto geometry_fields = [&](const LinkGeometryComparison* c) {
+    if (!geometry) return;
+    if (c == nullptr || !c->error.empty()) {
+      for (int i = 0; i < 17; ++i) out << ',';
+      out << ',' << (c == nullptr ? std::string() : CsvField(c->error));
+      return;
+    }
+    out << ',' << (c->from_collision ? "collision" : "visual");
+    for (int i = 0; i < 3; ++i) out << ',' << Number(c->geometry.com(i), kDigits);
+    const Eigen::Matrix3d& G = c->geometry.inertia_about_com;
+    for (double v : {G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2), G(1, 2)}) {
+      out << ',' << Number(v, kDigits);
+    }
+    for (int k = 0; k < 3; ++k) out << ',' << Number(c->geometry.principal_moments(k), kDigits);
+    for (int k = 0; k < 3; ++k) {
+      out << ',';
+      if (std::isfinite(c->moment_rel_diff(k))) out << Number(c->moment_rel_diff(k), kDigits);
+    }
+    out << ',';
+    if (c->axis_angle_deg) out << Number(*c->axis_angle_deg, kDigits);
+    out << ',';
+  };
+  auto row = [&](const ModelMassReport& report, const char* kind, const std::string& name,
+                 const BodyMassProperties& b, const std::vector<std::string>& members,
+                 const LinkGeometryComparison* comparison) {
+    out << CsvField(report.file) << ',' << CsvField(report.name) << ',' << kind << ','
+        << CsvField(name) << ',' << CsvField(b.frame) << ',' << Number(b.mass, kDigits);
+    for (int i = 0; i < 3; ++i) out << ',' << Number(b.com(i), kDigits);
+    const Eigen::Matrix3d& I = b.inertia_about_com;
+    for (double v : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) {
+      out << ',' << Number(v, kDigits);
+    }
+    for (int i = 0; i < 3; ++i) out << ',' << Number(b.principal_moments(i), kDigits);
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 3; ++i) out << ',' << Number(b.principal_axes(i, k), kDigits);
+    }
+    for (int k = 0; k < 3; ++k) {
+      out << ',';
+      if (b.equivalent_box) out << Number((*b.equivalent_box)(k), kDigits);
+    }
+    out << ',' << Number(b.digits_lost, 4) << ',';
+    std::string joined;
+    for (std::size_t i = 0; i < members.size(); ++i) joined += (i ? ";" : "") + members[i];
+    out << CsvField(joined);
+    geometry_fields(comparison);
+    out << '\n';
+  };
+  for (const ModelMassReport& report : reports) {
+    for (const LinkMassReport& link : report.links) {
+      row(report, "link", link.name, link.properties, {link.name},
+          link.geometry ? &*link.geometry : nullptr);
+    }
+    for (const GroupMassReport& group : report.welded_groups) {
+      row(report, "welded_group", group.root_link, group.properties, group.links, nullptr);
+    }
+    if (report.total) row(report, "total", report.name, *report.total, {}, nullptr);
+  }
+}
+
+// Prints rows as columns: the first `text_columns` left-aligned, the others right-aligned.
+void WriteTable(std::ostream& out, const std::vector<std::vector<std::string>>& rows,
+                std::size_t text_columns) {
+  constexpr std::size_t kMaxCell = 80;
+  std::vector<std::size_t> width;
+  for (const auto& row : rows) {
+    if (width.size() < row.size()) width.resize(row.size(), 0);
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      width[c] = std::max(width[c], ShortenLongWords(row[c], kMaxCell).size());
+    }
+  }
+  for (const auto& row : rows) {
+    std::string line = " ";
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      // A hostile 10 MB name is shortened, so that it does not pad every row.
+      const std::string cell = ShortenLongWords(row[c], kMaxCell);
+      const std::string pad(width[c] - cell.size(), ' ');
+      line += ' ';
+      line += c < text_columns ? cell + pad : pad + cell;
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << line << '\n';
+  }
+}
+
+void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, double threshold) {
+  constexpr int kDigits = 6;
+  for (const ModelMassReport& report : reports) {
+    out << "model '" << ShortenLongWords(report.name) << "' (" << report.file << ")\n";
+    struct Entry {
+      std::string kind, name;
+      const BodyMassProperties* body;
+    };
+    std::vector<Entry> entries;
+    for (const auto& link : report.links) entries.push_back({"link", link.name, &link.properties});
+    for (const auto& group : report.welded_groups) {
+      entries.push_back({"group", group.root_link, &group.properties});
+    }
+    if (report.total) entries.push_back({"total", report.name, &*report.total});
+
+    std::vector<std::vector<std::string>> a{{"kind", "name", "frame", "mass", "com_x", "com_y",
+                                             "com_z", "ixx", "iyy", "izz", "ixy", "ixz", "iyz"}};
+    std::vector<std::vector<std::string>> b{
+        {"kind", "name", "I1", "I2", "I3", "axis1", "axis2", "axis3", "box_1", "box_2", "box_3"}};
+    auto axis = [&](const Eigen::Matrix3d& R, int k) {
+      return "[" + Number(R(0, k), 4) + " " + Number(R(1, k), 4) + " " + Number(R(2, k), 4) + "]";
+    };
+    std::vector<std::string> notes;
+    for (const Entry& e : entries) {
+      const BodyMassProperties& p = *e.body;
+      const Eigen::Matrix3d& I = p.inertia_about_com;
+      a.push_back({e.kind, e.name, p.frame, Number(p.mass, kDigits), Number(p.com(0), kDigits),
+                   Number(p.com(1), kDigits), Number(p.com(2), kDigits), Number(I(0, 0), kDigits),
+                   Number(I(1, 1), kDigits), Number(I(2, 2), kDigits), Number(I(0, 1), kDigits),
+                   Number(I(0, 2), kDigits), Number(I(1, 2), kDigits)});
+      std::vector<std::string> row{e.kind,
+                                   e.name,
+                                   Number(p.principal_moments(0), kDigits),
+                                   Number(p.principal_moments(1), kDigits),
+                                   Number(p.principal_moments(2), kDigits),
+                                   axis(p.principal_axes, 0),
+                                   axis(p.principal_axes, 1),
+                                   axis(p.principal_axes, 2)};
+      for (int k = 0; k < 3; ++k) {
+        row.push_back(p.equivalent_box ? Number((*p.equivalent_box)(k), kDigits) : "-");
+      }
+      b.push_back(std::move(row));
+      if (!p.equivalent_box && p.mass > 0) {
+        notes.push_back(e.kind + " '" + e.name +
+                        "': no equivalent box: the principal moments violate the triangle "
+                        "inequality (or are not finite)");
+      }
+      if (p.digits_lost > threshold) {
+        notes.push_back(e.kind + " '" + e.name + "': about " + Number(p.digits_lost, 3) +
+                        " significant digits lost to cancellation by the shift between the "
+                        "origin of frame '" +
+                        p.frame + "' and the center of mass (m|c|^2 = " +
+                        Number(p.mass * p.com.squaredNorm(), 3) + " against trace " +
+                        Number(I.trace(), 3) + ")");
+      }
+    }
+    out << " mass, center of mass, inertia about the center of mass (in the named frame):\n";
+    WriteTable(out, a, 3);
+    out << " principal moments (ascending), principal axes (in the frame), equivalent box sides "
+           "(along the axes):\n";
+    WriteTable(out, b, 2);
+    if (!report.unreachable_links.empty()) {
+      std::string list;
+      for (const std::string& name : report.unreachable_links) list += " " + name;
+      notes.push_back("left out of the total (not connected to the root link):" + list);
+    }
+    std::vector<std::vector<std::string>> g{{"link", "source", "I1_geometry", "I2_geometry",
+                                             "I3_geometry", "rel_diff_1", "rel_diff_2",
+                                             "rel_diff_3", "axis_angle_deg"}};
+    for (const auto& link : report.links) {
+      if (!link.geometry) continue;
+      const LinkGeometryComparison& c = *link.geometry;
+      if (!c.error.empty()) {
+        notes.push_back("link '" + link.name + "': no geometry inertia: " + c.error);
+        continue;
+      }
+      for (const LinkGeometryComparison::Mesh& mesh : c.meshes) {
+        const std::string note = DescribeMeshDiagnostics(mesh.diagnostics);
+        if (!note.empty()) {
+          notes.push_back("link '" + link.name + "': mesh '" + mesh.uri + "': " + note);
+        }
+      }
+      std::vector<std::string> row{link.name, c.from_collision ? "collision" : "visual"};
+      for (int k = 0; k < 3; ++k) row.push_back(Number(c.geometry.principal_moments(k), kDigits));
+      for (int k = 0; k < 3; ++k) {
+        row.push_back(std::isfinite(c.moment_rel_diff(k)) ? Number(c.moment_rel_diff(k), 3)
+                                                          : "n/a");
+      }
+      row.push_back(c.axis_angle_deg ? Number(*c.axis_angle_deg, 3) : "n/a");
+      g.push_back(std::move(row));
+    }
+    if (g.size() > 1) {
+      out << " inertia implied by the geometry for the declared mass (link frame), relative "
+             "difference of the declared principal moments, angle between principal axes:\n";
+      WriteTable(out, g, 2);
+    }
+    for (const std::string& note : notes) out << " note: " << note << "\n";
+  }
+}
+
+}  // namespace
+
+void WriteMassReport(std::ostream& out, MassReportFormat format,
+                     const std::vector<ModelMassReport>& reports,
+                     const std::vector<MassReportError>& errors, double digits_lost_threshold) {
+  switch (format) {
+    case MassReportFormat::kJson:
+      WriteJson(out, reports, errors);
+      break;
+    case MassReportFormat::kCsv:
+      WriteCsv(out, reports);
+      break;
+    case MassReportFormat::kText:
+      WriteText(out, reports, digits_lost_threshold);
+      break;
+  }
+}
+
+}  // namespace massprops

@@ -1,0 +1,413 @@
+#include "massprops/output/reporters.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+namespace massprops {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// ANSI SGR sequences used by the text reporter.
+constexpr const char* kBold = "\x1b[1m";
+constexpr const char* kRed = "\x1b[1;31m";
+constexpr const char* kYellow = "\x1b[1;33m";
+constexpr const char* kCyan = "\x1b[1;36m";
+constexpr const char* kDim = "\x1b[2m";
+constexpr const char* kReset = "\x1b[0m";
+
+// The file a finding or error points at: its own location's file when it has one (not the
+// stdin marker "-"), else the path of the file that was checked.
+const std::string& FileOf(const SourceLocation& location, const FileResult& result) {
+  if (location.file.empty() || location.file == "-") return result.path;
+  return location.file;
+}
+
+std::string FormatLocation(const std::string& file, int line, int column) {
+  std::string out = file;
+  if (line > 0) {
+    out += ':' + std::to_string(line);
+    if (column > 0) out += ':' + std::to_string(column);
+  }
+  return out;
+}
+
+const char* SeverityColor(Severity severity) {
+  switch (severity) {
+    case Severity::kError:
+      return kRed;
+    case Severity::kWarning:
+      return kYellow;
+    case Severity::kNote:
+      return kCyan;
+  }
+  return kReset;
+}
+
+std::string Plural(int count, const char* word) {
+  return std::to_string(count) + " " + word + (count == 1 ? "" : "s");
+}
+
+// JSON number, or null when not finite (JSON has no NaN or Inf).
+json Number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+// Percent-encodes everything but RFC 3986 unreserved characters and '/'.
+std::string PercentEncodePath(std::string_view path) {
+  static const char* kHex = "0123456789ABCDEF";
+  std::string out;
+  for (char c : path) {
+    const auto u = static_cast<unsigned char>(c);
+    const bool unreserved = (u >= 'A' && u <= 'Z') || (u >= 'a' && u <= 'z') ||
+                            (u >= '0' && u <= '9') || u == '-' || u == '.' || u == '_' ||
+                            u == '~' || u == '/';
+    if (unreserved) {
+      out += c;
+    } else {
+      out += '%';
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    }
+  }
+  return out;
+}
+
+// A SARIF artifact URI for a path as the user gave it.
+std::string ArtifactUri(const std::string& path) {
+  if (path == "<stdin>" || path == "-") return "stdin";
+  if (!path.empty() && path[0] == '/') return "file://" + PercentEncodePath(path);
+  std::string_view relative = path;
+  while (relative.size() > 2 && relative.substr(0, 2) == "./") relative.remove_prefix(2);
+  return PercentEncodePath(relative);
+}
+
+const char* SarifLevel(Severity severity) {
+  switch (severity) {
+    case Severity::kError:
+      return "error";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kNote:
+      return "note";
+  }
+  return "none";
+}
+
+const char* GithubCommand(Severity severity) {
+  switch (severity) {
+    case Severity::kError:
+      return "error";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kNote:
+      return "notice";
+  }
+  return "notice";
+}
+
+std::string ReadErrorText(const ReadError& error) {
+  if (error.element.empty()) return error.message;
+  return error.element + ": " + error.message;
+}
+
+std::string Escape(std::string_view text, bool property) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '%':
+        out += "%25";
+        break;
+      case '\r':
+        out += "%0D";
+        break;
+      case '\n':
+        out += "%0A";
+        break;
+      case ':':
+        out += property ? "%3A" : ":";
+        break;
+      case ',':
+        out += property ? "%2C" : ",";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string GithubLine(const char* command, const std::string& file, int line, int column,
+                       const std::string& title, const std::string& message) {
+  std::string out = "::";
+  out += command;
+  out += " file=" + EscapeGithubProperty(file);
+  if (line > 0) {
+    out += ",line=" + std::to_string(line);
+    if (column > 0) out += ",col=" + std::to_string(column);
+  }
+  out += ",title=" + EscapeGithubProperty(title);
+  out += "::" + EscapeGithubData(message) + "\n";
+  return out;
+}
+
+}  // namespace
+
+std::optional<ReportFormat> ParseReportFormat(std::string_view text) {
+  if (text == "text") return ReportFormat::kText;
+  if (text == "json") return ReportFormat::kJson;
+  if (text == "sarif") return ReportFormat::kSarif;
+  if (text == "github") return ReportFormat::kGithub;
+  return std::nullopt;
+}
+
+ReportSummary Summarize(const std::vector<FileResult>& results) {
+  ReportSummary summary;
+  summary.files = static_cast<int>(results.size());
+  for (const FileResult& result : results) {
+    for (const Finding& finding : result.findings) {
+      switch (finding.severity) {
+        case Severity::kError:
+          ++summary.errors;
+          break;
+        case Severity::kWarning:
+          ++summary.warnings;
+          break;
+        case Severity::kNote:
+          ++summary.notes;
+          break;
+      }
+    }
+    summary.read_errors += static_cast<int>(result.errors.size());
+  }
+  return summary;
+}
+
+std::string RenderText(const std::vector<FileResult>& results, const ReportOptions& options) {
+  const bool color = options.color;
+  std::string out;
+  for (const FileResult& result : results) {
+    for (const ReadError& error : result.errors) {
+      const std::string where = FormatLocation(FileOf(error.location, result), error.location.line,
+                                               error.location.column);
+      out += color ? std::string(kBold) + where + ":" + kReset + " " + kRed + "error:" + kReset
+                   : where + ": error:";
+      out += " " + ShortenLongWords(ReadErrorText(error)) + " ";
+      out += color ? std::string(kDim) + "[" + kReadErrorRule + "]" + kReset
+                   : std::string("[") + kReadErrorRule + "]";
+      out += "\n";
+    }
+    for (const Finding& finding : result.findings) {
+      const std::string where = FormatLocation(FileOf(finding.location, result),
+                                               finding.location.line, finding.location.column);
+      const std::string severity = std::string(ToString(finding.severity)) + ":";
+      if (color) {
+        out += std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
+               severity + kReset + " " + ShortenLongWords(finding.message) + " " + kDim + "[" +
+               finding.rule + "]" + kReset + "\n";
+      } else {
+        out += where + ": " + severity + " " + ShortenLongWords(finding.message) + " [" +
+               finding.rule + "]\n";
+      }
+    }
+  }
+  if (!options.quiet) {
+    const ReportSummary s = Summarize(results);
+    out += "massprops: checked " + Plural(s.files, "file") + ": " + Plural(s.errors, "error") +
+           ", " + Plural(s.warnings, "warning") + ", " + Plural(s.notes, "note");
+    if (s.read_errors > 0) out += ", " + Plural(s.read_errors, "read error");
+    if (options.skipped_files > 0) {
+      out += "; " + Plural(options.skipped_files, "other file") + " in the folders skipped";
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string RenderJson(const std::vector<FileResult>& results, const ReportOptions& options) {
+  json files = json::array();
+  for (const FileResult& result : results) {
+    json findings = json::array();
+    for (const Finding& finding : result.findings) {
+      json values = json::object();
+      for (const auto& [name, value] : finding.values) values[name] = Number(value);
+      findings.push_back({{"rule", finding.rule},
+                          {"severity", ToString(finding.severity)},
+                          {"model", finding.model},
+                          {"link", finding.link},
+                          {"file", FileOf(finding.location, result)},
+                          {"line", finding.location.line},
+                          {"column", finding.location.column},
+                          {"message", ShortenLongWords(finding.message)},
+                          {"values", values}});
+    }
+    json errors = json::array();
+    for (const ReadError& error : result.errors) {
+      errors.push_back({{"file", FileOf(error.location, result)},
+                        {"line", error.location.line},
+                        {"column", error.location.column},
+                        {"element", ShortenLongWords(error.element)},
+                        {"message", ShortenLongWords(error.message)}});
+    }
+    files.push_back({{"path", result.path},
+                     {"format", result.format.empty() ? json(nullptr) : json(result.format)},
+                     {"models", result.models},
+                     {"findings", findings},
+                     {"errors", errors}});
+  }
+  const ReportSummary s = Summarize(results);
+  const json document = {{"version", options.tool_version},
+                         {"files", files},
+                         {"summary",
+                          {{"files", s.files},
+                           {"errors", s.errors},
+                           {"warnings", s.warnings},
+                           {"notes", s.notes},
+                           {"read_errors", s.read_errors},
+                           {"skipped_files", options.skipped_files}}}};
+  return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options) {
+  json rules = json::array();
+  std::vector<std::string> rule_ids;
+  auto add_rule = [&](const std::string& id, const std::string& summary, Severity level) {
+    json rule = {{"id", id},
+                 {"shortDescription", {{"text", summary}}},
+                 {"defaultConfiguration", {{"level", SarifLevel(level)}}}};
+    if (!options.information_uri.empty()) rule["helpUri"] = options.information_uri + "#" + id;
+    rules.push_back(rule);
+    rule_ids.push_back(id);
+  };
+  for (const RuleInfo& info : AllRules()) add_rule(info.id, info.summary, info.default_severity);
+  add_rule(kReadErrorRule, "The file could not be read or parsed as URDF or SDF.",
+           Severity::kError);
+  add_rule(kReadWarningRule, "Part of the file could not be understood and was skipped.",
+           Severity::kWarning);
+  auto rule_index = [&](const std::string& id) -> int {
+    for (std::size_t i = 0; i < rule_ids.size(); ++i) {
+      if (rule_ids[i] == id) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  auto location = [](const std::string& file, int line, int column) {
+    json physical = {{"artifactLocation", {{"uri", ArtifactUri(file)}}}};
+    if (line > 0) {
+      json region = {{"startLine", line}};
+      if (column > 0) region["startColumn"] = column;
+      physical["region"] = region;
+    }
+    return json::array({{{"physicalLocation", physical}}});
+  };
+
+  json sarif_results = json::array();
+  for (const FileResult& result : results) {
+    for (const ReadError& error : result.errors) {
+      sarif_results.push_back(
+          {{"ruleId", kReadErrorRule},
+           {"ruleIndex", rule_index(kReadErrorRule)},
+           {"level", "error"},
+           {"message", {{"text", ShortenLongWords(ReadErrorText(error))}}},
+           {"locations",
+            location(FileOf(error.location, result), error.location.line, error.location.column)}});
+    }
+    for (const Finding& finding : result.findings) {
+      json entry = {{"ruleId", finding.rule}};
+      const int index = rule_index(finding.rule);
+      if (index >= 0) entry["ruleIndex"] = index;
+      entry["level"] = SarifLevel(finding.severity);
+      entry["message"] = {{"text", ShortenLongWords(finding.message)}};
+      entry["locations"] = location(FileOf(finding.location, result), finding.location.line,
+                                    finding.location.column);
+      if (!finding.values.empty()) {
+        json values = json::object();
+        for (const auto& [name, value] : finding.values) values[name] = Number(value);
+        entry["properties"] = {
+            {"model", finding.model}, {"link", finding.link}, {"values", values}};
+      }
+      sarif_results.push_back(entry);
+    }
+  }
+
+  json driver = {{"name", "massprops"}, {"version", options.tool_version}};
+  if (!options.information_uri.empty()) driver["informationUri"] = options.information_uri;
+  driver["rules"] = rules;
+  const json log = {
+      {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
+      {"version", "2.1.0"},
+      {"runs", json::array({{{"tool", {{"driver", driver}}}, {"results", sarif_results}}})}};
+  return log.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+std::string RenderGithub(const std::vector<FileResult>& results, const ReportOptions& options) {
+  (void)options;
+  std::string out;
+  for (const FileResult& result : results) {
+    for (const ReadError& error : result.errors) {
+      out +=
+          GithubLine("error", FileOf(error.location, result), error.location.line,
+                     error.location.column, kReadErrorRule, ShortenLongWords(ReadErrorText(error)));
+    }
+    for (const Finding& finding : result.findings) {
+      out += GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
+                        finding.location.line, finding.location.column, finding.rule,
+                        ShortenLongWords(finding.message));
+    }
+  }
+  return out;
+}
+
+std::string Render(ReportFormat format, const std::vector<FileResult>& results,
+                   const ReportOptions& options) {
+  switch (format) {
+    case ReportFormat::kText:
+      return RenderText(results, options);
+    case ReportFormat::kJson:
+      return RenderJson(results, options);
+    case ReportFormat::kSarif:
+      return RenderSarif(results, options);
+    case ReportFormat::kGithub:
+      return RenderGithub(results, options);
+  }
+  return {};
+}
+
+void WriteReport(std::ostream& out, ReportFormat format, const std::vector<FileResult>& results,
+                 const ReportOptions& options) {
+  out << Render(format, results, options);
+}
+
+std::string ShortenLongWords(std::string_view text, std::size_t max_word) {
+  auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  // A position moved back (or forward) off UTF-8 continuation bytes (10xxxxxx).
+  auto boundary = [&](std::size_t pos, bool forward) {
+    while (pos > 0 && pos < text.size() && (static_cast<unsigned char>(text[pos]) & 0xC0) == 0x80) {
+      pos += forward ? 1 : -1;
+    }
+    return pos;
+  };
+  const std::size_t keep_head = max_word / 2, keep_tail = max_word / 4;
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t end = i;
+    while (end < text.size() && !is_space(text[end])) ++end;
+    if (end - i > max_word) {
+      const std::size_t head = boundary(i + keep_head, false);
+      const std::size_t tail = boundary(end - keep_tail, true);
+      out.append(text.substr(i, head - i));
+      out += "\u2026[" + std::to_string(end - i) + " bytes]\u2026";
+      out.append(text.substr(tail, end - tail));
+    } else {
+      out.append(text.substr(i, end - i));
+    }
+    i = end;
+    while (i < text.size() && is_space(text[i])) out += text[i++];
+  }
+  return out;
+}
+
+std::string EscapeGithubData(std::string_view text) { return Escape(text, false); }
+
+std::string EscapeGithubProperty(std::string_view text) { return Escape(text, true); }
+
+}  // namespace massprops

@@ -1,0 +1,30 @@
+#pragma once
+// Subcommands of the `massprops` tool defined outside main.cc. Each Add*Commands function adds its
+// subcommands to `app`; when one of them is chosen on the command line, CLI11 sets *run to the
+// function that does its work and returns the exit code (0 ok; 1 findings; 2 read, parse or usage
+// errors). main() calls *run after parsing when it is set.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace massprops::cli {
+
+/// `report` (mass, center of mass, inertia per link, welded group and model) and `merge-fixed`
+/// (one link per welded group). Defined in src/tool/report_command.cc.
+void AddReportCommands(CLI::App& app, std::function<int()>* run);
+
+/// `fix` (repair mass properties and write the file back, changing only those numbers). Defined
+/// in src/tool/fix_command.cc.
+void AddFixCommands(CLI::App& app, std::function<int()>* run);
+
+/// `view` (one self-contained HTML page drawing each link's equivalent inertia box over its
+/// geometry, with its findings). Defined in src/tool/view_command.cc.
+void AddViewCommands(CLI::App& app, std::function<int()>* run);
+
+/// Writes the HTML view of `files` to standard output (`report --format html`); returns the exit
+/// code (0 written; 2 a file could not be read, a bad configuration file, or a write error).
+int RunHtmlView(const std::vector<std::string>& files, const std::vector<std::string>& model_paths,
+                const std::vector<std::string>& package_paths);
+
+}  // namespace massprops::cli

@@ -1,0 +1,40 @@
+#pragma once
+// `massprops check --geometry`: the options and the glue that runs the geometry rules
+// (include/massprops/analysis/geometry_checks.h) inside the check command. Defined in
+// src/tool/geometry_check_command.cc; main.cc calls these.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "massprops/analysis/checks.h"
+#include "massprops/mesh/mesh_loader.h"
+#include "massprops/model/model.h"
+
+namespace massprops::cli {
+
+/// Adds `--package-path DIR` (repeatable) to a subcommand (check, fix, report).
+CLI::Option* AddPackagePathOption(CLI::App* command, std::vector<std::string>* paths);
+
+/// Where a run's meshes are found: the given folders, the model file (relative paths) and the
+/// run's cache; the environment variables too.
+MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_paths,
+                                      const std::vector<std::string>& model_paths,
+                                      const std::string& model_file, MeshCache* cache);
+
+/// Adds --geometry, --geometry-factor X and --package-path DIR to the check subcommand.
+void AddGeometryCheckOptions(CLI::App* check);
+
+/// With --geometry: sets options->shape to a mesh-reading LinkShapeFunction for `model` (the
+/// run's mesh cache), so that CheckModel judges mesh-only links against their meshes too.
+/// Without it, leaves `options` unchanged.
+void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
+                       CheckOptions* options);
+
+/// Appends the geometry findings of `model` when --geometry was given (one mesh cache per run),
+/// honouring `options.overrides` for the geometry rules. `model_paths` are searched for
+/// model:// mesh URIs.
+void AddGeometryFindings(const Model& model, const CheckOptions& options,
+                         const std::vector<std::string>& model_paths,
+                         std::vector<Finding>* findings);
+
+}  // namespace massprops::cli

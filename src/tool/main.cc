@@ -1,0 +1,523 @@
+// The `massprops` command-line tool: `massprops check [options] FILE...` lints the mass properties
+// of URDF/SDF robot models. Exit codes (a contract, see docs/cli.md):
+//   0  nothing at or above the fail level;
+//   1  findings at or above the fail level (--fail-on, default error);
+//   2  a file could not be read or parsed (the others are still checked and reported), a
+//      configuration file is invalid, or the command line is wrong.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "commands.h"
+#include "geometry_cli.h"
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/config.h"
+#include "massprops/analysis/target_profile.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/model/model.h"
+#include "massprops/output/reporters.h"
+#include "safe_write.h"
+#include "target_cli.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using massprops::CheckOptions;
+using massprops::Config;
+using massprops::ConfigError;
+using massprops::FileResult;
+using massprops::Finding;
+using massprops::ReadError;
+using massprops::ReadResult;
+using massprops::Severity;
+
+constexpr int kExitClean = 0;
+constexpr int kExitFindings = 1;
+constexpr int kExitError = 2;  // unreadable input, bad configuration, bad command line
+
+constexpr const char* kExampleName = "two_link_arm.urdf";
+
+struct CheckArgs {
+  std::vector<std::string> files;
+  std::string format = "text";
+  std::string color = "auto";
+  std::string fail_on = "error";
+  std::vector<std::string> disable;
+  std::vector<std::string> severity;
+  double tolerance = 0;
+  bool tolerance_given = false;
+  std::string config;
+  std::vector<std::string> model_paths;
+  bool quiet = false;
+  bool list_rules = false;
+  int jobs = 0;        // 0: one per core
+  std::string target;  // --target; "" when not given
+};
+
+// A command-line mistake found after CLI11 has parsed the arguments.
+struct UsageError {
+  std::string message;
+};
+
+// The folder holding the running executable ("" when it cannot be found).
+fs::path ExecutableDir(const char* argv0) {
+  std::error_code ec;
+  fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec || self.empty()) {
+    if (argv0 == nullptr || std::string(argv0).find('/') == std::string::npos) return {};
+    self = fs::absolute(argv0, ec);
+    if (ec) return {};
+  }
+  return self.parent_path();
+}
+
+// The bundled example model: next to the source tree of a build directory, or installed.
+std::optional<std::string> FindBundledExample(const char* argv0) {
+  std::vector<fs::path> candidates;
+#ifdef MASSPROPS_EXAMPLES_DIR
+  candidates.push_back(fs::path(MASSPROPS_EXAMPLES_DIR) / kExampleName);
+#endif
+  const fs::path dir = ExecutableDir(argv0);
+  if (!dir.empty()) {
+    candidates.push_back(dir / ".." / "examples" / kExampleName);         // <src>/build/massprops
+    candidates.push_back(dir / ".." / ".." / "examples" / kExampleName);  // <src>/build/x/massprops
+    candidates.push_back(dir / ".." / "share" / "massprops" / "examples" / kExampleName);
+  }
+  for (const fs::path& candidate : candidates) {
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return candidate.lexically_normal().string();
+  }
+  return std::nullopt;
+}
+
+// Whether the file's content starts with a <robot> or <sdf> root element (first 64 KiB).
+bool LooksLikeModel(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::string text(64 * 1024, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return massprops::DetectModelFormat(text).has_value();
+}
+
+// Files of a directory tree that look like robot models, sorted. *.urdf and *.sdf are always
+// taken; *.world and *.xml only when their root element is <robot> or <sdf>. Hidden folders are
+// skipped; symbolic links to folders are not followed.
+// Extensions are matched case-insensitively (.URDF, .Sdf). Every other regular file (outside
+// hidden folders) is counted in *skipped.
+std::vector<std::string> CollectModelFiles(const fs::path& dir, int* skipped) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const fs::path& path = it->path();
+    const std::string name = path.filename().string();
+    std::error_code type_ec;
+    if (it->is_directory(type_ec)) {
+      if (!name.empty() && name[0] == '.') it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_regular_file(type_ec)) continue;
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".urdf" || ext == ".sdf") {
+      files.push_back(path.string());
+    } else if ((ext == ".world" || ext == ".xml") && LooksLikeModel(path)) {
+      files.push_back(path.string());
+    } else {
+      ++*skipped;
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Parses "RULE=LEVEL" (LEVEL: off|note|warning|error) into `overrides`.
+void AddOverride(const std::string& rule, const std::string& level_text,
+                 std::map<std::string, std::optional<Severity>>& overrides) {
+  bool known = false;
+  for (const massprops::RuleInfo& info : massprops::AllRules()) known |= info.id == rule;
+  if (!known) {
+    throw UsageError{"unknown rule '" + rule + "' (massprops check --list-rules lists them)"};
+  }
+  if (level_text == "off") {
+    overrides[rule] = std::nullopt;
+    return;
+  }
+  const std::optional<Severity> level = massprops::ParseSeverity(level_text);
+  if (!level) {
+    throw UsageError{"--severity " + rule + "=" + level_text +
+                     ": the level must be off, note, warning or error"};
+  }
+  overrides[rule] = level;
+}
+
+int ListRules(const CheckArgs& args) {
+  const auto& rules = massprops::AllRules();
+  if (args.format == "json") {
+    nlohmann::json out = nlohmann::json::array();
+    for (const massprops::RuleInfo& rule : rules) {
+      out.push_back({{"id", rule.id},
+                     {"severity", massprops::ToString(rule.default_severity)},
+                     {"enabled", rule.enabled_by_default},
+                     {"summary", rule.summary}});
+    }
+    std::cout << out.dump(2) << "\n";
+    return kExitClean;
+  }
+  std::size_t width = 0;
+  for (const massprops::RuleInfo& rule : rules) width = std::max(width, rule.id.size());
+  for (const massprops::RuleInfo& rule : rules) {
+    std::string line = rule.id + std::string(width + 2 - rule.id.size(), ' ');
+    std::string severity = massprops::ToString(rule.default_severity);
+    if (!rule.enabled_by_default) severity += " (off)";
+    line += severity + std::string(severity.size() < 15 ? 15 - severity.size() : 1, ' ');
+    std::cout << line << rule.summary << "\n";
+  }
+  return kExitClean;
+}
+
+// Per-folder configuration lookup, each file read once.
+class ConfigCache {
+ public:
+  // The configuration that applies to a file in `dir`: the nearest .massprops.toml upward, else
+  // the one upward from the working directory; nullptr when there is none. Throws ConfigError.
+  const Config* ForDirectory(const fs::path& dir) {
+    std::optional<std::string> path = massprops::FindConfigUpward(dir.string());
+    if (!path) path = massprops::FindConfigUpward(".");
+    if (!path) return nullptr;
+    auto it = configs_.find(*path);
+    if (it == configs_.end()) it = configs_.emplace(*path, massprops::LoadConfig(*path)).first;
+    return &it->second;
+  }
+
+ private:
+  std::map<std::string, Config> configs_;
+};
+
+// How many threads check files: --jobs, or one per core (at least 1), never more than the files;
+// one for standard input, which is read once, in order.
+std::size_t JobCount(int jobs, const std::vector<std::string>& files) {
+  std::size_t n = jobs > 0 ? static_cast<std::size_t>(jobs) : std::thread::hardware_concurrency();
+  n = std::max<std::size_t>(1, std::min(n, files.size()));
+  if (std::find(files.begin(), files.end(), "-") != files.end()) n = 1;
+  return n;
+}
+
+// Calls work(i) for every i < count on `threads` threads (the calling one included), each taking
+// the next index as it finishes one. work(i) must touch only its own slot i of shared state. An
+// exception thrown by work is rethrown here after every index has been worked on (the one of the
+// lowest index, so that the same one is seen whatever the thread count).
+void RunInParallel(std::size_t count, std::size_t threads,
+                   const std::function<void(std::size_t)>& work) {
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      try {
+        work(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+}
+
+struct Settings {
+  massprops::Target target = massprops::Target::kGeneric;
+  CheckOptions options;
+  Severity fail_on = Severity::kError;
+  std::vector<std::string> model_paths;
+};
+
+int RunCheck(const CheckArgs& args, const char* argv0) {
+  if (args.list_rules) return ListRules(args);
+
+  // Command-line overrides, validated before any file is read.
+  std::map<std::string, std::optional<Severity>> cli_overrides;
+  for (const std::string& rule : args.disable) AddOverride(rule, "off", cli_overrides);
+  for (const std::string& spec : args.severity) {
+    const std::size_t eq = spec.find('=');
+    if (eq == std::string::npos) {
+      throw UsageError{"--severity expects RULE=LEVEL, got '" + spec + "'"};
+    }
+    AddOverride(spec.substr(0, eq), spec.substr(eq + 1), cli_overrides);
+  }
+  const std::optional<Severity> cli_fail_on =
+      args.fail_on.empty() ? std::nullopt : massprops::ParseSeverity(args.fail_on);
+
+  std::optional<Config> explicit_config;
+  if (!args.config.empty()) explicit_config = massprops::LoadConfig(args.config);
+  ConfigCache config_cache;
+
+  auto settings_for = [&](const fs::path& dir) {
+    Settings settings;
+    const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
+    // The target profile first; the configuration and the command line override it.
+    if (!args.target.empty()) {
+      settings.target = *massprops::ParseTarget(args.target);
+    } else if (config && config->target) {
+      settings.target = *config->target;
+    }
+    massprops::ApplyTargetProfile(settings.target, &settings.options);
+    if (config) {
+      massprops::ApplyConfig(*config, settings.options);
+      if (config->fail_on) settings.fail_on = *config->fail_on;
+      settings.model_paths = config->model_paths;
+    }
+    if (args.tolerance_given) settings.options.tolerance = args.tolerance;
+    for (const auto& [rule, level] : cli_overrides) settings.options.overrides[rule] = level;
+    if (cli_fail_on) settings.fail_on = *cli_fail_on;
+    settings.model_paths.insert(settings.model_paths.begin(), args.model_paths.begin(),
+                                args.model_paths.end());
+    return settings;
+  };
+
+  // The inputs: the bundled example when none is given; folders expanded.
+  std::vector<std::string> inputs = args.files;
+  if (inputs.empty()) {
+    const std::optional<std::string> example = FindBundledExample(argv0);
+    if (!example) {
+      throw UsageError{"no FILE given, and the bundled example " + std::string(kExampleName) +
+                       " was not found next to the executable"};
+    }
+    if (!args.quiet) {
+      std::cerr << "massprops: no FILE given; checking the bundled example " << *example << "\n";
+    }
+    inputs.push_back(*example);
+  }
+  std::vector<std::string> files;
+  int skipped_files = 0;  // files of the folders given that are not models
+  bool unreadable_input = false;
+  for (const std::string& input : inputs) {
+    std::error_code ec;
+    if (input != "-" && fs::is_directory(input, ec)) {
+      // A folder that cannot be listed is an error, not "nothing found" (exit 0).
+      std::error_code list_ec;
+      fs::directory_iterator probe(input, list_ec);
+      if (list_ec) {
+        std::cerr << "massprops: error: cannot read the folder " << input << ": "
+                  << list_ec.message() << "\n";
+        unreadable_input = true;
+        continue;
+      }
+      const std::vector<std::string> found = CollectModelFiles(input, &skipped_files);
+      if (found.empty() && !args.quiet) {
+        std::cerr << "massprops: no URDF or SDF files found in " << input << "\n";
+      }
+      files.insert(files.end(), found.begin(), found.end());
+    } else {
+      files.push_back(input);
+    }
+  }
+
+  // Configurations are all loaded before anything is checked, so a bad one stops the run before
+  // any report is written.
+  std::vector<Settings> settings;
+  for (const std::string& file : files) {
+    settings.push_back(settings_for(file == "-" ? fs::path(".") : fs::path(file).parent_path()));
+  }
+
+  // One file's result; reads only its own settings, so files can be checked in parallel.
+  auto check_file = [&](std::size_t i) {
+    const std::string& file = files[i];
+    FileResult result;
+    result.path = file == "-" ? "<stdin>" : file;
+    massprops::ReadOptions read_options;
+    read_options.sdf.model_paths = settings[i].model_paths;
+    const ReadResult read = massprops::ReadModelFile(file, read_options);
+    result.errors = read.errors;
+    for (const ReadError& warning : read.warnings) {
+      Finding finding;
+      finding.rule = massprops::kReadWarningRule;
+      finding.severity = Severity::kWarning;
+      finding.location = warning.location;
+      finding.message =
+          warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
+      result.findings.push_back(finding);
+    }
+    for (Finding& finding : massprops::ReaderFindings(read, settings[i].options)) {
+      result.findings.push_back(std::move(finding));
+    }
+    for (const massprops::Model& model : read.models) {
+      result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
+      result.models.push_back(model.name);
+      CheckOptions check_options = settings[i].options;
+      massprops::cli::UseGeometryShapes(model, settings[i].model_paths, &check_options);
+      std::vector<Finding> findings = massprops::CheckModel(model, check_options);
+      massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
+                                          &findings);
+      if (settings[i].target != massprops::Target::kGeneric) {
+        const std::string text = massprops::cli::ReadTextForTarget(file);
+        massprops::AddTargetFindings(model, settings[i].target, check_options,
+                                     massprops::ReadMujocoCompilerOptions(text), &findings, text);
+      }
+      result.findings.insert(result.findings.end(), findings.begin(), findings.end());
+    }
+    return result;
+  };
+  std::vector<FileResult> results(files.size());
+  RunInParallel(files.size(), JobCount(args.jobs, files),
+                [&](std::size_t i) { results[i] = check_file(i); });
+
+  bool read_failed = false;
+  bool findings_at_fail_level = false;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (!results[i].errors.empty()) read_failed = true;
+    for (const Finding& finding : results[i].findings) {
+      if (finding.severity >= settings[i].fail_on) findings_at_fail_level = true;
+    }
+  }
+
+  massprops::ReportOptions report_options;
+  report_options.quiet = args.quiet;
+  report_options.skipped_files = skipped_files;
+  if (args.color == "always") {
+    report_options.color = true;
+  } else if (args.color == "auto") {
+    const char* no_color = std::getenv("NO_COLOR");
+    report_options.color =
+        isatty(STDOUT_FILENO) != 0 && (no_color == nullptr || no_color[0] == '\0');
+  }
+  const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
+  massprops::WriteReport(std::cout, format, results, report_options);
+  std::cout.flush();
+
+  if (read_failed || unreadable_input) return kExitError;
+  return findings_at_fail_level ? kExitFindings : kExitClean;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "massprops: validate the mass properties (mass, center of mass, inertia) of the links of "
+      "URDF and SDF robot models.",
+      "massprops"};
+  app.set_version_flag("--version", std::string("massprops ") + MASSPROPS_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes of check: 0 nothing at or above the fail level, 1 findings at or above it,\n"
+      "2 a file could not be read or parsed, a bad configuration file, or a usage error.");
+
+  CheckArgs args;
+  CLI::App* check = app.add_subcommand(
+      "check",
+      "Check models for mass properties that no real body could have, and for CAD-export defects. "
+      "With no FILE, checks the bundled example model.");
+  check->add_option("FILE", args.files,
+                    "URDF or SDF files (detected by content), '-' for standard input, or folders "
+                    "(searched recursively for *.urdf, *.sdf, and *.world/*.xml with a <robot> or "
+                    "<sdf> root)");
+  check->add_option("--format", args.format, "Output format")
+      ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
+      ->capture_default_str();
+  check->add_option("--color", args.color, "Colour text output (auto: on a terminal, no NO_COLOR)")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  CLI::Option* fail_on =
+      check
+          ->add_option("--fail-on", args.fail_on,
+                       "Exit with 1 when a finding is at least this severe (default: error, or "
+                       "fail-on in the configuration file)")
+          ->check(CLI::IsMember({"error", "warning", "note"}));
+  check->add_option("--disable", args.disable, "Disable a rule (repeatable)")
+      ->type_name("RULE")
+      ->allow_extra_args(false);
+  check
+      ->add_option("--severity", args.severity,
+                   "Change a rule's severity: RULE=off|note|warning|error (repeatable)")
+      ->type_name("RULE=LEVEL")
+      ->allow_extra_args(false);
+  CLI::Option* tolerance =
+      check
+          ->add_option("--tolerance", args.tolerance,
+                       "Tolerance of the physical-validity test, relative to the trace of the "
+                       "inertia, at least 0 and less than 1 (default 1e-6)")
+          ->check(CLI::Validator(
+              [](std::string& text) -> std::string {
+                char* end = nullptr;
+                const double value = std::strtod(text.c_str(), &end);
+                if (end == text.c_str() || *end != '\0' || !(value >= 0 && value < 1)) {
+                  return "must be a number at least 0 and less than 1, got " + text;
+                }
+                return {};
+              },
+              "0<=X<1"));
+  check
+      ->add_option("--config", args.config,
+                   "Configuration file (default: .massprops.toml found upward from each file, "
+                   "then from the working directory)")
+      ->check(CLI::ExistingFile);
+  check
+      ->add_option("--model-path", args.model_paths,
+                   "Folder searched for SDF model:// URIs (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  massprops::cli::AddTargetOption(check, &args.target);
+  check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
+  check
+      ->add_option("-j,--jobs", args.jobs,
+                   "Check this many files at once (default 0: one per core); the output is the "
+                   "same, byte for byte, whatever the number")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  check->add_flag("--list-rules", args.list_rules, "List the rules and their default severities");
+  massprops::cli::AddGeometryCheckOptions(check);
+
+  // Subcommands defined in other files (src/tool/commands.h) set `run` when chosen.
+  std::function<int()> run;
+  massprops::cli::AddReportCommands(app, &run);
+  massprops::cli::AddFixCommands(app, &run);
+  massprops::cli::AddViewCommands(app, &run);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help and --version have exit code 0; every usage error becomes 2.
+    const int code = app.exit(error);
+    return code == 0 ? kExitClean : kExitError;
+  }
+  if (fail_on->count() == 0) args.fail_on.clear();
+  args.tolerance_given = tolerance->count() > 0;
+
+  try {
+    // A report that did not reach standard output (full disk, closed pipe end) is exit 2.
+    if (run) return massprops::cli::FinishStandardOutput(run());
+    return massprops::cli::FinishStandardOutput(RunCheck(args, argc > 0 ? argv[0] : nullptr));
+  } catch (const UsageError& error) {
+    std::cerr << "massprops: error: " << error.message << "\n";
+    return kExitError;
+  } catch (const ConfigError& error) {
+    std::cerr << error.what() << "\n";
+    return kExitError;
+  } catch (const std::exception& error) {
+    std::cerr << "massprops: internal error: " << error.what() << "\n";
+    return kExitError;
+  }
+}

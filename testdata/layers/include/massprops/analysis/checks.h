@@ -1,0 +1,2 @@
+#pragma once
+#include "massprops/core/inertia.h"

@@ -1,0 +1,2 @@
+// Fine: a core source includes its core header.
+#include "massprops/core/inertia.h"
