@@ -223,21 +223,8 @@ py::array_t<bool> IsPhysicallyValid(
   return result;
 }
 
-void BindRotationalInertia(py::module_& m) {
-  py::class_<RI> c(m, "RotationalInertia", R"doc(
-The rotational inertia I_BP_E of a body B about a point P, expressed in a frame E (kg·m²).
-
-Products of inertia use the negated convention of URDF and SDF: the 3x3 matrix is
-[[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] with Ixy = -∫xy dm, so the ixy, ixz, iyz of a
-URDF <inertia> are these entries. Every constructor and operation whose result could be invalid
-checks it (ValueError with the entries and principal moments); to hold numbers that may be invalid
-use make_from_moments_and_products_of_inertia(..., skip_validity_check=True) or
-from_matrix(..., skip_validity_check=True).
-
->>> I = massprops.RotationalInertia(2.0, 3.0, 4.0)
->>> I.calc_principal_moments_of_inertia()
-array([2., 3., 4.])
-)doc");
+// The constructors and factories of RotationalInertia (checked unless asked not to).
+void DefRotationalInertiaConstructors(py::class_<RI>& c) {
   c.def(py::init<>(), "An inertia whose six entries are NaN.")
       .def(py::init([](double Ixx, double Iyy, double Izz, double Ixy, double Ixz, double Iyz,
                        bool skip_validity_check) {
@@ -283,8 +270,12 @@ array([2., 3., 4.])
           "triaxially_symmetric",
           [](double I) { return Checked(RI::TriaxiallySymmetric(I), "triaxially_symmetric()"); },
           py::arg("I_triaxial"),
-          "Ixx = Iyy = Izz = I_triaxial, zero products (a sphere or cube about its center).")
-      .def("get_moments", &RI::get_moments, "[Ixx, Iyy, Izz] as a numpy array.")
+          "Ixx = Iyy = Izz = I_triaxial, zero products (a sphere or cube about its center).");
+}
+
+// The entries, trace and matrix of a RotationalInertia, and comparison within a precision.
+void DefRotationalInertiaAccessors(py::class_<RI>& c) {
+  c.def("get_moments", &RI::get_moments, "[Ixx, Iyy, Izz] as a numpy array.")
       .def("get_products", &RI::get_products,
            "[Ixy, Ixz, Iyz] (matrix entries, negated convention) as a numpy array.")
       .def("trace", &RI::Trace, "Ixx + Iyy + Izz (invariant under re-expression).")
@@ -303,8 +294,12 @@ array([2., 3., 4.])
           "numpy.asarray(I): the 3x3 matrix.")
       .def("is_nearly_equal_to", &RI::IsNearlyEqualTo, py::arg("other"), py::arg("precision"),
            "True iff max|self − other| over the six entries <= precision · the smaller of the "
-           "two maximum possible moments; False if either has a NaN.")
-      .def(py::self == py::self, "Exact equality of all six entries (NaN compares unequal).")
+           "two maximum possible moments; False if either has a NaN.");
+}
+
+// Equality, sum, difference, scaling and the product with a vector of a RotationalInertia.
+void DefRotationalInertiaArithmetic(py::class_<RI>& c) {
+  c.def(py::self == py::self, "Exact equality of all six entries (NaN compares unequal).")
       .def(py::self != py::self)
       .def(py::self + py::self, "The sum (about the same point, in the same frame).")
       .def(
@@ -343,8 +338,12 @@ array([2., 3., 4.])
           },
           py::is_operator(), "I / s for a scalar s > 0 (ValueError otherwise).")
       .def("multiply_by_scalar_skip_validity_check", &RI::MultiplyByScalarSkipValidityCheck,
-           py::arg("s"), "s · I for any scalar s (even negative), never checked.")
-      .def("set_to_nan", &RI::SetToNaN, "Sets all six entries to NaN.")
+           py::arg("s"), "s · I for any scalar s (even negative), never checked.");
+}
+
+// The NaN / finite / zero predicates, principal moments and physical validity.
+void DefRotationalInertiaValidity(py::class_<RI>& c) {
+  c.def("set_to_nan", &RI::SetToNaN, "Sets all six entries to NaN.")
       .def("set_zero", &RI::SetZero, "Sets all six entries to zero.")
       .def("is_nan", &RI::IsNaN, "True iff any entry is NaN.")
       .def("is_inf", &RI::IsInf, "True iff any entry is +inf or -inf.")
@@ -377,9 +376,13 @@ array([2., 3., 4.])
       .def("criticize_not_physically_valid", &RI::CriticizeNotPhysicallyValid,
            py::arg("relative_tolerance") = kDefaultTolerance,
            "Why could_be_physically_valid(relative_tolerance) is False (entries and principal "
-           "moments quoted); '' when valid.")
-      .def("re_express", &RI::ReExpress, py::arg("R_AE"),
-           "I_BP_A = R_AE · I_BP_E · R_AEᵀ for a rotation matrix R_AE (not checked).")
+           "moments quoted); '' when valid.");
+}
+
+// Re-expression in another frame and the parallel-axis shifts of a RotationalInertia.
+void DefRotationalInertiaFrameChanges(py::class_<RI>& c) {
+  c.def("re_express", &RI::ReExpress, py::arg("R_AE"),
+        "I_BP_A = R_AE · I_BP_E · R_AEᵀ for a rotation matrix R_AE (not checked).")
       .def("shift_from_center_of_mass", &RI::ShiftFromCenterOfMass, py::arg("mass"),
            py::arg("p_BcmQ_E"),
            "Parallel-axis theorem away from the center of mass: self is I_BBcm_E; returns "
@@ -402,8 +405,12 @@ array([2., 3., 4.])
           py::arg("mass"), py::arg("p_PBcm_E"), py::arg("p_QBcm_E"),
           "From I_BP_E to I_BQ_E in one step: I_BP + m·([b]ᵀ[b] − [a]ᵀ[a]) with a = p_PBcm_E, "
           "b = p_QBcm_E (30 flops, no cancellation when P and Q are close). Raises ValueError "
-          "if the result is not physically valid.")
-      .def("__repr__", [](const RI& I) { return "RotationalInertia(" + Entries(I) + ")"; })
+          "if the result is not physically valid.");
+}
+
+// __repr__, __str__ and pickling of RotationalInertia.
+void DefRotationalInertiaPythonProtocol(py::class_<RI>& c) {
+  c.def("__repr__", [](const RI& I) { return "RotationalInertia(" + Entries(I) + ")"; })
       .def("__str__", &Str<RI>)
       .def(py::pickle(
           [](const RI& I) {
@@ -414,17 +421,35 @@ array([2., 3., 4.])
             return RawInertia(t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>(),
                               t[3].cast<double>(), t[4].cast<double>(), t[5].cast<double>());
           }));
+}
+
+// massprops.RotationalInertia: the class, its members by group, unhashable.
+void BindRotationalInertia(py::module_& m) {
+  py::class_<RI> c(m, "RotationalInertia", R"doc(
+The rotational inertia I_BP_E of a body B about a point P, expressed in a frame E (kg·m²).
+
+Products of inertia use the negated convention of URDF and SDF: the 3x3 matrix is
+[[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] with Ixy = -∫xy dm, so the ixy, ixz, iyz of a
+URDF <inertia> are these entries. Every constructor and operation whose result could be invalid
+checks it (ValueError with the entries and principal moments); to hold numbers that may be invalid
+use make_from_moments_and_products_of_inertia(..., skip_validity_check=True) or
+from_matrix(..., skip_validity_check=True).
+
+>>> I = massprops.RotationalInertia(2.0, 3.0, 4.0)
+>>> I.calc_principal_moments_of_inertia()
+array([2., 3., 4.])
+)doc");
+  DefRotationalInertiaConstructors(c);
+  DefRotationalInertiaAccessors(c);
+  DefRotationalInertiaArithmetic(c);
+  DefRotationalInertiaValidity(c);
+  DefRotationalInertiaFrameChanges(c);
+  DefRotationalInertiaPythonProtocol(c);
   c.attr("__hash__") = py::none();
 }
 
-void BindUnitInertia(py::module_& m) {
-  py::class_<UI, RI> c(m, "UnitInertia", R"doc(
-The unit inertia G_BP_E (inertia per unit mass, m²) of a body B about a point P, expressed in E:
-I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
-
->>> G = massprops.UnitInertia.solid_box(0.1, 0.2, 0.3)
->>> 2.0 * G   # the RotationalInertia of a 2 kg box
-)doc");
+// The constructors of UnitInertia and set_from_rotational_inertia.
+void DefUnitInertiaConstructors(py::class_<UI, RI>& c) {
   c.def(py::init<>(), "A unit inertia whose six entries are NaN.")
       .def(py::init([](double Ixx, double Iyy, double Izz, double Ixy, double Ixz, double Iyz,
                        bool skip_validity_check) {
@@ -448,9 +473,13 @@ I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
             return G.SetFromRotationalInertia(I, mass);
           },
           py::arg("I"), py::arg("mass"), py::return_value_policy::reference_internal,
-          "Sets self to I / mass (mass > 0) and returns self.")
-      .def("re_express", &UI::ReExpress, py::arg("R_AE"),
-           "G_BP_A = R_AE · G_BP_E · R_AEᵀ for a rotation matrix R_AE.")
+          "Sets self to I / mass (mass > 0) and returns self.");
+}
+
+// Re-expression in another frame and the parallel-axis shifts of a UnitInertia.
+void DefUnitInertiaFrameChanges(py::class_<UI, RI>& c) {
+  c.def("re_express", &UI::ReExpress, py::arg("R_AE"),
+        "G_BP_A = R_AE · G_BP_E · R_AEᵀ for a rotation matrix R_AE.")
       .def("shift_from_center_of_mass", &UI::ShiftFromCenterOfMass, py::arg("p_BcmQ_E"),
            "G_BQ_E from self = G_BBcm_E: adds |p|²·1 − p·pᵀ.")
       .def(
@@ -468,9 +497,13 @@ I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
                            "shift_to_then_away_from_center_of_mass()");
           },
           py::arg("p_PBcm_E"), py::arg("p_QBcm_E"),
-          "G_BQ_E from self = G_BP_E in one step; ValueError if the result is not valid.")
-      .def_static("point_mass", &UI::PointMass, py::arg("p_FQ"),
-                  "A particle at p_FQ (unit mass) about F's origin: |p|²·1 − p·pᵀ.")
+          "G_BQ_E from self = G_BP_E in one step; ValueError if the result is not valid.");
+}
+
+// The factories of UnitInertia: point mass and uniform solids.
+void DefUnitInertiaShapeFactories(py::class_<UI, RI>& c) {
+  c.def_static("point_mass", &UI::PointMass, py::arg("p_FQ"),
+               "A particle at p_FQ (unit mass) about F's origin: |p|²·1 − p·pᵀ.")
       .def_static(
           "triaxially_symmetric",
           [](double I) { return Checked(UI::TriaxiallySymmetric(I), "triaxially_symmetric()"); },
@@ -512,8 +545,12 @@ I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
                   "Solid tetrahedron with vertices A (the origin), p1, p2, p3, about A.")
       .def_static("solid_tetrahedron_about_point", &UI::SolidTetrahedronAboutPoint, py::arg("p0"),
                   py::arg("p1"), py::arg("p2"), py::arg("p3"),
-                  "Solid tetrahedron with vertices p0..p3 (from a point A), about A.")
-      .def("__repr__", [](const UI& G) { return "UnitInertia(" + Entries(G) + ")"; })
+                  "Solid tetrahedron with vertices p0..p3 (from a point A), about A.");
+}
+
+// __repr__ and pickling of UnitInertia.
+void DefUnitInertiaPythonProtocol(py::class_<UI, RI>& c) {
+  c.def("__repr__", [](const UI& G) { return "UnitInertia(" + Entries(G) + ")"; })
       .def(py::pickle(
           [](const UI& G) {
             return py::make_tuple(G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2), G(1, 2));
@@ -525,22 +562,28 @@ I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
           }));
 }
 
+// massprops.UnitInertia (a RotationalInertia): the class and its members by group.
+void BindUnitInertia(py::module_& m) {
+  py::class_<UI, RI> c(m, "UnitInertia", R"doc(
+The unit inertia G_BP_E (inertia per unit mass, m²) of a body B about a point P, expressed in E:
+I_BP_E = m · G_BP_E. Shape factories give the unit inertia of uniform solids.
+
+>>> G = massprops.UnitInertia.solid_box(0.1, 0.2, 0.3)
+>>> 2.0 * G   # the RotationalInertia of a 2 kg box
+)doc");
+  DefUnitInertiaConstructors(c);
+  DefUnitInertiaFrameChanges(c);
+  DefUnitInertiaShapeFactories(c);
+  DefUnitInertiaPythonProtocol(c);
+}
+
 bool SpatialEqual(const SI& a, const SI& b) {
   return a.get_mass() == b.get_mass() && a.get_com() == b.get_com() &&
          a.get_unit_inertia() == b.get_unit_inertia();
 }
 
-void BindSpatialInertia(py::module_& m) {
-  py::class_<SI> c(m, "SpatialInertia", R"doc(
-The mass distribution of a body S about a point P, expressed in a frame E: mass m, center of
-mass p_PScm_E, and unit inertia G_SP_E about P (Drake's SpatialInertia). Validity is decided at
-the center of mass. Constructors check validity (ValueError) unless skip_validity_check.
-
->>> box = massprops.SpatialInertia.make_from_central_inertia(
-...     2.0, [0.1, 0, 0], 2.0 * massprops.UnitInertia.solid_box(0.1, 0.2, 0.3))
->>> (box + box.shift([0.5, 0, 0])).get_mass()
-4.0
-)doc");
+// The constructors and factories of SpatialInertia (checked unless asked not to).
+void DefSpatialInertiaConstructors(py::class_<SI>& c) {
   c.def(py::init<>(), "Mass, center of mass and unit inertia all NaN.")
       .def(py::init([](double mass, const Vector3d& p, const UI& G, bool skip) {
              const SI M(mass, p, G, true);
@@ -579,8 +622,12 @@ the center of mass. Constructors check validity (ValueError) unless skip_validit
       .def_static("make_unitary", &SI::MakeUnitary,
                   "Mass 1, center of mass at P, unit inertia the identity.")
       .def_static("zero", &SI::Zero, "Mass 0, center of mass at P, zero inertia.")
-      .def_static("nan", &SI::NaN, "All NaN.")
-      .def("get_mass", &SI::get_mass, "The mass m.")
+      .def_static("nan", &SI::NaN, "All NaN.");
+}
+
+// The mass, center of mass and inertias of a SpatialInertia, and its validity.
+void DefSpatialInertiaAccessors(py::class_<SI>& c) {
+  c.def("get_mass", &SI::get_mass, "The mass m.")
       .def("get_com", &SI::get_com, "p_PScm_E, the center of mass from P (numpy array).")
       .def("calc_com_moment", &SI::CalcComMoment, "m·p_PScm_E.")
       .def("get_unit_inertia", &SI::get_unit_inertia, "G_SP_E, the unit inertia about P.")
@@ -595,10 +642,14 @@ the center of mass. Constructors check validity (ValueError) unless skip_validit
            "unit inertia passes could_be_physically_valid(relative_tolerance). Never raises.")
       .def("criticize_not_physically_valid", &SI::CriticizeNotPhysicallyValid,
            py::arg("relative_tolerance") = kDefaultTolerance,
-           "What fails is_physically_valid(relative_tolerance); '' when valid.")
-      .def("calc_pseudo_inertia", &SI::CalcPseudoInertia,
-           "The 4x4 pseudo-inertia [[Σ_P, m·c], [m·cᵀ, m]] (positive semi-definite iff "
-           "physically realizable; Wensing, Kim, Slotine, RA-L 2018).")
+           "What fails is_physically_valid(relative_tolerance); '' when valid.");
+}
+
+// Pseudo-inertia, 6x6 matrix, shift, re-expression, sum and equality of SpatialInertia.
+void DefSpatialInertiaOperations(py::class_<SI>& c) {
+  c.def("calc_pseudo_inertia", &SI::CalcPseudoInertia,
+        "The 4x4 pseudo-inertia [[Σ_P, m·c], [m·cᵀ, m]] (positive semi-definite iff "
+        "physically realizable; Wensing, Kim, Slotine, RA-L 2018).")
       .def("copy_to_full_matrix6", &SI::CopyToFullMatrix6,
            "The 6x6 spatial inertia matrix about P (angular first, Drake's layout).")
       .def("shift", &SI::Shift, py::arg("p_PQ_E"),
@@ -611,13 +662,18 @@ the center of mass. Constructors check validity (ValueError) unless skip_validit
       .def("__eq__", &SpatialEqual, py::is_operator(),
            "Exact equality of mass, center of mass and unit inertia.")
       .def(
-          "__ne__", [](const SI& a, const SI& b) { return !SpatialEqual(a, b); }, py::is_operator())
-      .def("__repr__",
-           [](const SI& M) {
-             return "SpatialInertia(mass=" + Repr(M.get_mass()) +
-                    ", p_PScm_E=" + VectorRepr(M.get_com()) + ", G_SP_E=UnitInertia(" +
-                    Entries(M.get_unit_inertia()) + "))";
-           })
+          "__ne__", [](const SI& a, const SI& b) { return !SpatialEqual(a, b); },
+          py::is_operator());
+}
+
+// __repr__, __str__ and pickling of SpatialInertia.
+void DefSpatialInertiaPythonProtocol(py::class_<SI>& c) {
+  c.def("__repr__",
+        [](const SI& M) {
+          return "SpatialInertia(mass=" + Repr(M.get_mass()) +
+                 ", p_PScm_E=" + VectorRepr(M.get_com()) + ", G_SP_E=UnitInertia(" +
+                 Entries(M.get_unit_inertia()) + "))";
+        })
       .def("__str__", &Str<SI>)
       .def(py::pickle(
           [](const SI& M) {
@@ -634,6 +690,24 @@ the center of mass. Constructors check validity (ValueError) unless skip_validit
                                     g[3].cast<double>(), g[4].cast<double>(), g[5].cast<double>())),
                       true);
           }));
+}
+
+// massprops.SpatialInertia: the class, its members by group, unhashable.
+void BindSpatialInertia(py::module_& m) {
+  py::class_<SI> c(m, "SpatialInertia", R"doc(
+The mass distribution of a body S about a point P, expressed in a frame E: mass m, center of
+mass p_PScm_E, and unit inertia G_SP_E about P (Drake's SpatialInertia). Validity is decided at
+the center of mass. Constructors check validity (ValueError) unless skip_validity_check.
+
+>>> box = massprops.SpatialInertia.make_from_central_inertia(
+...     2.0, [0.1, 0, 0], 2.0 * massprops.UnitInertia.solid_box(0.1, 0.2, 0.3))
+>>> (box + box.shift([0.5, 0, 0])).get_mass()
+4.0
+)doc");
+  DefSpatialInertiaConstructors(c);
+  DefSpatialInertiaAccessors(c);
+  DefSpatialInertiaOperations(c);
+  DefSpatialInertiaPythonProtocol(c);
   c.attr("__hash__") = py::none();
 }
 

@@ -171,6 +171,19 @@ RotationalInertia<double> Unchecked(const Eigen::Matrix3d& I) {
       I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2), true);
 }
 
+// The SpatialInertia of the inertial about the link origin Bo, expressed in B (not checked).
+SpatialInertia<double> SpatialInertiaAboutLinkOrigin(const Inertial& in) {
+  const double mass = in.mass;
+  const Eigen::Vector3d& c = in.X_BBi.p_AB;
+  const Eigen::Matrix3d I = CentralInertiaInLinkFrame(in);
+  UnitInertia<double> G = UnitInertia<double>::PointMass(c);
+  if (mass != 0) {
+    G = UnitInertia<double>(Unchecked(I / mass));
+    G.ShiftFromCenterOfMassInPlace(c);
+  }
+  return SpatialInertia<double>(mass, c, G, true);
+}
+
 // The composite of a body (welded group or model), with the frame that expresses it.
 struct Composite {
   std::string frame;
@@ -187,6 +200,25 @@ struct PyWeldedGroup {
   bool is_moving = false;
   Composite composite;
 };
+
+// The welded groups of the model with their names and composites, as Model.welded_groups gives.
+std::vector<PyWeldedGroup> WeldedGroupsOf(const Model& model) {
+  std::vector<PyWeldedGroup> groups;
+  for (const WeldedGroup& g : FindWeldedGroups(model)) {
+    PyWeldedGroup p;
+    p.root_link = g.root_link;
+    p.link_indices = g.links;
+    for (int i : g.links) p.links.push_back(model.links[static_cast<std::size_t>(i)].name);
+    p.X_RL = g.X_RL;
+    if (g.parent_joint >= 0) {
+      p.parent_joint = model.joints[static_cast<std::size_t>(g.parent_joint)].name;
+    }
+    p.is_moving = g.is_moving;
+    p.composite = {g.root_link, CalcCompositeInertia(model, g), {}};
+    groups.push_back(std::move(p));
+  }
+  return groups;
+}
 
 struct FixResult {
   std::string path;
@@ -355,12 +387,16 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
 
 // -------------------------------------------------------------------------------------- fix
 
-FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& apply,
-              const std::string& repair, bool fix_units, double density,
-              const py::object& from_geometry, double tolerance, bool geometry,
-              const std::vector<std::string>& package_paths,
-              const std::vector<std::string>& model_paths) {
-  const Source source = ToSource(source_arg, "fix");
+// What fix()'s from_geometry names: every link (True), none (False), or the links listed.
+struct FromGeometry {
+  bool all = false;
+  std::vector<std::string> links;
+};
+
+// Checks fix()'s apply, repair, density and tolerance (ValueError) and reads from_geometry
+// (TypeError when it is not True, False, a link name or a list of link names).
+FromGeometry CheckFixArguments(const std::vector<std::string>& apply, const std::string& repair,
+                               double density, double tolerance, const py::object& from_geometry) {
   for (const std::string& rule : apply) RequireKnownRule(rule, "fix: apply");
   if (repair != "project" && repair != "balance") {
     throw py::value_error("fix: repair must be 'project' or 'balance', got '" + repair + "'");
@@ -372,56 +408,60 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
     throw py::value_error("fix: tolerance must be at least 0 and less than 1, got " +
                           Repr(tolerance));
   }
-  bool from_geometry_all = false;
-  std::vector<std::string> from_geometry_links;
+  FromGeometry result;
   if (py::isinstance<py::bool_>(from_geometry)) {
-    from_geometry_all = from_geometry.cast<bool>();
+    result.all = from_geometry.cast<bool>();
   } else if (py::isinstance<py::str>(from_geometry)) {
-    from_geometry_links.push_back(from_geometry.cast<std::string>());
+    result.links.push_back(from_geometry.cast<std::string>());
   } else {
     try {
-      from_geometry_links = from_geometry.cast<std::vector<std::string>>();
+      result.links = from_geometry.cast<std::vector<std::string>>();
     } catch (const py::cast_error&) {
       throw py::type_error("fix: from_geometry must be True, False or a list of link names");
     }
   }
+  return result;
+}
 
-  FixResult result;
-  result.path = source.path;
+// Sets result->path and result->original (the text given, or the file's bytes; ReadError when
+// the file cannot be read) and returns the models read from that text (ReadError if none).
+std::vector<Model> ReadFixInput(const Source& source, const std::vector<std::string>& model_paths,
+                                FixResult* result) {
+  result->path = source.path;
   if (source.is_text) {
-    result.original = source.text;
+    result->original = source.text;
   } else if (std::optional<ReadError> error =
-                 ReadInputFile(source.path, kMaxModelFileBytes, &result.original)) {
+                 ReadInputFile(source.path, kMaxModelFileBytes, &result->original)) {
     RaiseReadError({*error});
   }
-  const Source text_source{true, source.path, result.original};
+  const Source text_source{true, source.path, result->original};
   ReadResult read;
-  const std::vector<Model> models = ReadModels(text_source, model_paths, &read);
+  return ReadModels(text_source, model_paths, &read);
+}
 
+// The repair options of fix()'s arguments, without a shape function.
+RepairOptions MakeRepairOptions(const std::string& repair, bool fix_units,
+                                const std::vector<std::string>& apply, double density,
+                                const FromGeometry& from_geometry, double tolerance) {
   RepairOptions options;
   options.method =
       repair == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject;
   options.fix_units = fix_units;
   options.apply = apply;  // PlanRepairs plans heuristic repairs only when named
   options.density = density;
-  options.from_geometry_all = from_geometry_all;
-  options.from_geometry_links = from_geometry_links;
+  options.from_geometry_all = from_geometry.all;
+  options.from_geometry_links = from_geometry.links;
   options.tolerance = tolerance;
-  CheckOptions check_options;
-  check_options.tolerance = tolerance;
-  MeshCache cache;
-  MeshResolveOptions resolve;
-  resolve.package_paths = package_paths;
-  resolve.model_paths = model_paths;
-  resolve.model_file = source.is_text ? std::string() : source.path;
-  resolve.cache = &cache;
-  if (geometry || from_geometry_all || !from_geometry_links.empty()) {
-    options.shape = MakeLinkShapeFunction(resolve);
-    if (geometry) check_options.shape = options.shape;
-  }
+  return options;
+}
 
-  // `apply`: error findings are always repaired (physics decides); a warning or note is repaired
-  // only when its rule is named in `apply` (a heuristic repair runs only when asked for).
+// Plans the repairs of every model into result->changes and returns the names of all links.
+// `apply`: error findings are always repaired (physics decides); a warning or note is repaired
+// only when its rule is named in `apply` (a heuristic repair runs only when asked for).
+std::vector<std::string> PlanFixRepairs(const std::vector<Model>& models,
+                                        const std::vector<std::string>& apply,
+                                        const CheckOptions& check_options,
+                                        const RepairOptions& options, FixResult* result) {
   const std::set<std::string> applied(apply.begin(), apply.end());
   std::vector<std::string> known_links;
   for (const Model& model : models) {
@@ -433,13 +473,23 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
                                   }),
                    findings.end());
     std::vector<Repair> planned = PlanRepairs(model, findings, options);
-    result.changes.insert(result.changes.end(), planned.begin(), planned.end());
+    result->changes.insert(result->changes.end(), planned.begin(), planned.end());
   }
+  return known_links;
+}
+
+// Raises ValueError for a from_geometry link the file does not have, and adds a warning for
+// each one no repair changes, saying why.
+void WarnUnrepairedGeometryLinks(const std::vector<Model>& models,
+                                 const std::vector<std::string>& known_links,
+                                 const std::vector<std::string>& from_geometry_links,
+                                 const MeshResolveOptions& resolve, const std::string& path,
+                                 FixResult* result) {
   for (const std::string& link : from_geometry_links) {
     if (std::find(known_links.begin(), known_links.end(), link) == known_links.end()) {
-      throw py::value_error("fix: from_geometry: " + source.path + " has no link '" + link + "'");
+      throw py::value_error("fix: from_geometry: " + path + " has no link '" + link + "'");
     }
-    const bool repaired = std::any_of(result.changes.begin(), result.changes.end(),
+    const bool repaired = std::any_of(result->changes.begin(), result->changes.end(),
                                       [&](const Repair& r) { return r.link == link; });
     if (repaired) continue;
     for (const Model& model : models) {
@@ -450,35 +500,77 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
                                   &why)) {
         why = "its geometry gives the inertial it already has";
       }
-      result.warnings.push_back("from_geometry: link '" + link + "' is left as it is: " + why);
+      result->warnings.push_back("from_geometry: link '" + link + "' is left as it is: " + why);
     }
   }
-  const PatchResult patched =
-      PatchModelText(result.original, models.front().format, result.changes);
-  result.text = patched.text;
-  result.patch_errors = patched.errors;
-  // Repairs that could not be written are not changes.
-  result.changes.erase(std::remove_if(result.changes.begin(), result.changes.end(),
-                                      [&](const Repair& r) {
-                                        return std::any_of(
-                                            patched.errors.begin(), patched.errors.end(),
-                                            [&](const PatchError& e) {
-                                              return e.link == r.link && e.line == r.link_line;
-                                            });
-                                      }),
-                       result.changes.end());
-  result.changed = result.text != result.original;
+}
 
-  // Never write something worse: the output must read back; its remaining errors are listed.
+// Writes result->changes into result->text (sets patch_errors and changed); repairs that could
+// not be written are not changes.
+void PatchFixedText(Model::Format format, FixResult* result) {
+  const PatchResult patched = PatchModelText(result->original, format, result->changes);
+  result->text = patched.text;
+  result->patch_errors = patched.errors;
+  result->changes.erase(std::remove_if(result->changes.begin(), result->changes.end(),
+                                       [&](const Repair& r) {
+                                         return std::any_of(
+                                             patched.errors.begin(), patched.errors.end(),
+                                             [&](const PatchError& e) {
+                                               return e.link == r.link && e.line == r.link_line;
+                                             });
+                                       }),
+                        result->changes.end());
+  result->changed = result->text != result->original;
+}
+
+// Never write something worse: whether result->text reads back, and its remaining errors.
+void RecheckFixedText(const std::string& path, const std::vector<std::string>& model_paths,
+                      const CheckOptions& check_options, FixResult* result) {
   ReadOptions read_options;
   read_options.sdf.model_paths = model_paths;
-  const ReadResult reread = ReadModelString(result.text, source.path, read_options);
-  result.reads_back = reread.ok();
+  const ReadResult reread = ReadModelString(result->text, path, read_options);
+  result->reads_back = reread.ok();
   for (const Model& model : reread.models) {
     for (Finding& f : CheckModel(model, check_options)) {
-      if (f.severity == Severity::kError) result.remaining_errors.push_back(std::move(f));
+      if (f.severity == Severity::kError) result->remaining_errors.push_back(std::move(f));
     }
   }
+}
+
+// The engine of massprops.fix: checks the arguments, plans and writes the repairs, re-checks.
+FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& apply,
+              const std::string& repair, bool fix_units, double density,
+              const py::object& from_geometry_arg, double tolerance, bool geometry,
+              const std::vector<std::string>& package_paths,
+              const std::vector<std::string>& model_paths) {
+  const Source source = ToSource(source_arg, "fix");
+  const FromGeometry from_geometry =
+      CheckFixArguments(apply, repair, density, tolerance, from_geometry_arg);
+
+  FixResult result;
+  const std::vector<Model> models = ReadFixInput(source, model_paths, &result);
+
+  RepairOptions options =
+      MakeRepairOptions(repair, fix_units, apply, density, from_geometry, tolerance);
+  CheckOptions check_options;
+  check_options.tolerance = tolerance;
+  MeshCache cache;
+  MeshResolveOptions resolve;
+  resolve.package_paths = package_paths;
+  resolve.model_paths = model_paths;
+  resolve.model_file = source.is_text ? std::string() : source.path;
+  resolve.cache = &cache;
+  if (geometry || from_geometry.all || !from_geometry.links.empty()) {
+    options.shape = MakeLinkShapeFunction(resolve);
+    if (geometry) check_options.shape = options.shape;
+  }
+
+  const std::vector<std::string> known_links =
+      PlanFixRepairs(models, apply, check_options, options, &result);
+  WarnUnrepairedGeometryLinks(models, known_links, from_geometry.links, resolve, source.path,
+                              &result);
+  PatchFixedText(models.front().format, &result);
+  RecheckFixedText(source.path, model_paths, check_options, &result);
   return result;
 }
 
@@ -527,7 +619,8 @@ py::object Report(const py::handle& source_arg, const std::map<std::string, doub
 
 // ------------------------------------------------------------------------------ the classes
 
-void BindModelClasses(py::module_& m) {
+// massprops.SourceLocation: where an element was read from.
+void BindSourceLocation(py::module_& m) {
   py::class_<SourceLocation>(m, "SourceLocation",
                              "Where an element was read from: file, line and column (1-based; "
                              "0 when unknown).")
@@ -542,7 +635,10 @@ void BindModelClasses(py::module_& m) {
       .def("__str__", [](const SourceLocation& l) {
         return l.file + (l.line > 0 ? ":" + std::to_string(l.line) : "");
       });
+}
 
+// massprops.Pose: a rigid pose X_AB.
+void BindPose(py::module_& m) {
   py::class_<Pose>(m, "Pose",
                    "A rigid pose X_AB: p_AB (position of B's origin from A's, in A) and R_AB "
                    "(rotation re-expressing vectors from B in A).")
@@ -560,7 +656,10 @@ void BindModelClasses(py::module_& m) {
             << X.R_AB(2, 0) << ", " << X.R_AB(2, 1) << ", " << X.R_AB(2, 2) << "]])";
         return out.str();
       });
+}
 
+// massprops.Inertial: an <inertial> exactly as written.
+void BindInertial(py::module_& m) {
   py::class_<Inertial>(m, "Inertial",
                        "An <inertial> exactly as written: mass, the pose X_BBi of the inertial "
                        "frame in the link frame, and the six numbers about the center of mass "
@@ -592,7 +691,10 @@ void BindModelClasses(py::module_& m) {
                ", ixz=" + Repr(in.ixz) + ", iyz=" + Repr(in.iyz) +
                ", line=" + std::to_string(in.location.line) + ")";
       });
+}
 
+// massprops.Geometry: a collision or visual geometry of a link.
+void BindGeometry(py::module_& m) {
   py::class_<Geometry>(m, "Geometry", "A collision or visual geometry of a link.")
       .def_property_readonly(
           "type", [](const Geometry& g) { return GeometryTypeName(g.type); },
@@ -611,7 +713,10 @@ void BindModelClasses(py::module_& m) {
                (g.is_collision ? ", collision" : ", visual") +
                ", line=" + std::to_string(g.location.line) + ")";
       });
+}
 
+// massprops.Link: a link, its inertial as written and as core inertias, its geometries.
+void BindLink(py::module_& m) {
   py::class_<Link>(m, "Link",
                    "A link: its name, its <inertial> (or None), geometries and source line.\n\n"
                    ">>> link = massprops.read('robot.urdf').link('arm')\n"
@@ -652,15 +757,7 @@ void BindModelClasses(py::module_& m) {
           "spatial_inertia",
           [](const Link& l) -> std::optional<SpatialInertia<double>> {
             if (!l.inertial) return std::nullopt;
-            const double mass = l.inertial->mass;
-            const Eigen::Vector3d& c = l.inertial->X_BBi.p_AB;
-            const Eigen::Matrix3d I = CentralInertiaInLinkFrame(*l.inertial);
-            UnitInertia<double> G = UnitInertia<double>::PointMass(c);
-            if (mass != 0) {
-              G = UnitInertia<double>(Unchecked(I / mass));
-              G.ShiftFromCenterOfMassInPlace(c);
-            }
-            return SpatialInertia<double>(mass, c, G, true);
+            return SpatialInertiaAboutLinkOrigin(*l.inertial);
           },
           "The SpatialInertia about the link origin Bo, expressed in B (not checked: call "
           "is_physically_valid()), or None.")
@@ -680,7 +777,10 @@ void BindModelClasses(py::module_& m) {
         if (l.inertial) text += ", mass=" + Repr(l.inertial->mass);
         return text + ", line=" + std::to_string(l.location.line) + ")";
       });
+}
 
+// massprops.Joint: a joint of the model.
+void BindJoint(py::module_& m) {
   py::class_<Joint>(m, "Joint", "A joint: name, type, parent and child links, origin, axis.")
       .def_readonly("name", &Joint::name, "The joint's name.")
       .def_readonly("type", &Joint::type_name, "As written: 'revolute', 'fixed', ...")
@@ -693,7 +793,10 @@ void BindModelClasses(py::module_& m) {
         return "Joint(" + Quote(j.name) + ", " + Quote(j.type_name) +
                ", parent=" + Quote(j.parent) + ", child=" + Quote(j.child) + ")";
       });
+}
 
+// massprops.CompositeInertia: the composite of several links in the frame of a link.
+void BindCompositeInertia(py::module_& m) {
   py::class_<Composite>(m, "CompositeInertia",
                         "The composite mass properties of several links (a welded group or "
                         "the whole model) in the frame of a link.")
@@ -720,7 +823,10 @@ void BindModelClasses(py::module_& m) {
                ", com=[" + Repr(c.inertia.p_RoScm_R(0)) + ", " + Repr(c.inertia.p_RoScm_R(1)) +
                ", " + Repr(c.inertia.p_RoScm_R(2)) + "])";
       });
+}
 
+// massprops.WeldedGroup: links joined by fixed joints, with their composite.
+void BindWeldedGroup(py::module_& m) {
   py::class_<PyWeldedGroup>(m, "WeldedGroup",
                             "Links joined by fixed joints (one rigid body), with their "
                             "composite in the root link's frame.")
@@ -739,7 +845,10 @@ void BindModelClasses(py::module_& m) {
                std::to_string(g.links.size()) + " links, mass=" + Repr(g.composite.inertia.mass) +
                ")";
       });
+}
 
+// massprops.Model: links, joints, welded groups and composite of a model.
+void BindModel(py::module_& m) {
   py::class_<Model>(m, "Model",
                     "A robot model read from a URDF or SDF file: links, joints, root link.\n\n"
                     ">>> model = massprops.read('robot.urdf')\n"
@@ -771,25 +880,7 @@ void BindModelClasses(py::module_& m) {
           },
           py::arg("name"), "The link of that name (KeyError if none).")
       .def(
-          "welded_groups",
-          [](const Model& model) {
-            std::vector<PyWeldedGroup> groups;
-            for (const WeldedGroup& g : FindWeldedGroups(model)) {
-              PyWeldedGroup p;
-              p.root_link = g.root_link;
-              p.link_indices = g.links;
-              for (int i : g.links)
-                p.links.push_back(model.links[static_cast<std::size_t>(i)].name);
-              p.X_RL = g.X_RL;
-              if (g.parent_joint >= 0) {
-                p.parent_joint = model.joints[static_cast<std::size_t>(g.parent_joint)].name;
-              }
-              p.is_moving = g.is_moving;
-              p.composite = {g.root_link, CalcCompositeInertia(model, g), {}};
-              groups.push_back(std::move(p));
-            }
-            return groups;
-          },
+          "welded_groups", [](const Model& model) { return WeldedGroupsOf(model); },
           "The welded groups (links joined by fixed joints), each with its composite.")
       .def(
           "composite",
@@ -809,7 +900,21 @@ void BindModelClasses(py::module_& m) {
       });
 }
 
-void BindFindingClasses(py::module_& m) {
+// The classes of a read model, in the order their names appear in later signatures.
+void BindModelClasses(py::module_& m) {
+  BindSourceLocation(m);
+  BindPose(m);
+  BindInertial(m);
+  BindGeometry(m);
+  BindLink(m);
+  BindJoint(m);
+  BindCompositeInertia(m);
+  BindWeldedGroup(m);
+  BindModel(m);
+}
+
+// massprops.FieldChange: one number (or run of numbers) a repair changes.
+void BindFieldChange(py::module_& m) {
   py::class_<FieldChange>(m, "FieldChange",
                           "One number (or run of numbers) of the file that a repair changes.")
       .def_readonly("element", &FieldChange::element, "'mass', 'inertia', 'origin' or 'pose'.")
@@ -833,7 +938,10 @@ void BindFindingClasses(py::module_& m) {
         }
         return text + "])";
       });
+}
 
+// massprops.Repair: the new mass properties of one link.
+void BindRepair(py::module_& m) {
   py::class_<Repair>(m, "Repair",
                      "The new mass properties of one link and how they differ from the file.")
       .def_readonly("rule", &Repair::rule, "The finding it answers first.")
@@ -858,7 +966,10 @@ void BindFindingClasses(py::module_& m) {
         return "Repair(link=" + Quote(r.link) + ", rule=" + Quote(r.rule) +
                ", method=" + Quote(r.method) + ")";
       });
+}
 
+// massprops.Finding: one problem found in a model.
+void BindFinding(py::module_& m) {
   py::class_<Finding>(m, "Finding",
                       "One problem found in a model: rule, severity, link, file, line, "
                       "message and the measured values behind it.")
@@ -907,7 +1018,10 @@ void BindFindingClasses(py::module_& m) {
                ", link=" + Quote(f.link) + ", file=" + Quote(f.location.file) +
                ", line=" + std::to_string(f.location.line) + ")";
       });
+}
 
+// massprops.PatchError: a repair that could not be written.
+void BindPatchError(py::module_& m) {
   py::class_<PatchError>(m, "PatchError", "A repair that could not be written, and why.")
       .def_readonly("link", &PatchError::link, "The link's name.")
       .def_readonly("line", &PatchError::line, "Line of the link.")
@@ -916,7 +1030,10 @@ void BindFindingClasses(py::module_& m) {
         return "PatchError(link=" + Quote(e.link) + ", line=" + std::to_string(e.line) +
                ", message=" + Quote(e.message) + ")";
       });
+}
 
+// massprops.FixResult: what fix() did.
+void BindFixResult(py::module_& m) {
   py::class_<FixResult>(m, "FixResult",
                         "What fix() did: the repairs (changes), the new text, what is left.")
       .def_readonly("path", &FixResult::path, "The input path ('<string>' for text).")
@@ -947,6 +1064,15 @@ void BindFindingClasses(py::module_& m) {
                " change(s), changed=" + (r.changed ? "True" : "False") +
                ", remaining_errors=" + std::to_string(r.remaining_errors.size()) + ")";
       });
+}
+
+// The classes of check and fix results.
+void BindFindingClasses(py::module_& m) {
+  BindFieldChange(m);
+  BindRepair(m);
+  BindFinding(m);
+  BindPatchError(m);
+  BindFixResult(m);
 }
 
 }  // namespace
