@@ -89,326 +89,459 @@ void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
   }
 }
 
-int RunFix(const FixArgs& args) {
+// Rejects contradictory or out-of-range options before anything is read; prints the reason and
+// returns false when the command line is wrong.
+bool CheckFixArgs(const FixArgs& args) {
   if (args.in_place && !args.output.empty()) {
     std::cerr << "massprops: error: --in-place and -o cannot be combined\n";
-    return kExitError;
+    return false;
   }
   if (!args.backup.empty() && !args.in_place) {
     std::cerr << "massprops: error: --backup needs --in-place\n";
-    return kExitError;
+    return false;
   }
   if (args.dry_run && (args.in_place || !args.output.empty() || args.diff)) {
     std::cerr << "massprops: error: --dry-run cannot be combined with --diff, -o or --in-place\n";
-    return kExitError;
+    return false;
   }
   if (args.in_place && args.file == "-") {
     std::cerr << "massprops: error: --in-place needs a file, not standard input\n";
-    return kExitError;
+    return false;
   }
   if (!(args.tolerance >= 0) || !std::isfinite(args.tolerance)) {
     std::cerr << "massprops: error: --tolerance must be a finite number at least 0, got "
               << args.tolerance << "\n";
-    return kExitError;
+    return false;
   }
   if (!(args.density > 0) || !std::isfinite(args.density)) {
     std::cerr << "massprops: error: --density must be a positive number of kg/m³\n";
-    return kExitError;
+    return false;
   }
+  return true;
+}
 
+// The file being repaired: its text, the name messages give it, and what the reader made of it.
+struct FixInput {
+  std::string name;  // the file, or "<stdin>" for '-'
   std::string text;
-  if (std::optional<ReadError> error = ReadInputFile(args.file, kMaxModelFileBytes, &text)) {
-    std::cerr << error->ToString() << "\n";
-    return kExitError;
-  }
-  const std::string name = args.file == "-" ? "<stdin>" : args.file;
   ReadOptions read_options;
-  read_options.sdf.model_paths = args.model_paths;
-  const ReadResult read = ReadModelString(text, name, read_options);
-  if (!read.ok() || read.models.empty()) {
-    for (const ReadError& e : read.errors) std::cerr << e.ToString() << "\n";
-    if (read.errors.empty()) std::cerr << name << ": no model found\n";
-    return kExitError;
-  }
+  ReadResult read;
+};
 
-  RepairOptions options;
-  options.method =
-      args.repair == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject;
-  options.fix_units = args.fix_units;
-  options.apply = args.apply;
-  for (const std::string& rule : args.apply) {
+// Reads and parses FILE into *input; prints the errors and returns false when it cannot be read
+// or holds no model.
+bool ReadFixInput(const FixArgs& args, FixInput* input) {
+  if (std::optional<ReadError> error = ReadInputFile(args.file, kMaxModelFileBytes, &input->text)) {
+    std::cerr << error->ToString() << "\n";
+    return false;
+  }
+  input->name = args.file == "-" ? "<stdin>" : args.file;
+  input->read_options.sdf.model_paths = args.model_paths;
+  input->read = ReadModelString(input->text, input->name, input->read_options);
+  if (!input->read.ok() || input->read.models.empty()) {
+    for (const ReadError& e : input->read.errors) std::cerr << e.ToString() << "\n";
+    if (input->read.errors.empty()) std::cerr << input->name << ": no model found\n";
+    return false;
+  }
+  return true;
+}
+
+// How a run plans and judges repairs, from the command line and the file's text. Filled in place
+// (resolve points into mesh_cache), so it is neither copied nor moved.
+struct FixSetup {
+  RepairOptions repair;
+  CheckOptions check;
+  Target target = Target::kGeneric;
+  MujocoCompilerOptions mujoco;
+  MeshCache mesh_cache;  // each mesh file is read once
+  MeshResolveOptions resolve;
+};
+
+// Whether every --apply RULE names a heuristic repair (or "all"); prints the choices when not.
+bool CheckApplyRules(const std::vector<std::string>& apply) {
+  for (const std::string& rule : apply) {
     const std::vector<std::string>& known = HeuristicRepairRules();
     if (rule != "all" && std::find(known.begin(), known.end(), rule) == known.end()) {
       std::cerr << "massprops: error: --apply: '" << rule << "' is not a heuristic repair; one of";
       for (const std::string& k : known) std::cerr << " " << k;
       std::cerr << ", or all\n";
-      return kExitError;
+      return false;
     }
   }
+  return true;
+}
+
+// Fills *setup from the command line and the file's text; returns false (with the reason
+// printed) when --apply names an unknown rule.
+bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup) {
+  if (!CheckApplyRules(args.apply)) return false;
+  RepairOptions& options = setup->repair;
+  options.method =
+      args.repair == "balance" ? InertiaRepairMethod::kBalance : InertiaRepairMethod::kProject;
+  options.fix_units = args.fix_units;
+  options.apply = args.apply;
   options.density = args.density;
   options.from_geometry_all = args.from_geometry && args.from_geometry_links.empty();
   options.from_geometry_links = args.from_geometry_links;
   options.tolerance = args.tolerance;
-  CheckOptions check_options;
-  const Target fix_target = args.target.empty() ? Target::kGeneric : *ParseTarget(args.target);
-  ApplyTargetProfile(fix_target, &check_options);
-  check_options.tolerance = args.tolerance;
-  const MujocoCompilerOptions mujoco_options = ReadMujocoCompilerOptions(text);
+  setup->target = args.target.empty() ? Target::kGeneric : *ParseTarget(args.target);
+  ApplyTargetProfile(setup->target, &setup->check);
+  setup->check.tolerance = args.tolerance;
+  setup->mujoco = ReadMujocoCompilerOptions(text);
   // Meshes are read only when asked: --geometry (the checks and repairs use them) or
   // --from-geometry (the inertials it replaces may come from meshes). Each file is read once.
-  MeshCache mesh_cache;
-  const MeshResolveOptions resolve =
-      MakeResolveOptions(args.package_paths, args.model_paths, args.file, &mesh_cache);
+  setup->resolve =
+      MakeResolveOptions(args.package_paths, args.model_paths, args.file, &setup->mesh_cache);
   if (args.geometry || args.from_geometry) {
-    options.shape = MakeLinkShapeFunction(resolve);
-    if (args.geometry) check_options.shape = options.shape;
+    options.shape = MakeLinkShapeFunction(setup->resolve);
+    if (args.geometry) setup->check.shape = options.shape;
   }
+  return true;
+}
 
-  PrintReaderFindings(read, check_options);
-
+// The repairs planned for every model of the file, and those that were not made.
+struct RepairPlan {
   std::vector<Repair> repairs;
   std::vector<RefusedRepair> refused;
   std::vector<std::string> known_links;
   // Heuristic repairs that were not asked for, per rule: listed so that nothing is silent.
   std::map<std::string, std::vector<Repair>> not_asked;
+};
+
+// Plans the repairs of every model: those asked for (and the target's), and the heuristic ones
+// that were not asked for.
+RepairPlan PlanFix(const ReadResult& read, const FixSetup& setup) {
+  RepairPlan plan;
   for (const Model& model : read.models) {
-    for (const Link& link : model.links) known_links.push_back(link.name);
-    const std::vector<Finding> findings = CheckModel(model, check_options);
-    std::vector<Repair> planned = PlanRepairs(model, findings, options, &refused);
-    if (fix_target != Target::kGeneric) {  // what the simulator needs on top (target_profile.h)
-      planned = PlanTargetRepairs(model, fix_target, mujoco_options, planned);
+    for (const Link& link : model.links) plan.known_links.push_back(link.name);
+    const std::vector<Finding> findings = CheckModel(model, setup.check);
+    std::vector<Repair> planned = PlanRepairs(model, findings, setup.repair, &plan.refused);
+    if (setup.target != Target::kGeneric) {  // what the simulator needs on top (target_profile.h)
+      planned = PlanTargetRepairs(model, setup.target, setup.mujoco, planned);
     }
-    repairs.insert(repairs.end(), planned.begin(), planned.end());
-    RepairOptions every = options;
+    plan.repairs.insert(plan.repairs.end(), planned.begin(), planned.end());
+    RepairOptions every = setup.repair;
     every.apply = {"all"};
     for (Repair& r : PlanRepairs(model, findings, every)) {
       const bool planned_already = std::any_of(planned.begin(), planned.end(),
                                                [&](const Repair& p) { return p.link == r.link; });
-      if (!planned_already) not_asked[r.rule].push_back(std::move(r));
+      if (!planned_already) plan.not_asked[r.rule].push_back(std::move(r));
     }
   }
-  // Repairs of links defined in an included SDF model belong to that model's file: written there
-  // with --include-files, otherwise named (never applied to an element of the same name here).
+  return plan;
+}
+
+// Moves the repairs of links defined in an included SDF model out of *repairs; returns them by
+// file. They belong to that model's file: written there with --include-files, otherwise named
+// (never applied to an element of the same name here).
+std::map<std::string, std::vector<Repair>> TakeIncludedRepairs(const FixInput& input,
+                                                               std::vector<Repair>* repairs) {
   std::map<std::string, std::vector<Repair>> included_repairs;  // by file
-  {
-    std::vector<Repair> top;
-    for (Repair& r : repairs) {
-      const std::string file = FileOfLink(read.models, r.link, r.link_line);
-      if (file.empty() || file == name) {
-        top.push_back(std::move(r));
-      } else {
-        included_repairs[file].push_back(std::move(r));
-      }
+  std::vector<Repair> top;
+  for (Repair& r : *repairs) {
+    const std::string file = FileOfLink(input.read.models, r.link, r.link_line);
+    if (file.empty() || file == input.name) {
+      top.push_back(std::move(r));
+    } else {
+      included_repairs[file].push_back(std::move(r));
     }
-    repairs = std::move(top);
   }
-  int included_applied = 0;
-  int included_skipped = 0;
-  std::vector<std::pair<std::string, std::string>> included_outputs;  // file, patched text
-  std::vector<Finding> included_remaining;  // errors left in the repaired included files
+  *repairs = std::move(top);
+  return included_repairs;
+}
+
+// What repairing the included models' files gave.
+struct IncludedFixes {
+  int applied = 0;
+  int skipped = 0;
+  std::vector<std::pair<std::string, std::string>> outputs;  // file, patched text
+  std::vector<Finding> remaining;  // errors left in the repaired included files
+};
+
+// Patches one included model's file with its repairs, checks that it reads back and collects
+// the errors left in it; returns false (with the reason printed) when it cannot be read or the
+// result does not read back.
+bool FixIncludedFile(const std::string& file, const std::vector<Repair>& file_repairs,
+                     const FixInput& input, const FixSetup& setup, IncludedFixes* fixes) {
+  std::string included_text;
+  if (std::optional<ReadError> error = ReadInputFile(file, kMaxModelFileBytes, &included_text)) {
+    std::cerr << error->ToString() << "\n";
+    return false;
+  }
+  PatchOptions patch_options;
+  patch_options.included = true;
+  const PatchResult included =
+      PatchModelText(included_text, Model::Format::kSdf, file_repairs, patch_options);
+  for (const PatchError& e : included.errors) {
+    std::cerr << file << ":" << e.line << ": link '" << e.link
+              << "': the repair cannot be written: " << e.message << "\n";
+  }
+  const ReadResult reread_included = ReadModelString(included.text, file, input.read_options);
+  if (!reread_included.ok()) {
+    std::cerr << "massprops: internal error: the repaired " << file
+              << " does not read back; nothing written:\n";
+    for (const ReadError& e : reread_included.errors) std::cerr << "  " << e.ToString() << "\n";
+    return false;
+  }
+  fixes->applied += included.applied;
+  if (included.text != included_text) fixes->outputs.emplace_back(file, included.text);
+  for (const Model& model : reread_included.models) {
+    for (const Finding& f : CheckModel(model, setup.check)) {
+      if (f.severity == Severity::kError) fixes->remaining.push_back(f);
+    }
+  }
+  return true;
+}
+
+// Repairs the included models' files with --include-files (kept in memory until written), or
+// names each of their repairs as not applied; returns false when one of them fails.
+bool FixIncludedFiles(const FixArgs& args, const FixInput& input, const FixSetup& setup,
+                      const std::map<std::string, std::vector<Repair>>& included_repairs,
+                      IncludedFixes* fixes) {
   for (const auto& [file, file_repairs] : included_repairs) {
     if (!args.include_files) {
       for (const Repair& r : file_repairs) {
-        ++included_skipped;
+        ++fixes->skipped;
         std::cerr << file << ":" << r.link_line << ": link '" << r.link << "' (" << r.rule
-                  << ") is defined in this included model, not in " << name
+                  << ") is defined in this included model, not in " << input.name
                   << ": not repaired; fix that file, or run with --include-files\n";
       }
       continue;
     }
-    std::string included_text;
-    if (std::optional<ReadError> error = ReadInputFile(file, kMaxModelFileBytes, &included_text)) {
-      std::cerr << error->ToString() << "\n";
-      return kExitError;
-    }
-    PatchOptions patch_options;
-    patch_options.included = true;
-    const PatchResult included =
-        PatchModelText(included_text, Model::Format::kSdf, file_repairs, patch_options);
-    for (const PatchError& e : included.errors) {
-      std::cerr << file << ":" << e.line << ": link '" << e.link
-                << "': the repair cannot be written: " << e.message << "\n";
-    }
-    const ReadResult reread_included = ReadModelString(included.text, file, read_options);
-    if (!reread_included.ok()) {
-      std::cerr << "massprops: internal error: the repaired " << file
-                << " does not read back; nothing written:\n";
-      for (const ReadError& e : reread_included.errors) std::cerr << "  " << e.ToString() << "\n";
-      return kExitError;
-    }
-    included_applied += included.applied;
-    if (included.text != included_text) included_outputs.emplace_back(file, included.text);
-    for (const Model& model : reread_included.models) {
-      for (const Finding& f : CheckModel(model, check_options)) {
-        if (f.severity == Severity::kError) included_remaining.push_back(f);
-      }
-    }
+    if (!FixIncludedFile(file, file_repairs, input, setup, fixes)) return false;
   }
+  return true;
+}
+
+// Checks the links named by --from-geometry: an unknown one is an error (returns false); one
+// that got no repair is named with the reason, rather than changed nothing silently.
+bool ExplainFromGeometryLinks(const FixArgs& args, const FixInput& input, const FixSetup& setup,
+                              const RepairPlan& plan) {
   for (const std::string& link : args.from_geometry_links) {
-    if (std::find(known_links.begin(), known_links.end(), link) == known_links.end()) {
-      std::cerr << "massprops: error: --from-geometry: " << name << " has no link '" << link
+    if (std::find(plan.known_links.begin(), plan.known_links.end(), link) ==
+        plan.known_links.end()) {
+      std::cerr << "massprops: error: --from-geometry: " << input.name << " has no link '" << link
                 << "'\n";
-      return kExitError;
+      return false;
     }
-    // A named link that got no repair: say why, rather than change nothing silently.
-    const bool repaired = std::any_of(repairs.begin(), repairs.end(),
+    const bool repaired = std::any_of(plan.repairs.begin(), plan.repairs.end(),
                                       [&](const Repair& r) { return r.link == link; });
     if (repaired) continue;
-    for (const Model& model : read.models) {
+    for (const Model& model : input.read.models) {
       const int index = model.FindLink(link);
       if (index < 0) continue;
       std::string why;
-      if (CalcLinkGeometryInertia(model.links[index], 1.0, resolve, &why)) {
+      if (CalcLinkGeometryInertia(model.links[index], 1.0, setup.resolve, &why)) {
         why = "its geometry gives the inertial it already has";
       }
       std::cerr << "massprops: warning: --from-geometry: link '" << link
                 << "' is left as it is: " << why << "\n";
     }
   }
-  const PatchResult patched = PatchModelText(text, read.models.front().format, repairs);
+  return true;
+}
+
+// Lists the errors left (they have no repair) and returns their number. When included files are
+// repaired in place the top-level model is judged again after they are written (its welded groups
+// use them): `includes_written` says whether that is `final_read`. Error-level reader findings
+// (urdf-not-loadable, inertial-unreadable, ...) count: fix cannot repair them, so the file is not
+// clean.
+int ListRemainingErrors(const ReadResult& final_read, bool includes_written,
+                        const IncludedFixes& included, const FixSetup& setup,
+                        const std::string& text) {
+  auto rewritten = [&](const std::string& file) {
+    return std::any_of(included.outputs.begin(), included.outputs.end(),
+                       [&](const auto& output) { return output.first == file; });
+  };
+  std::vector<Finding> remaining = includes_written ? std::vector<Finding>{} : included.remaining;
+  for (const Finding& f : ReaderFindings(final_read, setup.check)) {
+    if (f.severity == Severity::kError) remaining.push_back(f);
+  }
+  for (const Model& model : final_read.models) {
+    std::vector<Finding> found = CheckModel(model, setup.check);
+    AddTargetFindings(model, setup.target, setup.check, setup.mujoco, &found, text);
+    for (const Finding& f : found) {
+      // Without the written includes, a file being repaired is judged on its repaired text.
+      if (f.severity != Severity::kError) continue;
+      if (!includes_written && rewritten(f.location.file)) continue;
+      remaining.push_back(f);
+    }
+  }
+  for (const Finding& f : remaining) {
+    std::cerr << f.location.file << ":" << f.location.line
+              << ": error: " << ShortenLongWords(f.message) << " [" << f.rule << "] (no repair)\n";
+  }
+  return static_cast<int>(remaining.size());
+}
+
+// --dry-run: prints each repair that would be written (at its first changed line), then the
+// heuristic ones not asked for.
+void PrintDryRun(const std::string& name, const RepairPlan& plan, const PatchResult& patched,
+                 bool changed) {
+  const std::vector<Repair>& repairs = plan.repairs;
+  std::vector<bool> failed(repairs.size(), false);
+  for (std::size_t i = 0; i < repairs.size(); ++i) {
+    for (const PatchError& e : patched.errors) {
+      if (e.link == repairs[i].link && e.line == repairs[i].link_line) failed[i] = true;
+    }
+    if (failed[i]) continue;
+    const Repair& r = repairs[i];
+    int line = r.link_line;  // the first change that has a line (an inserted one has none)
+    for (const FieldChange& change : r.changes) {
+      if (change.line > 0) {
+        line = change.line;
+        break;
+      }
+    }
+    std::cout << name << ":" << line << ": " << DescribeRepair(r) << "\n";
+  }
+  for (const auto& [rule, list] : plan.not_asked) {
+    for (const Repair& r : list) {
+      std::cout << name << ":" << r.link_line << ": not applied (a guess; --apply " << rule
+                << " applies it): " << DescribeRepair(r) << "\n";
+    }
+  }
+  if (!changed) std::cout << name << ": no change needed\n";
+}
+
+// --diff: the unified diff of FILE, then of each included file to be rewritten.
+void PrintDiffs(const FixArgs& args, const FixInput& input, const PatchResult& patched,
+                const IncludedFixes& included) {
+  std::cout << UnifiedDiff(input.text, patched.text, args.file);
+  for (const auto& [file, included_text] : included.outputs) {
+    std::string before;
+    ReadInputFile(file, kMaxModelFileBytes, &before);
+    std::cout << UnifiedDiff(before, included_text, file);
+  }
+}
+
+// Writes the repaired FILE where the command line says (in place, -o OUT, or standard output),
+// then the repaired included files in place; returns false (with the reason printed) when a write
+// fails.
+bool WriteFixOutputs(const FixArgs& args, const FixInput& input, const PatchResult& patched,
+                     bool changed, const IncludedFixes& included, std::vector<std::string>* notes) {
+  if (args.in_place) {
+    if (changed) {
+      if (!args.backup.empty()) {
+        if (auto error = WriteFileSafely(args.file + args.backup, input.text, notes)) {
+          std::cerr << "massprops: error: " << *error << "; nothing written\n";
+          return false;
+        }
+      }
+      if (auto error = WriteFileSafely(args.file, patched.text, notes)) {
+        std::cerr << "massprops: error: " << *error << "; " << args.file << " is unchanged\n";
+        return false;
+      }
+    }
+  } else if (!args.output.empty() && args.output != "-") {
+    std::error_code ec;
+    if (!changed && args.file != "-" && fs::equivalent(args.output, args.file, ec)) {
+      // -o FILE naming the input itself: a file that needs no change is not rewritten.
+    } else if (auto error = WriteFileSafely(args.output, patched.text, notes)) {
+      std::cerr << "massprops: error: " << *error << "; nothing written\n";
+      return false;
+    }
+  } else if (!args.diff || args.output == "-") {
+    std::cout << patched.text;
+  }
+  // Included models are always repaired in place (they are other files than FILE).
+  for (const auto& [file, included_text] : included.outputs) {
+    if (auto error = WriteFileSafely(file, included_text, notes)) {
+      std::cerr << "massprops: error: " << *error << "; " << file << " is unchanged\n";
+      return false;
+    }
+    std::cerr << "massprops: " << file << ": repaired (an included model)\n";
+  }
+  return true;
+}
+
+// The closing line on standard error: how many links were repaired, and what was not.
+void PrintFixSummary(const FixArgs& args, const std::string& name, const RepairPlan& plan,
+                     const PatchResult& patched, bool changed, const IncludedFixes& included,
+                     int remaining_errors) {
+  std::cerr << "massprops: " << name << ": " << patched.applied + included.applied
+            << " link(s) repaired"
+            << (changed || !included.outputs.empty() ? "" : ", no change needed");
+  if (!patched.errors.empty()) {
+    std::cerr << "; " << patched.errors.size() << " repair(s) could not be written";
+  }
+  if (included.skipped > 0) {
+    std::cerr << "; " << included.skipped << " repair(s) of included models not applied";
+  }
+  if (remaining_errors > 0) std::cerr << "; " << remaining_errors << " error(s) have no repair";
+  if (!plan.refused.empty()) std::cerr << "; " << plan.refused.size() << " repair(s) refused";
+  if (!plan.not_asked.empty() && !args.dry_run) {
+    std::cerr << "; heuristic repairs not applied (see --dry-run):";
+    for (const auto& [rule, list] : plan.not_asked) {
+      std::cerr << " " << rule << " ×" << list.size();
+    }
+    std::cerr << " (--apply RULE,... applies them)";
+  }
+  std::cerr << "\n";
+}
+
+// Writes the repaired files (or prints the --dry-run plan) and lists the errors left; returns the
+// exit code.
+int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
+              const RepairPlan& plan, const PatchResult& patched, const ReadResult& reread,
+              const IncludedFixes& included) {
+  const bool changed = patched.text != input.text;
+  for (const RefusedRepair& r : plan.refused) {
+    std::cerr << input.name << ":" << r.link_line << ": link '" << r.link << "' [" << r.rule
+              << "]: " << r.why << "\n";
+  }
+  int remaining_errors = 0;
+  if (args.dry_run || included.outputs.empty()) {
+    remaining_errors = ListRemainingErrors(reread, false, included, setup, input.text);
+  }
+  if (args.dry_run) {
+    PrintDryRun(input.name, plan, patched, changed);
+  } else {
+    if (args.diff) PrintDiffs(args, input, patched, included);
+    std::vector<std::string> notes;
+    if (!WriteFixOutputs(args, input, patched, changed, included, &notes)) return kExitError;
+    if (!included.outputs.empty()) {
+      remaining_errors =
+          ListRemainingErrors(ReadModelString(patched.text, input.name, input.read_options), true,
+                              included, setup, input.text);
+    }
+    for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
+  }
+  std::cout.flush();
+  PrintFixSummary(args, input.name, plan, patched, changed, included, remaining_errors);
+  return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
+}
+
+int RunFix(const FixArgs& args) {
+  if (!CheckFixArgs(args)) return kExitError;
+  FixInput input;
+  if (!ReadFixInput(args, &input)) return kExitError;
+  FixSetup setup;
+  if (!ConfigureFix(args, input.text, &setup)) return kExitError;
+  PrintReaderFindings(input.read, setup.check);
+
+  RepairPlan plan = PlanFix(input.read, setup);
+  const std::map<std::string, std::vector<Repair>> included_repairs =
+      TakeIncludedRepairs(input, &plan.repairs);
+  IncludedFixes included;
+  if (!FixIncludedFiles(args, input, setup, included_repairs, &included)) return kExitError;
+  if (!ExplainFromGeometryLinks(args, input, setup, plan)) return kExitError;
+  const PatchResult patched =
+      PatchModelText(input.text, input.read.models.front().format, plan.repairs);
   for (const PatchError& e : patched.errors) {
-    std::cerr << name << ":" << e.line << ": link '" << e.link
+    std::cerr << input.name << ":" << e.line << ": link '" << e.link
               << "': the repair cannot be written: " << e.message << "\n";
   }
 
   // Never write something worse: the output must read back, and its remaining errors are listed.
-  const ReadResult reread = ReadModelString(patched.text, name, read_options);
+  const ReadResult reread = ReadModelString(patched.text, input.name, input.read_options);
   if (!reread.ok()) {
     std::cerr << "massprops: internal error: the repaired text does not read back; nothing "
                  "written:\n";
     for (const ReadError& e : reread.errors) std::cerr << "  " << e.ToString() << "\n";
     return kExitError;
   }
-  // The errors left, listed once the output is final: when included files are repaired in place
-  // the top-level model is judged again after they are written (its welded groups use them).
-  // Error-level reader findings (urdf-not-loadable, inertial-unreadable, ...) count: fix cannot
-  // repair them, so the file is not clean.
-  auto list_remaining = [&](const ReadResult& final_read, bool includes_written) {
-    auto rewritten = [&](const std::string& file) {
-      return std::any_of(included_outputs.begin(), included_outputs.end(),
-                         [&](const auto& output) { return output.first == file; });
-    };
-    std::vector<Finding> remaining = includes_written ? std::vector<Finding>{} : included_remaining;
-    for (const Finding& f : ReaderFindings(final_read, check_options)) {
-      if (f.severity == Severity::kError) remaining.push_back(f);
-    }
-    for (const Model& model : final_read.models) {
-      std::vector<Finding> found = CheckModel(model, check_options);
-      AddTargetFindings(model, fix_target, check_options, mujoco_options, &found, text);
-      for (const Finding& f : found) {
-        // Without the written includes, a file being repaired is judged on its repaired text.
-        if (f.severity != Severity::kError) continue;
-        if (!includes_written && rewritten(f.location.file)) continue;
-        remaining.push_back(f);
-      }
-    }
-    for (const Finding& f : remaining) {
-      std::cerr << f.location.file << ":" << f.location.line
-                << ": error: " << ShortenLongWords(f.message) << " [" << f.rule
-                << "] (no repair)\n";
-    }
-    return static_cast<int>(remaining.size());
-  };
-  const bool changed = patched.text != text;
-  for (const RefusedRepair& r : refused) {
-    std::cerr << name << ":" << r.link_line << ": link '" << r.link << "' [" << r.rule
-              << "]: " << r.why << "\n";
-  }
-
-  int remaining_errors = 0;
-  if (args.dry_run || included_outputs.empty()) remaining_errors = list_remaining(reread, false);
-  if (args.dry_run) {
-    std::vector<bool> failed(repairs.size(), false);
-    for (std::size_t i = 0; i < repairs.size(); ++i) {
-      for (const PatchError& e : patched.errors) {
-        if (e.link == repairs[i].link && e.line == repairs[i].link_line) failed[i] = true;
-      }
-      if (failed[i]) continue;
-      const Repair& r = repairs[i];
-      int line = r.link_line;  // the first change that has a line (an inserted one has none)
-      for (const FieldChange& change : r.changes) {
-        if (change.line > 0) {
-          line = change.line;
-          break;
-        }
-      }
-      std::cout << name << ":" << line << ": " << DescribeRepair(r) << "\n";
-    }
-    for (const auto& [rule, list] : not_asked) {
-      for (const Repair& r : list) {
-        std::cout << name << ":" << r.link_line << ": not applied (a guess; --apply " << rule
-                  << " applies it): " << DescribeRepair(r) << "\n";
-      }
-    }
-    if (!changed) std::cout << name << ": no change needed\n";
-  } else {
-    if (args.diff) {
-      std::cout << UnifiedDiff(text, patched.text, args.file);
-      for (const auto& [file, included_text] : included_outputs) {
-        std::string before;
-        ReadInputFile(file, kMaxModelFileBytes, &before);
-        std::cout << UnifiedDiff(before, included_text, file);
-      }
-    }
-    std::vector<std::string> notes;
-    if (args.in_place) {
-      if (changed) {
-        if (!args.backup.empty()) {
-          if (auto error = WriteFileSafely(args.file + args.backup, text, &notes)) {
-            std::cerr << "massprops: error: " << *error << "; nothing written\n";
-            return kExitError;
-          }
-        }
-        if (auto error = WriteFileSafely(args.file, patched.text, &notes)) {
-          std::cerr << "massprops: error: " << *error << "; " << args.file << " is unchanged\n";
-          return kExitError;
-        }
-      }
-    } else if (!args.output.empty() && args.output != "-") {
-      std::error_code ec;
-      if (!changed && args.file != "-" && fs::equivalent(args.output, args.file, ec)) {
-        // -o FILE naming the input itself: a file that needs no change is not rewritten.
-      } else if (auto error = WriteFileSafely(args.output, patched.text, &notes)) {
-        std::cerr << "massprops: error: " << *error << "; nothing written\n";
-        return kExitError;
-      }
-    } else if (!args.diff || args.output == "-") {
-      std::cout << patched.text;
-    }
-    // Included models are always repaired in place (they are other files than FILE).
-    for (const auto& [file, included_text] : included_outputs) {
-      if (auto error = WriteFileSafely(file, included_text, &notes)) {
-        std::cerr << "massprops: error: " << *error << "; " << file << " is unchanged\n";
-        return kExitError;
-      }
-      std::cerr << "massprops: " << file << ": repaired (an included model)\n";
-    }
-    if (!included_outputs.empty()) {
-      remaining_errors = list_remaining(ReadModelString(patched.text, name, read_options), true);
-    }
-    for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
-  }
-  std::cout.flush();
-  std::cerr << "massprops: " << name << ": " << patched.applied + included_applied
-            << " link(s) repaired"
-            << (changed || !included_outputs.empty() ? "" : ", no change needed");
-  if (!patched.errors.empty()) {
-    std::cerr << "; " << patched.errors.size() << " repair(s) could not be written";
-  }
-  if (included_skipped > 0) {
-    std::cerr << "; " << included_skipped << " repair(s) of included models not applied";
-  }
-  if (remaining_errors > 0) std::cerr << "; " << remaining_errors << " error(s) have no repair";
-  if (!refused.empty()) std::cerr << "; " << refused.size() << " repair(s) refused";
-  if (!not_asked.empty() && !args.dry_run) {
-    std::cerr << "; heuristic repairs not applied (see --dry-run):";
-    for (const auto& [rule, list] : not_asked) {
-      std::cerr << " " << rule << " ×" << list.size();
-    }
-    std::cerr << " (--apply RULE,... applies them)";
-  }
-  std::cerr << "\n";
-  return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
+  return FinishFix(args, input, setup, plan, patched, reread, included);
 }
 
 }  // namespace

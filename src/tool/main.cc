@@ -255,50 +255,54 @@ struct Settings {
   std::vector<std::string> model_paths;
 };
 
-int RunCheck(const CheckArgs& args, const char* argv0) {
-  if (args.list_rules) return ListRules(args);
+// The rule overrides and fail level given on the command line; they win over the configuration.
+struct CliOverrides {
+  std::map<std::string, std::optional<Severity>> rules;
+  std::optional<Severity> fail_on;
+};
 
-  // Command-line overrides, validated before any file is read.
-  std::map<std::string, std::optional<Severity>> cli_overrides;
-  for (const std::string& rule : args.disable) AddOverride(rule, "off", cli_overrides);
+// Reads --disable, --severity and --fail-on, validated before any file is read. Throws
+// UsageError.
+CliOverrides ParseCliOverrides(const CheckArgs& args) {
+  CliOverrides cli;
+  for (const std::string& rule : args.disable) AddOverride(rule, "off", cli.rules);
   for (const std::string& spec : args.severity) {
     const std::size_t eq = spec.find('=');
     if (eq == std::string::npos) {
       throw UsageError{"--severity expects RULE=LEVEL, got '" + spec + "'"};
     }
-    AddOverride(spec.substr(0, eq), spec.substr(eq + 1), cli_overrides);
+    AddOverride(spec.substr(0, eq), spec.substr(eq + 1), cli.rules);
   }
-  const std::optional<Severity> cli_fail_on =
-      args.fail_on.empty() ? std::nullopt : massprops::ParseSeverity(args.fail_on);
+  cli.fail_on = args.fail_on.empty() ? std::nullopt : massprops::ParseSeverity(args.fail_on);
+  return cli;
+}
 
-  std::optional<Config> explicit_config;
-  if (!args.config.empty()) explicit_config = massprops::LoadConfig(args.config);
-  ConfigCache config_cache;
+// The settings of one file: the target profile first, then the configuration (`config`, may be
+// null), then the command line, each overriding the one before.
+Settings SettingsFor(const CheckArgs& args, const CliOverrides& cli, const Config* config) {
+  Settings settings;
+  if (!args.target.empty()) {
+    settings.target = *massprops::ParseTarget(args.target);
+  } else if (config && config->target) {
+    settings.target = *config->target;
+  }
+  massprops::ApplyTargetProfile(settings.target, &settings.options);
+  if (config) {
+    massprops::ApplyConfig(*config, settings.options);
+    if (config->fail_on) settings.fail_on = *config->fail_on;
+    settings.model_paths = config->model_paths;
+  }
+  if (args.tolerance_given) settings.options.tolerance = args.tolerance;
+  for (const auto& [rule, level] : cli.rules) settings.options.overrides[rule] = level;
+  if (cli.fail_on) settings.fail_on = *cli.fail_on;
+  settings.model_paths.insert(settings.model_paths.begin(), args.model_paths.begin(),
+                              args.model_paths.end());
+  return settings;
+}
 
-  auto settings_for = [&](const fs::path& dir) {
-    Settings settings;
-    const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
-    // The target profile first; the configuration and the command line override it.
-    if (!args.target.empty()) {
-      settings.target = *massprops::ParseTarget(args.target);
-    } else if (config && config->target) {
-      settings.target = *config->target;
-    }
-    massprops::ApplyTargetProfile(settings.target, &settings.options);
-    if (config) {
-      massprops::ApplyConfig(*config, settings.options);
-      if (config->fail_on) settings.fail_on = *config->fail_on;
-      settings.model_paths = config->model_paths;
-    }
-    if (args.tolerance_given) settings.options.tolerance = args.tolerance;
-    for (const auto& [rule, level] : cli_overrides) settings.options.overrides[rule] = level;
-    if (cli_fail_on) settings.fail_on = *cli_fail_on;
-    settings.model_paths.insert(settings.model_paths.begin(), args.model_paths.begin(),
-                                args.model_paths.end());
-    return settings;
-  };
-
-  // The inputs: the bundled example when none is given; folders expanded.
+// The FILE arguments, or the bundled example when none is given (said on standard error unless
+// --quiet). Throws UsageError when the example cannot be found.
+std::vector<std::string> InputsOrExample(const CheckArgs& args, const char* argv0) {
   std::vector<std::string> inputs = args.files;
   if (inputs.empty()) {
     const std::optional<std::string> example = FindBundledExample(argv0);
@@ -311,9 +315,19 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
     }
     inputs.push_back(*example);
   }
+  return inputs;
+}
+
+// The files to check, with folders expanded.
+struct CheckInputs {
   std::vector<std::string> files;
-  int skipped_files = 0;  // files of the folders given that are not models
-  bool unreadable_input = false;
+  int skipped_files = 0;          // files of the folders given that are not models
+  bool unreadable_input = false;  // a folder could not be listed
+};
+
+// Expands the folders among the inputs into the model files they hold.
+CheckInputs ExpandInputs(const CheckArgs& args, const std::vector<std::string>& inputs) {
+  CheckInputs expanded;
   for (const std::string& input : inputs) {
     std::error_code ec;
     if (input != "-" && fs::is_directory(input, ec)) {
@@ -323,77 +337,92 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
       if (list_ec) {
         std::cerr << "massprops: error: cannot read the folder " << input << ": "
                   << list_ec.message() << "\n";
-        unreadable_input = true;
+        expanded.unreadable_input = true;
         continue;
       }
-      const std::vector<std::string> found = CollectModelFiles(input, &skipped_files);
+      const std::vector<std::string> found = CollectModelFiles(input, &expanded.skipped_files);
       if (found.empty() && !args.quiet) {
         std::cerr << "massprops: no URDF or SDF files found in " << input << "\n";
       }
-      files.insert(files.end(), found.begin(), found.end());
+      expanded.files.insert(expanded.files.end(), found.begin(), found.end());
     } else {
-      files.push_back(input);
+      expanded.files.push_back(input);
     }
   }
+  return expanded;
+}
 
-  // Configurations are all loaded before anything is checked, so a bad one stops the run before
-  // any report is written.
+// The settings of each file. They are all loaded before anything is checked, so a bad
+// configuration stops the run before any report is written. Throws ConfigError.
+std::vector<Settings> LoadSettings(const CheckArgs& args, const CliOverrides& cli,
+                                   const std::optional<Config>& explicit_config,
+                                   const std::vector<std::string>& files) {
+  ConfigCache config_cache;
   std::vector<Settings> settings;
   for (const std::string& file : files) {
-    settings.push_back(settings_for(file == "-" ? fs::path(".") : fs::path(file).parent_path()));
+    const fs::path dir = file == "-" ? fs::path(".") : fs::path(file).parent_path();
+    const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
+    settings.push_back(SettingsFor(args, cli, config));
   }
+  return settings;
+}
 
-  // One file's result; reads only its own settings, so files can be checked in parallel.
-  auto check_file = [&](std::size_t i) {
-    const std::string& file = files[i];
-    FileResult result;
-    result.path = file == "-" ? "<stdin>" : file;
-    massprops::ReadOptions read_options;
-    read_options.sdf.model_paths = settings[i].model_paths;
-    const ReadResult read = massprops::ReadModelFile(file, read_options);
-    result.errors = read.errors;
-    for (const ReadError& warning : read.warnings) {
-      Finding finding;
-      finding.rule = massprops::kReadWarningRule;
-      finding.severity = Severity::kWarning;
-      finding.location = warning.location;
-      finding.message =
-          warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
-      result.findings.push_back(finding);
+// One file's result; reads only its own settings, so files can be checked in parallel.
+FileResult CheckFile(const std::string& file, const Settings& settings) {
+  FileResult result;
+  result.path = file == "-" ? "<stdin>" : file;
+  massprops::ReadOptions read_options;
+  read_options.sdf.model_paths = settings.model_paths;
+  const ReadResult read = massprops::ReadModelFile(file, read_options);
+  result.errors = read.errors;
+  for (const ReadError& warning : read.warnings) {
+    Finding finding;
+    finding.rule = massprops::kReadWarningRule;
+    finding.severity = Severity::kWarning;
+    finding.location = warning.location;
+    finding.message =
+        warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
+    result.findings.push_back(finding);
+  }
+  for (Finding& finding : massprops::ReaderFindings(read, settings.options)) {
+    result.findings.push_back(std::move(finding));
+  }
+  for (const massprops::Model& model : read.models) {
+    result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
+    result.models.push_back(model.name);
+    CheckOptions check_options = settings.options;
+    massprops::cli::UseGeometryShapes(model, settings.model_paths, &check_options);
+    std::vector<Finding> findings = massprops::CheckModel(model, check_options);
+    massprops::cli::AddGeometryFindings(model, settings.options, settings.model_paths, &findings);
+    if (settings.target != massprops::Target::kGeneric) {
+      const std::string text = massprops::cli::ReadTextForTarget(file);
+      massprops::AddTargetFindings(model, settings.target, check_options,
+                                   massprops::ReadMujocoCompilerOptions(text), &findings, text);
     }
-    for (Finding& finding : massprops::ReaderFindings(read, settings[i].options)) {
-      result.findings.push_back(std::move(finding));
-    }
-    for (const massprops::Model& model : read.models) {
-      result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
-      result.models.push_back(model.name);
-      CheckOptions check_options = settings[i].options;
-      massprops::cli::UseGeometryShapes(model, settings[i].model_paths, &check_options);
-      std::vector<Finding> findings = massprops::CheckModel(model, check_options);
-      massprops::cli::AddGeometryFindings(model, settings[i].options, settings[i].model_paths,
-                                          &findings);
-      if (settings[i].target != massprops::Target::kGeneric) {
-        const std::string text = massprops::cli::ReadTextForTarget(file);
-        massprops::AddTargetFindings(model, settings[i].target, check_options,
-                                     massprops::ReadMujocoCompilerOptions(text), &findings, text);
-      }
-      result.findings.insert(result.findings.end(), findings.begin(), findings.end());
-    }
-    return result;
-  };
-  std::vector<FileResult> results(files.size());
-  RunInParallel(files.size(), JobCount(args.jobs, files),
-                [&](std::size_t i) { results[i] = check_file(i); });
+    result.findings.insert(result.findings.end(), findings.begin(), findings.end());
+  }
+  return result;
+}
 
+// The exit code of a check: 2 when an input could not be read, else 1 when a file has a finding
+// at or above its fail level, else 0.
+int CheckExitCode(const std::vector<FileResult>& results, const std::vector<Settings>& settings,
+                  bool unreadable_input) {
   bool read_failed = false;
   bool findings_at_fail_level = false;
-  for (std::size_t i = 0; i < files.size(); ++i) {
+  for (std::size_t i = 0; i < results.size(); ++i) {
     if (!results[i].errors.empty()) read_failed = true;
     for (const Finding& finding : results[i].findings) {
       if (finding.severity >= settings[i].fail_on) findings_at_fail_level = true;
     }
   }
+  if (read_failed || unreadable_input) return kExitError;
+  return findings_at_fail_level ? kExitFindings : kExitClean;
+}
 
+// How the report is written: --quiet, the skipped files, and colour (--color; auto: on a
+// terminal when NO_COLOR is unset or empty).
+massprops::ReportOptions MakeReportOptions(const CheckArgs& args, int skipped_files) {
   massprops::ReportOptions report_options;
   report_options.quiet = args.quiet;
   report_options.skipped_files = skipped_files;
@@ -404,12 +433,126 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
     report_options.color =
         isatty(STDOUT_FILENO) != 0 && (no_color == nullptr || no_color[0] == '\0');
   }
-  const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
-  massprops::WriteReport(std::cout, format, results, report_options);
-  std::cout.flush();
+  return report_options;
+}
 
-  if (read_failed || unreadable_input) return kExitError;
-  return findings_at_fail_level ? kExitFindings : kExitClean;
+// `massprops check`: checks every file and writes the report; returns the exit code. Throws
+// UsageError and ConfigError.
+int RunCheck(const CheckArgs& args, const char* argv0) {
+  if (args.list_rules) return ListRules(args);
+  const CliOverrides cli = ParseCliOverrides(args);
+  std::optional<Config> explicit_config;
+  if (!args.config.empty()) explicit_config = massprops::LoadConfig(args.config);
+  const CheckInputs inputs = ExpandInputs(args, InputsOrExample(args, argv0));
+  const std::vector<std::string>& files = inputs.files;
+  const std::vector<Settings> settings = LoadSettings(args, cli, explicit_config, files);
+
+  std::vector<FileResult> results(files.size());
+  RunInParallel(files.size(), JobCount(args.jobs, files),
+                [&](std::size_t i) { results[i] = CheckFile(files[i], settings[i]); });
+
+  const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
+  massprops::WriteReport(std::cout, format, results, MakeReportOptions(args, inputs.skipped_files));
+  std::cout.flush();
+  return CheckExitCode(results, settings, inputs.unreadable_input);
+}
+
+// Accepts a --tolerance that is a number at least 0 and less than 1.
+CLI::Validator ToleranceValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !(value >= 0 && value < 1)) {
+          return "must be a number at least 0 and less than 1, got " + text;
+        }
+        return {};
+      },
+      "0<=X<1");
+}
+
+// The options of `check` whose presence, not only their value, matters after parsing.
+struct CheckOptionsGiven {
+  CLI::Option* fail_on = nullptr;
+  CLI::Option* tolerance = nullptr;
+};
+
+// Adds the `check` subcommand and its options, which fill *args.
+CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args) {
+  CheckOptionsGiven given;
+  CLI::App* check = app.add_subcommand(
+      "check",
+      "Check models for mass properties that no real body could have, and for CAD-export defects. "
+      "With no FILE, checks the bundled example model.");
+  check->add_option("FILE", args->files,
+                    "URDF or SDF files (detected by content), '-' for standard input, or folders "
+                    "(searched recursively for *.urdf, *.sdf, and *.world/*.xml with a <robot> or "
+                    "<sdf> root)");
+  check->add_option("--format", args->format, "Output format")
+      ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
+      ->capture_default_str();
+  check->add_option("--color", args->color, "Colour text output (auto: on a terminal, no NO_COLOR)")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  given.fail_on = check
+                      ->add_option("--fail-on", args->fail_on,
+                                   "Exit with 1 when a finding is at least this severe (default: "
+                                   "error, or fail-on in the configuration file)")
+                      ->check(CLI::IsMember({"error", "warning", "note"}));
+  check->add_option("--disable", args->disable, "Disable a rule (repeatable)")
+      ->type_name("RULE")
+      ->allow_extra_args(false);
+  check
+      ->add_option("--severity", args->severity,
+                   "Change a rule's severity: RULE=off|note|warning|error (repeatable)")
+      ->type_name("RULE=LEVEL")
+      ->allow_extra_args(false);
+  given.tolerance = check
+                        ->add_option("--tolerance", args->tolerance,
+                                     "Tolerance of the physical-validity test, relative to the "
+                                     "trace of the inertia, at least 0 and less than 1 (default "
+                                     "1e-6)")
+                        ->check(ToleranceValidator());
+  check
+      ->add_option("--config", args->config,
+                   "Configuration file (default: .massprops.toml found upward from each file, "
+                   "then from the working directory)")
+      ->check(CLI::ExistingFile);
+  check
+      ->add_option("--model-path", args->model_paths,
+                   "Folder searched for SDF model:// URIs (repeatable)")
+      ->type_name("DIR")
+      ->allow_extra_args(false);
+  massprops::cli::AddTargetOption(check, &args->target);
+  check->add_flag("-q,--quiet", args->quiet, "Only the findings: no summary line, no notes");
+  check
+      ->add_option("-j,--jobs", args->jobs,
+                   "Check this many files at once (default 0: one per core); the output is the "
+                   "same, byte for byte, whatever the number")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  check->add_flag("--list-rules", args->list_rules, "List the rules and their default severities");
+  massprops::cli::AddGeometryCheckOptions(check);
+  return given;
+}
+
+// Runs the chosen subcommand (`run`, or check when it is unset) and returns its exit code; a
+// usage, configuration or internal error becomes 2 with its message on standard error.
+int RunCommand(const std::function<int()>& run, const CheckArgs& args, const char* argv0) {
+  try {
+    // A report that did not reach standard output (full disk, closed pipe end) is exit 2.
+    if (run) return massprops::cli::FinishStandardOutput(run());
+    return massprops::cli::FinishStandardOutput(RunCheck(args, argv0));
+  } catch (const UsageError& error) {
+    std::cerr << "massprops: error: " << error.message << "\n";
+    return kExitError;
+  } catch (const ConfigError& error) {
+    std::cerr << error.what() << "\n";
+    return kExitError;
+  } catch (const std::exception& error) {
+    std::cerr << "massprops: internal error: " << error.what() << "\n";
+    return kExitError;
+  }
 }
 
 }  // namespace
@@ -426,69 +569,7 @@ int main(int argc, char** argv) {
       "2 a file could not be read or parsed, a bad configuration file, or a usage error.");
 
   CheckArgs args;
-  CLI::App* check = app.add_subcommand(
-      "check",
-      "Check models for mass properties that no real body could have, and for CAD-export defects. "
-      "With no FILE, checks the bundled example model.");
-  check->add_option("FILE", args.files,
-                    "URDF or SDF files (detected by content), '-' for standard input, or folders "
-                    "(searched recursively for *.urdf, *.sdf, and *.world/*.xml with a <robot> or "
-                    "<sdf> root)");
-  check->add_option("--format", args.format, "Output format")
-      ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
-      ->capture_default_str();
-  check->add_option("--color", args.color, "Colour text output (auto: on a terminal, no NO_COLOR)")
-      ->check(CLI::IsMember({"auto", "always", "never"}))
-      ->capture_default_str();
-  CLI::Option* fail_on =
-      check
-          ->add_option("--fail-on", args.fail_on,
-                       "Exit with 1 when a finding is at least this severe (default: error, or "
-                       "fail-on in the configuration file)")
-          ->check(CLI::IsMember({"error", "warning", "note"}));
-  check->add_option("--disable", args.disable, "Disable a rule (repeatable)")
-      ->type_name("RULE")
-      ->allow_extra_args(false);
-  check
-      ->add_option("--severity", args.severity,
-                   "Change a rule's severity: RULE=off|note|warning|error (repeatable)")
-      ->type_name("RULE=LEVEL")
-      ->allow_extra_args(false);
-  CLI::Option* tolerance =
-      check
-          ->add_option("--tolerance", args.tolerance,
-                       "Tolerance of the physical-validity test, relative to the trace of the "
-                       "inertia, at least 0 and less than 1 (default 1e-6)")
-          ->check(CLI::Validator(
-              [](std::string& text) -> std::string {
-                char* end = nullptr;
-                const double value = std::strtod(text.c_str(), &end);
-                if (end == text.c_str() || *end != '\0' || !(value >= 0 && value < 1)) {
-                  return "must be a number at least 0 and less than 1, got " + text;
-                }
-                return {};
-              },
-              "0<=X<1"));
-  check
-      ->add_option("--config", args.config,
-                   "Configuration file (default: .massprops.toml found upward from each file, "
-                   "then from the working directory)")
-      ->check(CLI::ExistingFile);
-  check
-      ->add_option("--model-path", args.model_paths,
-                   "Folder searched for SDF model:// URIs (repeatable)")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
-  massprops::cli::AddTargetOption(check, &args.target);
-  check->add_flag("-q,--quiet", args.quiet, "Only the findings: no summary line, no notes");
-  check
-      ->add_option("-j,--jobs", args.jobs,
-                   "Check this many files at once (default 0: one per core); the output is the "
-                   "same, byte for byte, whatever the number")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  check->add_flag("--list-rules", args.list_rules, "List the rules and their default severities");
-  massprops::cli::AddGeometryCheckOptions(check);
+  const CheckOptionsGiven given = AddCheckCommand(app, &args);
 
   // Subcommands defined in other files (src/tool/commands.h) set `run` when chosen.
   std::function<int()> run;
@@ -503,21 +584,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? kExitClean : kExitError;
   }
-  if (fail_on->count() == 0) args.fail_on.clear();
-  args.tolerance_given = tolerance->count() > 0;
-
-  try {
-    // A report that did not reach standard output (full disk, closed pipe end) is exit 2.
-    if (run) return massprops::cli::FinishStandardOutput(run());
-    return massprops::cli::FinishStandardOutput(RunCheck(args, argc > 0 ? argv[0] : nullptr));
-  } catch (const UsageError& error) {
-    std::cerr << "massprops: error: " << error.message << "\n";
-    return kExitError;
-  } catch (const ConfigError& error) {
-    std::cerr << error.what() << "\n";
-    return kExitError;
-  } catch (const std::exception& error) {
-    std::cerr << "massprops: internal error: " << error.what() << "\n";
-    return kExitError;
-  }
+  if (given.fail_on->count() == 0) args.fail_on.clear();
+  args.tolerance_given = given.tolerance->count() > 0;
+  return RunCommand(run, args, argc > 0 ? argv[0] : nullptr);
 }
