@@ -697,12 +697,36 @@ class Reader {
 
   void BuildModels();
   void BuildModel(const std::vector<int>& tops, const std::vector<int>& world_joints);
+  // The models being built into one Model (see BuildModel), as its steps share them.
+  struct ModelBuild {
+    int top = kWorld;        // The model frame: the model's, or the world's.
+    std::string prefix;      // Stripped from scoped names ("" for models joined in the world).
+    std::vector<int> order;  // The nodes of the models, in file order (each contiguous).
+    std::unordered_map<int, Pose> X_TB;  // Link poses in the model frame T.
+    std::optional<Pose> X_WT;            // The model frame in the world (once resolved).
+  };
+  Model StartModel(const std::vector<int>& tops) const;
+  std::vector<int> ModelNodeOrder(const std::vector<int>& tops) const;
+  std::string LocalName(const ModelBuild& b, int i) const;
+  void ReadModelLinks(ModelBuild* b, Model* model, SdfModelFrames* frames);
+  std::optional<Pose> PoseInModel(const ModelBuild& b, int f);
+  void ReadModelJoints(const ModelBuild& b, const std::vector<int>& world_joints, Model* model);
+  bool ReadJoint(const ModelBuild& b, int i, Joint* joint);
+  std::optional<Eigen::Vector3d> ReadJointAxis(const ModelBuild& b, int i, const std::string& what,
+                                               const Pose& X_TC);
+  void SetRootLink(const ModelBuild& b, const std::vector<int>& tops, Model* model) const;
   int TopOf(int i) const {
     if (i < 0) return i;
     while (nodes_[i].scope != kWorld) i = nodes_[i].scope;
     return i;
   }
   void ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link);
+  void ReadExplicitInertial(const XMLElement* in, int link_index, int top, const Pose& X_TB,
+                            const Context& ctx, Link* link);
+  Geometry ReadGeometry(const XMLElement* c, int link_index, int top, const Pose& X_TB,
+                        const Context& ctx, const std::string& lname);
+  void ReadShape(const XMLElement* shape, const Context& ctx, const std::string& swhat,
+                 Geometry* g);
   bool ResolveInLink(const XMLElement* pose, int link_index, int top, const Pose& X_TB,
                      const Context& ctx, const std::string& what, Pose* X_BF);
 
@@ -1126,92 +1150,9 @@ bool Reader::ResolveInLink(const XMLElement* pose, int link_index, int top, cons
   return true;
 }
 
-void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link) {
-  const Context& ctx = link_files_.at(link_index);
-  const XMLElement* e = nodes_[link_index].element;
-  const std::string lname = "'" + link->name + "'";
-  const XMLElement* in = e->FirstChildElement("inertial");
-  const std::string auto_attr = in ? Attr(in, "auto") : "";
-  const bool is_auto =
-      in != nullptr && ctx.version.AtLeast(1, 11) && (auto_attr == "true" || auto_attr == "1");
-  if (in != nullptr && !is_auto) {
-    // A bad number or pose here costs this link only (inertial-unreadable), not the file.
-    diversion_ = Diversion();
-    diversion_.active = true;
-    Inertial inertial;
-    inertial.location = {ctx.file, in->GetLineNum(), 0};
-    const XMLElement* pose = in->FirstChildElement("pose");
-    if (pose != nullptr) inertial.pose_location = {ctx.file, pose->GetLineNum(), 0};
-    ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname, &inertial.X_BBi);
-    const XMLElement* mass = in->FirstChildElement("mass");
-    if (mass != nullptr) inertial.mass_location = {ctx.file, mass->GetLineNum(), 0};
-    // SDF defaults (sdf/1.x/inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
-    inertial.mass = Number(mass, 1.0, ctx, "<mass> of link " + lname);
-    const XMLElement* inertia = in->FirstChildElement("inertia");
-    if (inertia != nullptr) inertial.inertia_location = {ctx.file, inertia->GetLineNum(), 0};
-    auto moment = [&](const char* tag, double fallback) {
-      return Number(inertia ? inertia->FirstChildElement(tag) : nullptr, fallback, ctx,
-                    std::string("<") + tag + "> of link " + lname);
-    };
-    inertial.ixx = moment("ixx", 1.0);
-    inertial.iyy = moment("iyy", 1.0);
-    inertial.izz = moment("izz", 1.0);
-    inertial.ixy = moment("ixy", 0.0);
-    inertial.ixz = moment("ixz", 0.0);
-    inertial.iyz = moment("iyz", 0.0);
-    diversion_.active = false;
-    if (diversion_.failed) {
-      link->inertial_unreadable = true;
-      ReadFinding f;
-      f.rule = "inertial-unreadable";
-      f.model = current_model_name_;
-      f.link = link->name;
-      f.location = diversion_.location;
-      f.message = diversion_.element + ": " + diversion_.message +
-                  "; the mass properties of link " + lname +
-                  " are unknown, so its welded group is not checked";
-      result_.findings.push_back(std::move(f));
-    } else {
-      link->inertial = inertial;
-    }
-  }
-  for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
-    const std::string tag = c->Name();
-    if (tag != "collision" && tag != "visual") continue;
-    Geometry g;
-    g.is_collision = tag == "collision";
-    g.location = {ctx.file, c->GetLineNum(), 0};
-    const std::string what = "<" + tag + "> '" + Attr(c, "name") + "' of link " + lname;
-    ResolveInLink(c->FirstChildElement("pose"), link_index, top, X_TB, ctx, what, &g.X_BG);
-    const XMLElement* geometry = c->FirstChildElement("geometry");
-    const XMLElement* shape = geometry ? geometry->FirstChildElement() : nullptr;
-    if (shape != nullptr) {
-      const std::string s = shape->Name();
-      const std::string swhat = "<" + s + "> of " + what;
-      if (s == "box") {
-        g.type = Geometry::Type::kBox;
-        g.size = Vector(shape->FirstChildElement("size"), Eigen::Vector3d::Ones(), ctx, swhat);
-      } else if (s == "cylinder" || s == "capsule") {
-        g.type = s == "cylinder" ? Geometry::Type::kCylinder : Geometry::Type::kCapsule;
-        g.radius =
-            Number(shape->FirstChildElement("radius"), s == "cylinder" ? 1.0 : 0.5, ctx, swhat);
-        g.length = Number(shape->FirstChildElement("length"), 1.0, ctx, swhat);
-      } else if (s == "sphere") {
-        g.type = Geometry::Type::kSphere;
-        g.radius = Number(shape->FirstChildElement("radius"), 1.0, ctx, swhat);
-      } else if (s == "ellipsoid") {
-        g.type = Geometry::Type::kEllipsoid;
-        g.radii = Vector(shape->FirstChildElement("radii"), Eigen::Vector3d::Ones(), ctx, swhat);
-      } else if (s == "mesh") {
-        g.type = Geometry::Type::kMesh;
-        g.uri = Text(shape->FirstChildElement("uri"));
-        g.scale = Vector(shape->FirstChildElement("scale"), Eigen::Vector3d::Ones(), ctx, swhat);
-      }
-    }
-    link->geometries.push_back(std::move(g));
-  }
-  if (is_auto) ReadAutoInertial(in, link_index, top, X_TB, ctx, link);
-  // <!-- massprops: ignore rule-id ... --> anywhere inside the link.
+// Appends the rules of every <!-- massprops: ignore rule-id ... --> comment anywhere inside the
+// link element `e`.
+void ReadIgnoredRules(const XMLElement* e, std::vector<std::string>* ignored_rules) {
   std::vector<const XMLNode*> stack{e};
   while (!stack.empty()) {
     const XMLNode* n = stack.back();
@@ -1221,12 +1162,115 @@ void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* l
         std::istringstream words(comment->Value() ? comment->Value() : "");
         std::string w1, w2, rule;
         if (words >> w1 >> w2 && w1 == "massprops:" && w2 == "ignore") {
-          while (words >> rule) link->ignored_rules.push_back(rule);
+          while (words >> rule) ignored_rules->push_back(rule);
         }
       } else if (c->ToElement() != nullptr) {
         stack.push_back(c);
       }
     }
+  }
+}
+
+void Reader::ReadLinkContents(int link_index, int top, const Pose& X_TB, Link* link) {
+  const Context& ctx = link_files_.at(link_index);
+  const XMLElement* e = nodes_[link_index].element;
+  const std::string lname = "'" + link->name + "'";
+  const XMLElement* in = e->FirstChildElement("inertial");
+  const std::string auto_attr = in ? Attr(in, "auto") : "";
+  const bool is_auto =
+      in != nullptr && ctx.version.AtLeast(1, 11) && (auto_attr == "true" || auto_attr == "1");
+  if (in != nullptr && !is_auto) ReadExplicitInertial(in, link_index, top, X_TB, ctx, link);
+  for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) {
+    const std::string tag = c->Name();
+    if (tag != "collision" && tag != "visual") continue;
+    link->geometries.push_back(ReadGeometry(c, link_index, top, X_TB, ctx, lname));
+  }
+  if (is_auto) ReadAutoInertial(in, link_index, top, X_TB, ctx, link);
+  ReadIgnoredRules(e, &link->ignored_rules);
+}
+
+// Reads a written (not automatic) <inertial>; a bad number or pose here costs this link only
+// (inertial-unreadable, with a finding), not the file.
+void Reader::ReadExplicitInertial(const XMLElement* in, int link_index, int top, const Pose& X_TB,
+                                  const Context& ctx, Link* link) {
+  const std::string lname = "'" + link->name + "'";
+  diversion_ = Diversion();
+  diversion_.active = true;
+  Inertial inertial;
+  inertial.location = {ctx.file, in->GetLineNum(), 0};
+  const XMLElement* pose = in->FirstChildElement("pose");
+  if (pose != nullptr) inertial.pose_location = {ctx.file, pose->GetLineNum(), 0};
+  ResolveInLink(pose, link_index, top, X_TB, ctx, "<inertial> of link " + lname, &inertial.X_BBi);
+  const XMLElement* mass = in->FirstChildElement("mass");
+  if (mass != nullptr) inertial.mass_location = {ctx.file, mass->GetLineNum(), 0};
+  // SDF defaults (sdf/1.x/inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
+  inertial.mass = Number(mass, 1.0, ctx, "<mass> of link " + lname);
+  const XMLElement* inertia = in->FirstChildElement("inertia");
+  if (inertia != nullptr) inertial.inertia_location = {ctx.file, inertia->GetLineNum(), 0};
+  auto moment = [&](const char* tag, double fallback) {
+    return Number(inertia ? inertia->FirstChildElement(tag) : nullptr, fallback, ctx,
+                  std::string("<") + tag + "> of link " + lname);
+  };
+  inertial.ixx = moment("ixx", 1.0);
+  inertial.iyy = moment("iyy", 1.0);
+  inertial.izz = moment("izz", 1.0);
+  inertial.ixy = moment("ixy", 0.0);
+  inertial.ixz = moment("ixz", 0.0);
+  inertial.iyz = moment("iyz", 0.0);
+  diversion_.active = false;
+  if (diversion_.failed) {
+    link->inertial_unreadable = true;
+    ReadFinding f;
+    f.rule = "inertial-unreadable";
+    f.model = current_model_name_;
+    f.link = link->name;
+    f.location = diversion_.location;
+    f.message = diversion_.element + ": " + diversion_.message + "; the mass properties of link " +
+                lname + " are unknown, so its welded group is not checked";
+    result_.findings.push_back(std::move(f));
+  } else {
+    link->inertial = inertial;
+  }
+}
+
+// Reads one <collision> or <visual> element `c` of the link named `lname` (quoted).
+Geometry Reader::ReadGeometry(const XMLElement* c, int link_index, int top, const Pose& X_TB,
+                              const Context& ctx, const std::string& lname) {
+  const std::string tag = c->Name();
+  Geometry g;
+  g.is_collision = tag == "collision";
+  g.location = {ctx.file, c->GetLineNum(), 0};
+  const std::string what = "<" + tag + "> '" + Attr(c, "name") + "' of link " + lname;
+  ResolveInLink(c->FirstChildElement("pose"), link_index, top, X_TB, ctx, what, &g.X_BG);
+  const XMLElement* geometry = c->FirstChildElement("geometry");
+  const XMLElement* shape = geometry ? geometry->FirstChildElement() : nullptr;
+  if (shape != nullptr)
+    ReadShape(shape, ctx, "<" + std::string(shape->Name()) + "> of " + what, &g);
+  return g;
+}
+
+// Reads the type and dimensions of a <geometry>'s shape element (SDF defaults when absent);
+// an unknown shape leaves g's type as it is.
+void Reader::ReadShape(const XMLElement* shape, const Context& ctx, const std::string& swhat,
+                       Geometry* g) {
+  const std::string s = shape->Name();
+  if (s == "box") {
+    g->type = Geometry::Type::kBox;
+    g->size = Vector(shape->FirstChildElement("size"), Eigen::Vector3d::Ones(), ctx, swhat);
+  } else if (s == "cylinder" || s == "capsule") {
+    g->type = s == "cylinder" ? Geometry::Type::kCylinder : Geometry::Type::kCapsule;
+    g->radius = Number(shape->FirstChildElement("radius"), s == "cylinder" ? 1.0 : 0.5, ctx, swhat);
+    g->length = Number(shape->FirstChildElement("length"), 1.0, ctx, swhat);
+  } else if (s == "sphere") {
+    g->type = Geometry::Type::kSphere;
+    g->radius = Number(shape->FirstChildElement("radius"), 1.0, ctx, swhat);
+  } else if (s == "ellipsoid") {
+    g->type = Geometry::Type::kEllipsoid;
+    g->radii = Vector(shape->FirstChildElement("radii"), Eigen::Vector3d::Ones(), ctx, swhat);
+  } else if (s == "mesh") {
+    g->type = Geometry::Type::kMesh;
+    g->uri = Text(shape->FirstChildElement("uri"));
+    g->scale = Vector(shape->FirstChildElement("scale"), Eigen::Vector3d::Ones(), ctx, swhat);
   }
 }
 
@@ -1388,23 +1432,46 @@ void Reader::BuildModels() {
 void Reader::BuildModel(const std::vector<int>& tops, const std::vector<int>& world_joints) {
   const size_t errors_before = result_.errors.size();
   const bool single = tops.size() == 1;
-  const int top = single ? tops[0] : kWorld;  // The model frame: the model's, or the world's.
+  ModelBuild b;
+  b.top = single ? tops[0] : kWorld;
+  b.prefix = single ? nodes_[b.top].name + "::" : "";
+  Model model = StartModel(tops);
+  current_model_name_ = model.name;
+  b.order = ModelNodeOrder(tops);
+  SdfModelFrames frames;
+  ReadModelLinks(&b, &model, &frames);
+  // Every frame is resolved, used or not, so that cycles and dangling names are reported as
+  // libsdformat reports them.
+  for (int i : b.order) Resolve(i, 0);
+  for (int j : world_joints) Resolve(j, 0);
+  if (result_.errors.size() != errors_before) return;
+  b.X_WT = single ? PoseInScope(b.top, kWorld, 0) : std::optional<Pose>(Pose());
+  if (b.X_WT) frames.X_WM = *b.X_WT;
+  ReadModelJoints(b, world_joints, &model);
+  SetRootLink(b, tops, &model);
+  if (result_.errors.size() == errors_before) {
+    result_.models.push_back(std::move(model));
+    frames_.push_back(std::move(frames));
+  }
+}
+
+// A Model with the format, file, name ("A+B" when joined), static flag and location of `tops`.
+Model Reader::StartModel(const std::vector<int>& tops) const {
   Model model;
   model.format = Model::Format::kSdf;
   model.file = top_file_;
-  const std::string prefix = single ? nodes_[top].name + "::" : "";
   model.is_static = true;
   for (int t : tops) {
     model.name += (model.name.empty() ? "" : "+") + nodes_[t].name;
     model.is_static = model.is_static && nodes_[t].is_static;
   }
   model.location = nodes_[tops[0]].location;
-  current_model_name_ = model.name;
-  auto local_name = [&](int i) {
-    const std::string& name = nodes_[i].name;
-    return name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
-  };
-  std::vector<int> order;  // The nodes of the models, in file order (each contiguous).
+  return model;
+}
+
+// The nodes of the models `tops`, in file order (each model's contiguous, itself first).
+std::vector<int> Reader::ModelNodeOrder(const std::vector<int>& tops) const {
+  std::vector<int> order;
   for (int t : tops) {
     const std::string own = nodes_[t].name + "::";
     order.push_back(t);
@@ -1413,136 +1480,156 @@ void Reader::BuildModel(const std::vector<int>& tops, const std::vector<int>& wo
       order.push_back(i);
     }
   }
-  auto inside = [&](int i) { return std::find(tops.begin(), tops.end(), TopOf(i)) != tops.end(); };
+  return order;
+}
 
-  std::unordered_map<int, Pose> X_TB;  // Link poses in the model frame T.
-  SdfModelFrames frames;
-  for (int i : order) {
+// Node i's name in the Model: scoped from the model (prefix stripped).
+std::string Reader::LocalName(const ModelBuild& b, int i) const {
+  const std::string& name = nodes_[i].name;
+  return name.rfind(b.prefix, 0) == 0 ? name.substr(b.prefix.size()) : name;
+}
+
+// Reads the links whose pose resolves: into the model, their poses into b->X_TB and frames.
+void Reader::ReadModelLinks(ModelBuild* b, Model* model, SdfModelFrames* frames) {
+  for (int i : b->order) {
     if (nodes_[i].kind != Node::Kind::kLink) continue;
-    const std::optional<Pose> X = PoseInScope(i, top, 0);
+    const std::optional<Pose> X = PoseInScope(i, b->top, 0);
     if (!X) continue;
-    X_TB[i] = *X;
-    frames.X_MB.push_back(*X);
+    b->X_TB[i] = *X;
+    frames->X_MB.push_back(*X);
     Link link;
-    link.name = local_name(i);
+    link.name = LocalName(*b, i);
     link.location = nodes_[i].location;
-    ReadLinkContents(i, top, *X, &link);
-    model.links.push_back(std::move(link));
+    ReadLinkContents(i, b->top, *X, &link);
+    model->links.push_back(std::move(link));
   }
-  // Every frame is resolved, used or not, so that cycles and dangling names are reported as
-  // libsdformat reports them.
-  for (int i : order) Resolve(i, 0);
-  for (int j : world_joints) Resolve(j, 0);
-  if (result_.errors.size() != errors_before) return;
-  std::optional<Pose> X_WT = single ? PoseInScope(top, kWorld, 0) : std::optional<Pose>(Pose());
-  if (X_WT) frames.X_WM = *X_WT;
-  // A frame's pose in T; for a frame outside the model (a world joint's) through the world.
-  auto pose_in_model = [&](int f) -> std::optional<Pose> {
-    if (f == kNotFound) return std::nullopt;
-    if (top == kWorld) return PoseInScope(f, kWorld, 0);
-    if (f != kWorld && TopOf(f) == top) return PoseInScope(f, top, 0);
-    const std::optional<Pose> X_WF = f == kWorld ? Pose() : PoseInScope(f, kWorld, 0);
-    if (!X_WF || !X_WT) return std::nullopt;
-    return X_WT->Inverse() * *X_WF;
-  };
+}
+
+// A frame's pose in T; for a frame outside the model (a world joint's) through the world.
+std::optional<Pose> Reader::PoseInModel(const ModelBuild& b, int f) {
+  if (f == kNotFound) return std::nullopt;
+  if (b.top == kWorld) return PoseInScope(f, kWorld, 0);
+  if (f != kWorld && TopOf(f) == b.top) return PoseInScope(f, b.top, 0);
+  const std::optional<Pose> X_WF = f == kWorld ? Pose() : PoseInScope(f, kWorld, 0);
+  if (!X_WF || !b.X_WT) return std::nullopt;
+  return b.X_WT->Inverse() * *X_WF;
+}
+
+// Reads the models' joints in file order, then the world joints, into the model.
+void Reader::ReadModelJoints(const ModelBuild& b, const std::vector<int>& world_joints,
+                             Model* model) {
   std::vector<int> joint_nodes;
-  for (int i : order) {
+  for (int i : b.order) {
     if (nodes_[i].kind == Node::Kind::kJoint) joint_nodes.push_back(i);
   }
   joint_nodes.insert(joint_nodes.end(), world_joints.begin(), world_joints.end());
   for (int i : joint_nodes) {
-    const Node& n = nodes_[i];
     Joint joint;
-    joint.name = local_name(i);
-    joint.location = n.location;
-    joint.type_name = Attr(n.element, "type");
-    joint.type = JointType(joint.type_name);
-    const std::string what = Describe(n);
-    const int c = AttachedLink(Lookup(n.child, n.scope), 0);
-    std::string which;
-    if (c < 0 && InUnresolvedInclude(n.child, n.scope, &which)) {
-      ReportUnresolvedReference(i, n.child, which);
-      continue;
-    }
-    if (n.parent != "world" && AttachedLink(Lookup(n.parent, n.scope), 0) < 0 &&
-        InUnresolvedInclude(n.parent, n.scope, &which)) {
-      ReportUnresolvedReference(i, n.parent, which);
-      continue;
-    }
-    if (n.child == "world" || c < 0 || !X_TB.count(c)) {
-      Error(n.location.file, n.element, what, "the child '" + n.child + "' is not a link");
-      continue;
-    }
-    joint.child = local_name(c);
-    const Pose& X_TC = X_TB[c];
-    if (n.parent == "world") {
-      joint.parent = "world";
-      if (!X_WT) continue;
-      joint.X_PC = *X_WT * X_TC;
-    } else {
-      const int p = AttachedLink(Lookup(n.parent, n.scope), 0);
-      if (p < 0 || !X_TB.count(p)) {
-        Error(n.location.file, n.element, what, "the parent '" + n.parent + "' is not a link");
-        continue;
-      }
-      joint.parent = local_name(p);
-      joint.X_PC = X_TB[p].Inverse() * X_TC;
-    }
-    // Axis: <axis><xyz> (default 0 0 1) in the frame E it is expressed in.
-    Context ctx{n.location.file, n.version, 0, n.merge_proxy};
-    const XMLElement* axis = n.element->FirstChildElement("axis");
-    const XMLElement* xyz = axis ? axis->FirstChildElement("xyz") : nullptr;
-    const Eigen::Vector3d axis_E =
-        Vector(xyz, Eigen::Vector3d::UnitZ(), ctx, "<axis><xyz> of " + what);
-    int expressed_in = i;  // The joint frame.
-    const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
-    if (!e.empty()) {
-      expressed_in =
-          Lookup(e == "__model__" && !n.merge_proxy.empty() ? n.merge_proxy : e, n.scope);
-    }
-    if (!n.version.AtLeast(1, 7) && axis != nullptr) {
-      // The 1.6->1.7 converter maps use_parent_model_frame=true to expressed_in="__model__".
-      const std::string f = Text(axis->FirstChildElement("use_parent_model_frame"));
-      if (n.axis_in_model_frame_1_4 || f == "true" || f == "1" || f == "True" || f == "TRUE") {
-        expressed_in = n.scope;
-      }
-    }
-    const std::optional<Pose> X_TE = pose_in_model(expressed_in);
-    if (!X_TE) {
-      Error(n.location.file, xyz, "<axis><xyz> of " + what,
-            "the frame named by expressed_in is not found");
-      continue;
-    }
-    Eigen::Vector3d axis_C = X_TC.R_AB.transpose() * X_TE->R_AB * axis_E;
-    if (axis_C.norm() == 0) {
-      Warning(n.location.file, xyz, "<axis><xyz> of " + what, "the axis has zero length");
-    } else {
-      axis_C.normalize();
-    }
-    joint.axis = axis_C;
-    model.joints.push_back(std::move(joint));
+    if (ReadJoint(b, i, &joint)) model->joints.push_back(std::move(joint));
   }
-  // Root: the canonical link if it is no joint's child, else the first link that is none. Joints
-  // to the world do not count (they fix the model in the world; its tree still starts there).
+}
+
+// Reads joint node i: its type, links, pose and axis. False (reported, or skipped when the
+// model's pose in the world is unknown) if the joint cannot be built.
+bool Reader::ReadJoint(const ModelBuild& b, int i, Joint* joint) {
+  const Node& n = nodes_[i];
+  joint->name = LocalName(b, i);
+  joint->location = n.location;
+  joint->type_name = Attr(n.element, "type");
+  joint->type = JointType(joint->type_name);
+  const std::string what = Describe(n);
+  const int c = AttachedLink(Lookup(n.child, n.scope), 0);
+  std::string which;
+  if (c < 0 && InUnresolvedInclude(n.child, n.scope, &which)) {
+    ReportUnresolvedReference(i, n.child, which);
+    return false;
+  }
+  if (n.parent != "world" && AttachedLink(Lookup(n.parent, n.scope), 0) < 0 &&
+      InUnresolvedInclude(n.parent, n.scope, &which)) {
+    ReportUnresolvedReference(i, n.parent, which);
+    return false;
+  }
+  if (n.child == "world" || c < 0 || !b.X_TB.count(c)) {
+    Error(n.location.file, n.element, what, "the child '" + n.child + "' is not a link");
+    return false;
+  }
+  joint->child = LocalName(b, c);
+  const Pose& X_TC = b.X_TB.at(c);
+  if (n.parent == "world") {
+    joint->parent = "world";
+    if (!b.X_WT) return false;
+    joint->X_PC = *b.X_WT * X_TC;
+  } else {
+    const int p = AttachedLink(Lookup(n.parent, n.scope), 0);
+    if (p < 0 || !b.X_TB.count(p)) {
+      Error(n.location.file, n.element, what, "the parent '" + n.parent + "' is not a link");
+      return false;
+    }
+    joint->parent = LocalName(b, p);
+    joint->X_PC = b.X_TB.at(p).Inverse() * X_TC;
+  }
+  const std::optional<Eigen::Vector3d> axis_C = ReadJointAxis(b, i, what, X_TC);
+  if (!axis_C) return false;
+  joint->axis = *axis_C;
+  return true;
+}
+
+// Axis: <axis><xyz> (default 0 0 1) in the frame E it is expressed in, re-expressed in the child
+// link C and normalized. Nothing (reported) if the frame E is not found.
+std::optional<Eigen::Vector3d> Reader::ReadJointAxis(const ModelBuild& b, int i,
+                                                     const std::string& what, const Pose& X_TC) {
+  const Node& n = nodes_[i];
+  Context ctx{n.location.file, n.version, 0, n.merge_proxy};
+  const XMLElement* axis = n.element->FirstChildElement("axis");
+  const XMLElement* xyz = axis ? axis->FirstChildElement("xyz") : nullptr;
+  const Eigen::Vector3d axis_E =
+      Vector(xyz, Eigen::Vector3d::UnitZ(), ctx, "<axis><xyz> of " + what);
+  int expressed_in = i;  // The joint frame.
+  const std::string e = xyz ? Attr(xyz, "expressed_in") : "";
+  if (!e.empty()) {
+    expressed_in = Lookup(e == "__model__" && !n.merge_proxy.empty() ? n.merge_proxy : e, n.scope);
+  }
+  if (!n.version.AtLeast(1, 7) && axis != nullptr) {
+    // The 1.6->1.7 converter maps use_parent_model_frame=true to expressed_in="__model__".
+    const std::string f = Text(axis->FirstChildElement("use_parent_model_frame"));
+    if (n.axis_in_model_frame_1_4 || f == "true" || f == "1" || f == "True" || f == "TRUE") {
+      expressed_in = n.scope;
+    }
+  }
+  const std::optional<Pose> X_TE = PoseInModel(b, expressed_in);
+  if (!X_TE) {
+    Error(n.location.file, xyz, "<axis><xyz> of " + what,
+          "the frame named by expressed_in is not found");
+    return std::nullopt;
+  }
+  Eigen::Vector3d axis_C = X_TC.R_AB.transpose() * X_TE->R_AB * axis_E;
+  if (axis_C.norm() == 0) {
+    Warning(n.location.file, xyz, "<axis><xyz> of " + what, "the axis has zero length");
+  } else {
+    axis_C.normalize();
+  }
+  return axis_C;
+}
+
+// Root: the canonical link if it is no joint's child, else the first link that is none. Joints
+// to the world do not count (they fix the model in the world; its tree still starts there).
+void Reader::SetRootLink(const ModelBuild& b, const std::vector<int>& tops, Model* model) const {
   std::unordered_set<std::string> children;
-  for (const Joint& j : model.joints) {
+  for (const Joint& j : model->joints) {
     if (j.parent != "world") children.insert(j.child);
   }
   auto is_child = [&](const std::string& name) { return children.count(name) > 0; };
+  auto inside = [&](int i) { return std::find(tops.begin(), tops.end(), TopOf(i)) != tops.end(); };
   const int canonical = AttachedLink(tops[0], 0);
-  if (canonical >= 0 && inside(canonical) && !is_child(local_name(canonical))) {
-    model.root_link = local_name(canonical);
+  if (canonical >= 0 && inside(canonical) && !is_child(LocalName(b, canonical))) {
+    model->root_link = LocalName(b, canonical);
   } else {
-    for (const Link& l : model.links) {
+    for (const Link& l : model->links) {
       if (!is_child(l.name)) {
-        model.root_link = l.name;
+        model->root_link = l.name;
         break;
       }
     }
-  }
-  if (result_.errors.size() == errors_before) {
-    result_.models.push_back(std::move(model));
-    frames_.push_back(std::move(frames));
   }
 }
 

@@ -197,14 +197,11 @@ std::string DescribeMeshDiagnostics(const MeshDiagnostics& d) {
   return sentence;
 }
 
-MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
-  ValidateMesh(mesh);
-  MeshDiagnostics d;
-  d.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
-  d.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
+namespace {
 
-  // 1. Merge vertices at exactly the same position (-0.0 and 0.0 are the same position), with an
-  // open-addressing hash table (linear probing, load factor <= 1/2).
+// 1. Merges vertices at exactly the same position (-0.0 and 0.0 are the same position), with an
+// open-addressing hash table (linear probing, load factor <= 1/2): each vertex's representative.
+std::vector<std::int32_t> MergeCoincidentVertices(const TriangleMesh& mesh, MeshDiagnostics* d) {
   auto bits = [](double v) {
     std::uint64_t u;
     const double w = v + 0.0;  // -0.0 + 0.0 == +0.0
@@ -233,18 +230,24 @@ MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
         representative[i] = static_cast<std::int32_t>(i);
       } else {
         representative[i] = table[slot];
-        ++d.duplicate_vertices_merged;
+        ++d->duplicate_vertices_merged;
       }
     }
   }
+  return representative;
+}
 
-  // 2. Degenerate triangles (those with a repeated vertex take no part in the topology).
+// 2. Counts degenerate triangles; marks those without a repeated vertex, which alone take part
+// in the topology.
+std::vector<char> MarkTrianglesWithEdges(const TriangleMesh& mesh,
+                                         const std::vector<std::int32_t>& representative,
+                                         MeshDiagnostics* d) {
   std::vector<char> has_edges(mesh.triangles.size(), 0);
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const auto& t = mesh.triangles[i];
     const std::int32_t r[3] = {representative[t[0]], representative[t[1]], representative[t[2]]};
     if (r[0] == r[1] || r[1] == r[2] || r[2] == r[0]) {
-      ++d.degenerate_triangles;
+      ++d->degenerate_triangles;
       continue;
     }
     has_edges[i] = 1;
@@ -254,12 +257,16 @@ MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
     const double longest2 =
         std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
     const double twice_area = (b - a).cross(c - a).norm();
-    if (twice_area <= 2e-12 * longest2) ++d.degenerate_triangles;
+    if (twice_area <= 2e-12 * longest2) ++d->degenerate_triangles;
   }
+  return has_edges;
+}
 
-  // 3. Bucket the directed edges by their smaller vertex (counting sort: linear; the edges are
-  // generated twice from the triangles rather than stored), then sort each small bucket (its
-  // size is the vertex's degree) by the larger vertex and count the uses.
+// 3. Buckets the directed edges by their smaller vertex (counting sort: linear; the edges are
+// generated twice from the triangles rather than stored), then sorts each small bucket (its
+// size is the vertex's degree) by the larger vertex and counts the uses.
+void CountEdgeUses(const TriangleMesh& mesh, const std::vector<std::int32_t>& representative,
+                   const std::vector<char>& has_edges, MeshDiagnostics* d) {
   auto for_each_edge = [&](auto&& visit) {
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
       if (!has_edges[i]) continue;
@@ -289,16 +296,28 @@ MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
         ++uses;
         forward += *it & 1;
       }
-      ++d.edges;
+      ++d->edges;
       if (uses == 1) {
-        ++d.boundary_edges;
+        ++d->boundary_edges;
       } else if (uses == 2) {
-        if (forward != 1) ++d.inconsistent_edges;
+        if (forward != 1) ++d->inconsistent_edges;
       } else {
-        ++d.non_manifold_edges;
+        ++d->non_manifold_edges;
       }
     }
   }
+}
+
+}  // namespace
+
+MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
+  ValidateMesh(mesh);
+  MeshDiagnostics d;
+  d.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
+  d.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
+  const std::vector<std::int32_t> representative = MergeCoincidentVertices(mesh, &d);
+  const std::vector<char> has_edges = MarkTrianglesWithEdges(mesh, representative, &d);
+  CountEdgeUses(mesh, representative, has_edges, &d);
   return d;
 }
 

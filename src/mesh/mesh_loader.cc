@@ -284,98 +284,146 @@ int MeshCache::files_loaded() const {
 
 // ------------------------------------------------------------------------------- geometry
 
+namespace {
+
+// The volume of a primitive (box, cylinder, sphere, capsule, ellipsoid) and, in I_GGcm_G, its
+// inertia at density 1 about its center; 0 for a mesh or another type.
+double CalcPrimitiveVolume(const Geometry& geometry, RotationalInertia<double>* I_GGcm_G) {
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  double volume = 0;
+  switch (geometry.type) {
+    case Geometry::Type::kBox: {
+      const Eigen::Vector3d& s = geometry.size;
+      const UnitInertia<double> G = UnitInertia<double>::SolidBox(s.x(), s.y(), s.z());
+      volume = s.x() * s.y() * s.z();
+      *I_GGcm_G = G * volume;
+      break;
+    }
+    case Geometry::Type::kCylinder: {
+      const double r = geometry.radius, L = geometry.length;
+      const UnitInertia<double> G = UnitInertia<double>::SolidCylinder(r, L, z);
+      volume = kPi * r * r * L;
+      *I_GGcm_G = G * volume;
+      break;
+    }
+    case Geometry::Type::kSphere: {
+      const double r = geometry.radius;
+      const UnitInertia<double> G = UnitInertia<double>::SolidSphere(r);
+      volume = 4.0 / 3.0 * kPi * r * r * r;
+      *I_GGcm_G = G * volume;
+      break;
+    }
+    case Geometry::Type::kCapsule: {
+      const double r = geometry.radius, L = geometry.length;
+      const UnitInertia<double> G = UnitInertia<double>::SolidCapsule(r, L, z);
+      volume = kPi * r * r * L + 4.0 / 3.0 * kPi * r * r * r;
+      *I_GGcm_G = G * volume;
+      break;
+    }
+    case Geometry::Type::kEllipsoid: {
+      const Eigen::Vector3d& a = geometry.radii;
+      const UnitInertia<double> G = UnitInertia<double>::SolidEllipsoid(a.x(), a.y(), a.z());
+      volume = 4.0 / 3.0 * kPi * a.x() * a.y() * a.z();
+      *I_GGcm_G = G * volume;
+      break;
+    }
+    case Geometry::Type::kMesh:
+    case Geometry::Type::kOther:
+      break;
+  }
+  return volume;
+}
+
+// The file of a mesh geometry: a relative URI is relative to the file that holds the geometry
+// (for an SDF model included from another folder, that is the included model's file, not
+// options.model_file). Nothing, with the reason, if it cannot be resolved.
+std::optional<std::string> ResolveGeometryMesh(const Geometry& geometry,
+                                               const MeshResolveOptions& options,
+                                               std::string* reason) {
+  MeshResolveOptions where = options;
+  const std::string& holder = geometry.location.file;
+  if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
+    where.model_file = holder;
+  }
+  return ResolveMeshUri(geometry.uri, where, reason);
+}
+
+// Loads the mesh at `path` (through the cache when there is one): its mass properties at
+// density 1 once scaled, and its unscaled vertices (for the bounding box). Either may be null
+// on failure, with the reason.
+void LoadGeometryMesh(const Geometry& geometry, const std::string& path,
+                      const MeshResolveOptions& options, std::optional<MeshMassProperties>* mesh,
+                      std::shared_ptr<const TriangleMesh>* vertices, std::string* reason) {
+  if (options.cache != nullptr) {
+    *mesh = options.cache->MassProperties(path, geometry.scale, options.inertia, reason);
+    if (*mesh) *vertices = options.cache->Load(path, reason);
+  } else {
+    auto triangles = std::make_shared<TriangleMesh>();
+    if (LoadMeshFile(path, triangles.get(), reason)) {
+      MeshInertiaOptions unit_density = options.inertia;
+      unit_density.density = 1;
+      *mesh = CalcMeshMassProperties(ScaleMesh(*triangles, geometry.scale), unit_density);
+      *vertices = std::move(triangles);
+    }
+  }
+}
+
+// Fills in a mesh geometry's volume, box in B, path and diagnostics, and its center and inertia
+// at density 1 in G. False, with the error, if the mesh cannot be resolved or loaded.
+bool CalcMeshGeometry(const Geometry& geometry, const MeshResolveOptions& options,
+                      GeometryMassProperties* result, Eigen::Vector3d* p_GoGcm_G,
+                      RotationalInertia<double>* I_GGcm_G, std::string* error) {
+  std::string reason;
+  const std::optional<std::string> path = ResolveGeometryMesh(geometry, options, &reason);
+  if (!path) {
+    if (error) *error = Describe(geometry) + ": " + reason;
+    return false;
+  }
+  if (!geometry.scale.allFinite()) {
+    if (error) *error = Describe(geometry) + ": the scale is not finite";
+    return false;
+  }
+  std::optional<MeshMassProperties> mesh;
+  std::shared_ptr<const TriangleMesh> vertices;  // for the bounding box
+  LoadGeometryMesh(geometry, *path, options, &mesh, &vertices, &reason);
+  if (!mesh || !vertices) {
+    if (error) *error = Describe(geometry) + ": " + reason;
+    return false;
+  }
+  // The box of the scaled vertices as posed in B (exact; one pass over the vertices).
+  for (const Eigen::Vector3d& v : vertices->vertices) {
+    result->box_B.extend(geometry.X_BG.p_AB + geometry.X_BG.R_AB * v.cwiseProduct(geometry.scale));
+  }
+  result->volume = mesh->mass;  // Density 1.
+  *p_GoGcm_G = mesh->p_GoGcm_G;
+  *I_GGcm_G = mesh->I_GGcm_G;
+  result->mesh_path = *path;
+  result->mesh_diagnostics = mesh->diagnostics;
+  return true;
+}
+
+}  // namespace
+
 std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry& geometry,
                                                                  const MeshResolveOptions& options,
                                                                  std::string* error) {
   GeometryMassProperties result;
   Eigen::Vector3d p_GoGcm_G = Eigen::Vector3d::Zero();
   RotationalInertia<double> I_GGcm_G;
-  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
   try {
     switch (geometry.type) {
-      case Geometry::Type::kBox: {
-        const Eigen::Vector3d& s = geometry.size;
-        const UnitInertia<double> G = UnitInertia<double>::SolidBox(s.x(), s.y(), s.z());
-        result.volume = s.x() * s.y() * s.z();
-        I_GGcm_G = G * result.volume;
+      case Geometry::Type::kBox:
+      case Geometry::Type::kCylinder:
+      case Geometry::Type::kSphere:
+      case Geometry::Type::kCapsule:
+      case Geometry::Type::kEllipsoid:
+        result.volume = CalcPrimitiveVolume(geometry, &I_GGcm_G);
         break;
-      }
-      case Geometry::Type::kCylinder: {
-        const double r = geometry.radius, L = geometry.length;
-        const UnitInertia<double> G = UnitInertia<double>::SolidCylinder(r, L, z);
-        result.volume = kPi * r * r * L;
-        I_GGcm_G = G * result.volume;
-        break;
-      }
-      case Geometry::Type::kSphere: {
-        const double r = geometry.radius;
-        const UnitInertia<double> G = UnitInertia<double>::SolidSphere(r);
-        result.volume = 4.0 / 3.0 * kPi * r * r * r;
-        I_GGcm_G = G * result.volume;
-        break;
-      }
-      case Geometry::Type::kCapsule: {
-        const double r = geometry.radius, L = geometry.length;
-        const UnitInertia<double> G = UnitInertia<double>::SolidCapsule(r, L, z);
-        result.volume = kPi * r * r * L + 4.0 / 3.0 * kPi * r * r * r;
-        I_GGcm_G = G * result.volume;
-        break;
-      }
-      case Geometry::Type::kEllipsoid: {
-        const Eigen::Vector3d& a = geometry.radii;
-        const UnitInertia<double> G = UnitInertia<double>::SolidEllipsoid(a.x(), a.y(), a.z());
-        result.volume = 4.0 / 3.0 * kPi * a.x() * a.y() * a.z();
-        I_GGcm_G = G * result.volume;
-        break;
-      }
-      case Geometry::Type::kMesh: {
-        std::string reason;
-        // A relative URI is relative to the file that holds the geometry: for an SDF model
-        // included from another folder, that is the included model's file, not options.model_file.
-        MeshResolveOptions where = options;
-        const std::string& holder = geometry.location.file;
-        if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
-          where.model_file = holder;
-        }
-        const std::optional<std::string> path = ResolveMeshUri(geometry.uri, where, &reason);
-        if (!path) {
-          if (error) *error = Describe(geometry) + ": " + reason;
+      case Geometry::Type::kMesh:
+        if (!CalcMeshGeometry(geometry, options, &result, &p_GoGcm_G, &I_GGcm_G, error)) {
           return std::nullopt;
         }
-        if (!geometry.scale.allFinite()) {
-          if (error) *error = Describe(geometry) + ": the scale is not finite";
-          return std::nullopt;
-        }
-        std::optional<MeshMassProperties> mesh;
-        std::shared_ptr<const TriangleMesh> vertices;  // for the bounding box
-        if (options.cache != nullptr) {
-          mesh = options.cache->MassProperties(*path, geometry.scale, options.inertia, &reason);
-          if (mesh) vertices = options.cache->Load(*path, &reason);
-        } else {
-          auto triangles = std::make_shared<TriangleMesh>();
-          if (LoadMeshFile(*path, triangles.get(), &reason)) {
-            MeshInertiaOptions unit_density = options.inertia;
-            unit_density.density = 1;
-            mesh = CalcMeshMassProperties(ScaleMesh(*triangles, geometry.scale), unit_density);
-            vertices = std::move(triangles);
-          }
-        }
-        if (!mesh || !vertices) {
-          if (error) *error = Describe(geometry) + ": " + reason;
-          return std::nullopt;
-        }
-        // The box of the scaled vertices as posed in B (exact; one pass over the vertices).
-        for (const Eigen::Vector3d& v : vertices->vertices) {
-          result.box_B.extend(geometry.X_BG.p_AB +
-                              geometry.X_BG.R_AB * v.cwiseProduct(geometry.scale));
-        }
-        result.volume = mesh->mass;  // Density 1.
-        p_GoGcm_G = mesh->p_GoGcm_G;
-        I_GGcm_G = mesh->I_GGcm_G;
-        result.mesh_path = *path;
-        result.mesh_diagnostics = mesh->diagnostics;
         break;
-      }
       case Geometry::Type::kOther:
         if (error) *error = Describe(geometry) + ": this geometry type has no volume model";
         return std::nullopt;

@@ -83,6 +83,130 @@ void SetOrigin(tinyxml2::XMLElement* element, const Pose& X) {
   origin->SetAttribute("rpy", Triple(RotationToRollPitchYaw(X.R_AB)).c_str());
 }
 
+// The named <link> elements of a <robot> by name, and its named <joint> elements in order.
+struct RobotElements {
+  std::unordered_map<std::string, tinyxml2::XMLElement*> links;
+  std::vector<tinyxml2::XMLElement*> joints;
+};
+
+// Collects the <robot>'s top-level named links and joints.
+RobotElements CollectRobotElements(tinyxml2::XMLElement* robot) {
+  RobotElements elements;
+  for (tinyxml2::XMLElement* e = robot->FirstChildElement(); e != nullptr;
+       e = e->NextSiblingElement()) {
+    const char* name = e->Attribute("name");
+    if (name == nullptr) continue;
+    if (std::string(e->Name()) == "link") elements.links.emplace(name, e);
+    if (std::string(e->Name()) == "joint") elements.joints.push_back(e);
+  }
+  return elements;
+}
+
+// Which group, and at which pose in its root, a merged (non-root) link is.
+struct Merged {
+  const std::string* root;
+  Pose X_RL;
+};
+using MergedLinks = std::unordered_map<std::string, Merged>;
+
+// Maps each merged link's name to its group's root and pose; counts the groups merged.
+MergedLinks MapMergedLinks(const Model& model, const std::vector<WeldedGroup>& groups,
+                           int* groups_merged) {
+  MergedLinks merged;
+  for (const WeldedGroup& group : groups) {
+    if (group.links.size() < 2) continue;
+    ++*groups_merged;
+    for (std::size_t k = 1; k < group.links.size(); ++k) {
+      merged.emplace(model.links[group.links[k]].name, Merged{&group.root_link, group.X_RL[k]});
+    }
+  }
+  return merged;
+}
+
+// Joints: removes the fixed ones that hold a merged link; re-parents those leaving a merged link.
+void RewireJoints(const Model& model, const MergedLinks& merged,
+                  const std::vector<tinyxml2::XMLElement*>& joint_elements,
+                  tinyxml2::XMLElement* robot) {
+  std::unordered_map<std::string, const Joint*> joint_by_name;
+  for (const Joint& joint : model.joints) joint_by_name.emplace(joint.name, &joint);
+  for (tinyxml2::XMLElement* joint_element : joint_elements) {
+    const auto joint_it = joint_by_name.find(joint_element->Attribute("name"));
+    if (joint_it == joint_by_name.end()) continue;
+    const Joint& joint = *joint_it->second;
+    const auto child = merged.find(joint.child);
+    const auto parent = merged.find(joint.parent);
+    const bool internal = joint.type == Joint::Type::kFixed && child != merged.end() &&
+                          (parent != merged.end() ? *parent->second.root == *child->second.root
+                                                  : joint.parent == *child->second.root);
+    if (internal) {
+      robot->DeleteChild(joint_element);
+      continue;
+    }
+    if (parent != merged.end()) {
+      tinyxml2::XMLElement* parent_element = joint_element->FirstChildElement("parent");
+      if (parent_element != nullptr) {
+        parent_element->SetAttribute("link", parent->second.root->c_str());
+      }
+      SetOrigin(joint_element, parent->second.X_RL * joint.X_PC);
+    }
+  }
+}
+
+// Moves a link's visuals and collisions into the root element, re-posed by X_RL.
+void MoveGeometriesToRoot(tinyxml2::XMLElement* link_element, const Pose& X_RL,
+                          tinyxml2::XMLElement* root_element) {
+  std::vector<tinyxml2::XMLElement*> geometries;
+  for (tinyxml2::XMLElement* e = link_element->FirstChildElement(); e != nullptr;
+       e = e->NextSiblingElement()) {
+    const std::string name = e->Name();
+    if (name == "visual" || name == "collision") geometries.push_back(e);
+  }
+  for (tinyxml2::XMLElement* geometry : geometries) {
+    SetOrigin(geometry, X_RL * OriginOf(geometry));
+    root_element->InsertEndChild(geometry);  // Moves the element.
+  }
+}
+
+// Replaces the root element's <inertial> children with one holding the group's composite.
+void WriteCompositeInertial(const CompositeInertia& composite, tinyxml2::XMLElement* root_element) {
+  while (tinyxml2::XMLElement* old = root_element->FirstChildElement("inertial")) {
+    root_element->DeleteChild(old);
+  }
+  tinyxml2::XMLElement* inertial = root_element->GetDocument()->NewElement("inertial");
+  root_element->InsertFirstChild(inertial);
+  tinyxml2::XMLElement* origin = inertial->InsertNewChildElement("origin");
+  origin->SetAttribute("xyz", Triple(composite.p_RoScm_R).c_str());
+  origin->SetAttribute("rpy", "0 0 0");
+  inertial->InsertNewChildElement("mass")->SetAttribute("value", Number(composite.mass).c_str());
+  tinyxml2::XMLElement* inertia = inertial->InsertNewChildElement("inertia");
+  const Eigen::Matrix3d& I = composite.I_SScm_R;
+  inertia->SetAttribute("ixx", Number(I(0, 0)).c_str());
+  inertia->SetAttribute("ixy", Number(I(0, 1)).c_str());
+  inertia->SetAttribute("ixz", Number(I(0, 2)).c_str());
+  inertia->SetAttribute("iyy", Number(I(1, 1)).c_str());
+  inertia->SetAttribute("iyz", Number(I(1, 2)).c_str());
+  inertia->SetAttribute("izz", Number(I(2, 2)).c_str());
+}
+
+// Links of one group: moves geometry into the root, removes the merged links, and writes the
+// composite inertial when any member has mass.
+void MergeGroupLinks(const Model& model, const WeldedGroup& group,
+                     const std::unordered_map<std::string, tinyxml2::XMLElement*>& link_elements,
+                     tinyxml2::XMLElement* robot, int* merged_links) {
+  tinyxml2::XMLElement* root_element = link_elements.at(group.root_link);
+  bool members_have_mass = false;
+  for (std::size_t k = 1; k < group.links.size(); ++k) {
+    const Link& link = model.links[group.links[k]];
+    members_have_mass = members_have_mass || (link.inertial && link.inertial->mass != 0);
+    tinyxml2::XMLElement* link_element = link_elements.at(link.name);
+    MoveGeometriesToRoot(link_element, group.X_RL[k], root_element);
+    robot->DeleteChild(link_element);
+    ++*merged_links;
+  }
+  if (!members_have_mass) return;
+  WriteCompositeInertial(CalcCompositeInertia(model, group), root_element);
+}
+
 }  // namespace
 
 Eigen::Vector3d RotationToRollPitchYaw(const Eigen::Matrix3d& R) {
@@ -121,97 +245,13 @@ MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& fil
     result.errors.push_back(MakeError(file_name, 0, "no <robot> element"));
     return result;
   }
-  std::unordered_map<std::string, tinyxml2::XMLElement*> link_elements;
-  std::vector<tinyxml2::XMLElement*> joint_elements;
-  for (tinyxml2::XMLElement* e = robot->FirstChildElement(); e != nullptr;
-       e = e->NextSiblingElement()) {
-    const char* name = e->Attribute("name");
-    if (name == nullptr) continue;
-    if (std::string(e->Name()) == "link") link_elements.emplace(name, e);
-    if (std::string(e->Name()) == "joint") joint_elements.push_back(e);
-  }
-  std::unordered_map<std::string, const Joint*> joint_by_name;
-  for (const Joint& joint : model.joints) joint_by_name.emplace(joint.name, &joint);
-
-  // Which group, and at which pose in its root, each merged (non-root) link is.
-  struct Merged {
-    const std::string* root;
-    Pose X_RL;
-  };
-  std::unordered_map<std::string, Merged> merged;
+  const RobotElements elements = CollectRobotElements(robot);
   const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
+  const MergedLinks merged = MapMergedLinks(model, groups, &result.groups_merged);
+  RewireJoints(model, merged, elements.joints, robot);
   for (const WeldedGroup& group : groups) {
     if (group.links.size() < 2) continue;
-    ++result.groups_merged;
-    for (std::size_t k = 1; k < group.links.size(); ++k) {
-      merged.emplace(model.links[group.links[k]].name, Merged{&group.root_link, group.X_RL[k]});
-    }
-  }
-
-  // Joints: remove the fixed ones that hold a merged link; re-parent those leaving a merged link.
-  for (tinyxml2::XMLElement* joint_element : joint_elements) {
-    const auto joint_it = joint_by_name.find(joint_element->Attribute("name"));
-    if (joint_it == joint_by_name.end()) continue;
-    const Joint& joint = *joint_it->second;
-    const auto child = merged.find(joint.child);
-    const auto parent = merged.find(joint.parent);
-    const bool internal = joint.type == Joint::Type::kFixed && child != merged.end() &&
-                          (parent != merged.end() ? *parent->second.root == *child->second.root
-                                                  : joint.parent == *child->second.root);
-    if (internal) {
-      robot->DeleteChild(joint_element);
-      continue;
-    }
-    if (parent != merged.end()) {
-      tinyxml2::XMLElement* parent_element = joint_element->FirstChildElement("parent");
-      if (parent_element != nullptr) {
-        parent_element->SetAttribute("link", parent->second.root->c_str());
-      }
-      SetOrigin(joint_element, parent->second.X_RL * joint.X_PC);
-    }
-  }
-
-  // Links: move visuals and collisions into the root, then remove the merged link.
-  for (const WeldedGroup& group : groups) {
-    if (group.links.size() < 2) continue;
-    tinyxml2::XMLElement* root_element = link_elements.at(group.root_link);
-    bool members_have_mass = false;
-    for (std::size_t k = 1; k < group.links.size(); ++k) {
-      const Link& link = model.links[group.links[k]];
-      members_have_mass = members_have_mass || (link.inertial && link.inertial->mass != 0);
-      tinyxml2::XMLElement* link_element = link_elements.at(link.name);
-      std::vector<tinyxml2::XMLElement*> geometries;
-      for (tinyxml2::XMLElement* e = link_element->FirstChildElement(); e != nullptr;
-           e = e->NextSiblingElement()) {
-        const std::string name = e->Name();
-        if (name == "visual" || name == "collision") geometries.push_back(e);
-      }
-      for (tinyxml2::XMLElement* geometry : geometries) {
-        SetOrigin(geometry, group.X_RL[k] * OriginOf(geometry));
-        root_element->InsertEndChild(geometry);  // Moves the element.
-      }
-      robot->DeleteChild(link_element);
-      ++result.merged_links;
-    }
-    if (!members_have_mass) continue;
-    const CompositeInertia composite = CalcCompositeInertia(model, group);
-    while (tinyxml2::XMLElement* old = root_element->FirstChildElement("inertial")) {
-      root_element->DeleteChild(old);
-    }
-    tinyxml2::XMLElement* inertial = doc.NewElement("inertial");
-    root_element->InsertFirstChild(inertial);
-    tinyxml2::XMLElement* origin = inertial->InsertNewChildElement("origin");
-    origin->SetAttribute("xyz", Triple(composite.p_RoScm_R).c_str());
-    origin->SetAttribute("rpy", "0 0 0");
-    inertial->InsertNewChildElement("mass")->SetAttribute("value", Number(composite.mass).c_str());
-    tinyxml2::XMLElement* inertia = inertial->InsertNewChildElement("inertia");
-    const Eigen::Matrix3d& I = composite.I_SScm_R;
-    inertia->SetAttribute("ixx", Number(I(0, 0)).c_str());
-    inertia->SetAttribute("ixy", Number(I(0, 1)).c_str());
-    inertia->SetAttribute("ixz", Number(I(0, 2)).c_str());
-    inertia->SetAttribute("iyy", Number(I(1, 1)).c_str());
-    inertia->SetAttribute("iyz", Number(I(1, 2)).c_str());
-    inertia->SetAttribute("izz", Number(I(2, 2)).c_str());
+    MergeGroupLinks(model, group, elements.links, robot, &result.merged_links);
   }
 
   tinyxml2::XMLPrinter printer;
