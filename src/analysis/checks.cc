@@ -114,6 +114,15 @@ std::string DescribeViolation(const Validity& v) {
   return text + ")";
 }
 
+// The values of a finding about the validity `v` of an inertia judged with `tolerance`.
+std::vector<std::pair<std::string, double>> ValidityValues(const Validity& v, double tolerance) {
+  return {
+      {"principal_min", v.moments(0)}, {"principal_mid", v.moments(1)},
+      {"principal_max", v.moments(2)}, {"trace", v.trace},
+      {"violation", v.excess},         {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
+      {"tolerance", tolerance}};
+}
+
 Eigen::Matrix3d WrittenMatrix(const Inertial& in) {
   Eigen::Matrix3d I;
   I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
@@ -264,12 +273,45 @@ class Checker {
     return InertiaLocation(link);
   }
 
+  // A link with a positive mass, and the geometry its inertia and center of mass are judged by.
+  struct JudgedLink {
+    const Link* link = nullptr;
+    int index = -1;
+    std::string who;            // "link 'name'"
+    bool valid = false;         // the written inertia is valid within the tolerance
+    Eigen::Matrix3d I_written;  // as written: about the center of mass, in the inertial frame
+    MassProperties props;       // about the center of mass, in the link frame
+    // The link as a solid of its geometry (primitives; meshes through options_.shape).
+    std::optional<LinkShape> shape;
+    // Its own geometry's extent; none for placeholder geometry and dummy masses.
+    std::optional<GeometryBounds> bounds;
+    // The extent its inertia and center of mass must fit: its own, or its welded group's.
+    std::optional<GeometryBounds> group_bounds;
+    std::string geometry_name;  // "collision", "visual mesh", ...
+  };
+
+  // Every per-link rule on link `link_index`, in the order they are judged.
   void CheckLink(int link_index) {
     const Link& link = model_.links[link_index];
     if (!link.inertial) return;  // inertial-missing is judged with the link's group.
-    const Inertial& in = *link.inertial;
     const std::string who = "link '" + link.name + "'";
-    const double m = in.mass;
+    CheckMassFinite(link, who);
+    if (!CheckInertialFinite(link, who)) return;
+    const bool valid = CheckInertiaValidity(link_index, who);
+    const double m = link.inertial->mass;
+    if (!(m > 0) || !std::isfinite(m)) return;
+
+    const JudgedLink judged = JudgeAgainstGeometry(link_index, who, valid);
+    CheckProductsSignAgainstGeometry(judged);
+    const bool units_flagged = CheckUnits(judged);
+    if (!judged.group_bounds) return;
+    if (valid && !units_flagged) CheckInertiaFitsGeometry(judged);
+    CheckComInsideGeometry(judged);
+  }
+
+  // mass-not-positive: a negative, NaN or infinite mass.
+  void CheckMassFinite(const Link& link, const std::string& who) {
+    const double m = link.inertial->mass;
     if (!std::isfinite(m) || m < 0) {
       Emit(kMassNotPositive, link, MassLocation(link),
            who + ": mass " + Num(m) + " is " + (std::isfinite(m) ? "negative" : "not finite") +
@@ -277,20 +319,33 @@ class Checker {
                "body)",
            {{"mass", m}});
     }
+  }
+
+  // inertia-not-finite; returns whether the inertia and the inertial's pose are all finite.
+  bool CheckInertialFinite(const Link& link, const std::string& who) {
+    const Inertial& in = *link.inertial;
     const Eigen::Matrix3d I_written = WrittenMatrix(in);
-    if (!I_written.allFinite() || !in.X_BBi.p_AB.allFinite() || !in.X_BBi.R_AB.allFinite()) {
-      Emit(kInertiaNotFinite, link, InertiaLocation(link),
-           who + ": the inertial has a NaN or infinite number: ixx " + Num(in.ixx) + ", iyy " +
-               Num(in.iyy) + ", izz " + Num(in.izz) + ", ixy " + Num(in.ixy) + ", ixz " +
-               Num(in.ixz) + ", iyz " + Num(in.iyz) + ", center of mass " + Vec(in.X_BBi.p_AB),
-           {{"ixx", in.ixx},
-            {"iyy", in.iyy},
-            {"izz", in.izz},
-            {"ixy", in.ixy},
-            {"ixz", in.ixz},
-            {"iyz", in.iyz}});
-      return;
+    if (I_written.allFinite() && in.X_BBi.p_AB.allFinite() && in.X_BBi.R_AB.allFinite()) {
+      return true;
     }
+    Emit(kInertiaNotFinite, link, InertiaLocation(link),
+         who + ": the inertial has a NaN or infinite number: ixx " + Num(in.ixx) + ", iyy " +
+             Num(in.iyy) + ", izz " + Num(in.izz) + ", ixy " + Num(in.ixy) + ", ixz " +
+             Num(in.ixz) + ", iyz " + Num(in.iyz) + ", center of mass " + Vec(in.X_BBi.p_AB),
+         {{"ixx", in.ixx},
+          {"iyy", in.iyy},
+          {"izz", in.izz},
+          {"ixy", in.ixy},
+          {"ixz", in.ixz},
+          {"iyz", in.iyz}});
+    return false;
+  }
+
+  // inertia-not-physical (and products-sign-suspect when negating the products makes it valid),
+  // or inertia-near-boundary; returns whether the written inertia is valid within the tolerance.
+  bool CheckInertiaValidity(int link_index, const std::string& who) {
+    const Link& link = model_.links[link_index];
+    const Eigen::Matrix3d I_written = WrittenMatrix(*link.inertial);
     // Validity does not depend on the frame the inertia is expressed in: judge the numbers as
     // written (about the center of mass, in the inertial frame), free of rotation round-off.
     const double tol = options_.tolerance;
@@ -300,219 +355,240 @@ class Checker {
       Emit(kInertiaNotPhysical, link, InertiaLocation(link),
            who + ": the inertia about the center of mass is not physically valid: " +
                DescribeViolation(v) + GroupNote(link_index),
-           {{"principal_min", v.moments(0)},
-            {"principal_mid", v.moments(1)},
-            {"principal_max", v.moments(2)},
-            {"trace", v.trace},
-            {"violation", v.excess},
-            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
-            {"tolerance", tol}});
-      Eigen::Matrix3d I_negated = -I_written;
-      I_negated.diagonal() = I_written.diagonal();
-      if (IsValid(I_negated, tol)) {
-        const Validity vn = Analyze(I_negated);
-        Emit(kProductsSignSuspect, link, InertiaLocation(link),
-             who +
-                 ": the inertia is invalid as written but valid with the products of inertia "
-                 "negated (ixy, ixz, iyz = " +
-                 Num(in.ixy) + ", " + Num(in.ixz) + ", " + Num(in.iyz) +
-                 "; negated, the principal moments are " + Num(vn.moments(0)) + ", " +
-                 Num(vn.moments(1)) + ", " + Num(vn.moments(2)) +
-                 "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
-             {{"ixy", in.ixy},
-              {"ixz", in.ixz},
-              {"iyz", in.iyz},
-              {"negated_principal_min", vn.moments(0)},
-              {"negated_principal_mid", vn.moments(1)},
-              {"negated_principal_max", vn.moments(2)}});
-      }
+           ValidityValues(v, tol));
+      CheckProductsSignWhenInvalid(link, who);
     } else if (!IsValid(I_written, internal::DefaultInertiaValidityTolerance<double>())) {
       const Validity v = Analyze(I_written);
       Emit(kInertiaNearBoundary, link, InertiaLocation(link),
            who + ": the inertia is valid only within the tolerance " + Num(tol) +
                " of the trace: " + DescribeViolation(v) +
                " (the body is a thin shape, written with rounded numbers?)",
-           {{"principal_min", v.moments(0)},
-            {"principal_mid", v.moments(1)},
-            {"principal_max", v.moments(2)},
-            {"trace", v.trace},
-            {"violation", v.excess},
-            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
-            {"tolerance", tol}});
+           ValidityValues(v, tol));
     }
-    if (!(m > 0) || !std::isfinite(m)) return;
+    return valid;
+  }
 
-    const MassProperties props = LinkMassProperties(link, model_.format);
-    const Eigen::Vector3d& c = props.p_FoScm_F;
-    const Eigen::Matrix3d& I_B = props.I_SScm_F;
-    // The link as a solid of its geometry (primitives; meshes through options_.shape), and its
-    // extent.
-    const std::optional<LinkShape> shape = CalcLinkShape(link, options_.shape);
-    std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, shape);
+  // products-sign-suspect for an invalid inertia: valid with the products of inertia negated.
+  void CheckProductsSignWhenInvalid(const Link& link, const std::string& who) {
+    const Inertial& in = *link.inertial;
+    const Eigen::Matrix3d I_written = WrittenMatrix(in);
+    Eigen::Matrix3d I_negated = -I_written;
+    I_negated.diagonal() = I_written.diagonal();
+    if (!IsValid(I_negated, options_.tolerance)) return;
+    const Validity vn = Analyze(I_negated);
+    Emit(kProductsSignSuspect, link, InertiaLocation(link),
+         who +
+             ": the inertia is invalid as written but valid with the products of inertia "
+             "negated (ixy, ixz, iyz = " +
+             Num(in.ixy) + ", " + Num(in.ixz) + ", " + Num(in.iyz) +
+             "; negated, the principal moments are " + Num(vn.moments(0)) + ", " +
+             Num(vn.moments(1)) + ", " + Num(vn.moments(2)) +
+             "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
+         {{"ixy", in.ixy},
+          {"ixz", in.ixz},
+          {"iyz", in.iyz},
+          {"negated_principal_min", vn.moments(0)},
+          {"negated_principal_mid", vn.moments(1)},
+          {"negated_principal_max", vn.moments(2)}});
+  }
+
+  // The mass properties of link `link_index` (of positive mass) and the geometry they are
+  // judged by.
+  JudgedLink JudgeAgainstGeometry(int link_index, const std::string& who, bool valid) const {
+    const Link& link = model_.links[link_index];
+    JudgedLink judged;
+    judged.link = &link;
+    judged.index = link_index;
+    judged.who = who;
+    judged.valid = valid;
+    judged.I_written = WrittenMatrix(*link.inertial);
+    judged.props = LinkMassProperties(link, model_.format);
+    const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+    judged.shape = CalcLinkShape(link, options_.shape);
+    std::optional<GeometryBounds>& bounds = judged.bounds;
+    bounds = CalcLinkGeometryBounds(link, judged.shape);
     // Placeholder geometry and dummy masses: nothing to judge by (see kPlaceholderHalfDiagonal).
     if (bounds && 0.5 * bounds->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
       bounds.reset();
     }
-    if (m <= kDummyMass) bounds.reset();
+    if (link.inertial->mass <= kDummyMass) bounds.reset();
     // A mass lumped onto one link of a welded group shows as a center of mass outside the link's
     // own geometry: such a link is judged against the geometry of the whole group (in this link's
     // frame); any other link against its own (collision and visual).
-    std::optional<GeometryBounds> group_bounds = bounds;
+    judged.group_bounds = bounds;
     if (bounds) {
       const Eigen::Vector3d h_own = 0.5 * bounds->box_B.sizes();
       const Eigen::Vector3d out_own =
           ((c - bounds->box_B.center()).cwiseAbs() - h_own).cwiseMax(Eigen::Vector3d::Zero());
       if (out_own.norm() > (kGeometryMargin - 1) * h_own.norm()) {
-        group_bounds = GroupBounds(link_index, *bounds);
+        judged.group_bounds = GroupBounds(link_index, *bounds);
       }
     }
-    const std::string geometry_name =
-        std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
-        (bounds && bounds->from_mesh ? " mesh" : "");
-    const double trace = I_written.trace();
+    judged.geometry_name = std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
+                           (bounds && bounds->from_mesh ? " mesh" : "");
+    return judged;
+  }
 
-    // products-sign-suspect for an inertia valid both ways: the geometry decides.
-    if (valid && shape) {
-      Eigen::Matrix3d I_negated = -I_written;
-      I_negated.diagonal() = I_written.diagonal();
-      const std::optional<ProductsSignEvidence> evidence = FindProductsSignEvidence(in, *shape);
-      if (evidence && IsValid(I_negated, tol)) {
-        const Eigen::Vector3d& g = evidence->geometry_products;
-        Emit(kProductsSignSuspect, link, InertiaLocation(link),
-             who + ": the products of inertia (ixy, ixz, iyz = " + Num(in.ixy) + ", " +
-                 Num(in.ixz) + ", " + Num(in.iyz) + ") have the opposite sign of those its " +
-                 geometry_name + " geometry implies for its mass (" + Num(g.x()) + ", " +
-                 Num(g.y()) + ", " + Num(g.z()) + "; negated they differ by " +
-                 Format("%.2g%%", 100 * evidence->mismatch_negated) + ", as written by " +
-                 Format("%.3g%%", 100 * evidence->mismatch_as_written) +
-                 "): they were probably written as +∫xy dm where URDF/SDF expect -∫xy dm, or "
-                 "copied from a mirror-image part",
-             {{"ixy", in.ixy},
-              {"ixz", in.ixz},
-              {"iyz", in.iyz},
-              {"geometry_ixy", g.x()},
-              {"geometry_ixz", g.y()},
-              {"geometry_iyz", g.z()},
-              {"cosine", evidence->cosine},
-              {"mismatch_as_written", evidence->mismatch_as_written},
-              {"mismatch_negated", evidence->mismatch_negated}});
-      }
-    }
+  // products-sign-suspect for an inertia valid both ways: the geometry decides.
+  void CheckProductsSignAgainstGeometry(const JudgedLink& judged) {
+    if (!judged.valid || !judged.shape) return;
+    const Link& link = *judged.link;
+    const Inertial& in = *link.inertial;
+    Eigen::Matrix3d I_negated = -judged.I_written;
+    I_negated.diagonal() = judged.I_written.diagonal();
+    const std::optional<ProductsSignEvidence> evidence =
+        FindProductsSignEvidence(in, *judged.shape);
+    if (!evidence || !IsValid(I_negated, options_.tolerance)) return;
+    const Eigen::Vector3d& g = evidence->geometry_products;
+    Emit(kProductsSignSuspect, link, InertiaLocation(link),
+         judged.who + ": the products of inertia (ixy, ixz, iyz = " + Num(in.ixy) + ", " +
+             Num(in.ixz) + ", " + Num(in.iyz) + ") have the opposite sign of those its " +
+             judged.geometry_name + " geometry implies for its mass (" + Num(g.x()) + ", " +
+             Num(g.y()) + ", " + Num(g.z()) + "; negated they differ by " +
+             Format("%.2g%%", 100 * evidence->mismatch_negated) + ", as written by " +
+             Format("%.3g%%", 100 * evidence->mismatch_as_written) +
+             "): they were probably written as +∫xy dm where URDF/SDF expect -∫xy dm, or "
+             "copied from a mirror-image part",
+         {{"ixy", in.ixy},
+          {"ixz", in.ixz},
+          {"iyz", in.iyz},
+          {"geometry_ixy", g.x()},
+          {"geometry_ixz", g.y()},
+          {"geometry_iyz", g.z()},
+          {"cosine", evidence->cosine},
+          {"mismatch_as_written", evidence->mismatch_as_written},
+          {"mismatch_negated", evidence->mismatch_negated}});
+  }
 
-    // units-suspect.
-    bool units_flagged = false;
-    if (trace > 0) {
-      const double k = std::sqrt(trace / (2 * m));
-      if (bounds) {
-        const double extent = 0.5 * bounds->box_B.diagonal().norm();
-        if (extent > 0) {
-          const double ratio = k / extent;
-          const double group_extent = 0.5 * group_bounds->box_B.diagonal().norm();
-          // Too large only against the whole group's known geometry; too small against the link.
-          const bool too_large = ratio > kUnitsRatio && k / group_extent > kUnitsRatio;
-          if (too_large || ratio < 1 / kUnitsRatio) {
-            units_flagged = true;
-            // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
-            Emit(kUnitsSuspect, link, InertiaLocation(link),
-                 who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
-                     " times the half-diagonal " + Num(extent) + " m of its " + geometry_name +
-                     " geometry (expected " + "about 0.3 to 1): " + Causes(ratio) +
-                     MeshScaleHint(*bounds, ratio),
-                 {{"radius_of_gyration", k},
-                  {"geometry_half_diagonal", extent},
-                  {"ratio", ratio},
-                  {"mass", m},
-                  {"trace", trace}});
-          }
-        }
-      } else if (k > kMaxGyrationRadiusWithoutGeometry) {
-        units_flagged = true;
-        Emit(kUnitsSuspect, link, InertiaLocation(link),
-             who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
-                 Num(kMaxGyrationRadiusWithoutGeometry) +
-                 " m (the link has no geometry of known size): the inertia looks like kg·mm² "
-                 "(1e6 too large), which would make it " +
-                 Num(k / 1000) + " m",
-             {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
-      }
+  // units-suspect; returns whether it was flagged.
+  bool CheckUnits(const JudgedLink& judged) {
+    const Link& link = *judged.link;
+    const double m = link.inertial->mass;
+    const double trace = judged.I_written.trace();
+    if (!(trace > 0)) return false;
+    const double k = std::sqrt(trace / (2 * m));
+    if (!judged.bounds) {
+      if (!(k > kMaxGyrationRadiusWithoutGeometry)) return false;
+      Emit(kUnitsSuspect, link, InertiaLocation(link),
+           judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
+               Num(kMaxGyrationRadiusWithoutGeometry) +
+               " m (the link has no geometry of known size): the inertia looks like kg·mm² "
+               "(1e6 too large), which would make it " +
+               Num(k / 1000) + " m",
+           {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
+      return true;
     }
-    // The "too large" verdicts below are made against the group's known geometry; where some of
-    // it is of unknown size (a mesh not read), the body may reach farther: the allowance is then
-    // kPartialGeometryMargin times larger.
-    if (!group_bounds) return;
-    const double allowance = group_bounds->partial ? kPartialGeometryMargin : 1.0;
-    const Eigen::Vector3d o = group_bounds->box_B.center();
-    const Eigen::Vector3d h = 0.5 * group_bounds->box_B.sizes();
+    const double extent = 0.5 * judged.bounds->box_B.diagonal().norm();
+    if (!(extent > 0)) return false;
+    const double ratio = k / extent;
+    const double group_extent = 0.5 * judged.group_bounds->box_B.diagonal().norm();
+    // Too large only against the whole group's known geometry; too small against the link.
+    const bool too_large = ratio > kUnitsRatio && k / group_extent > kUnitsRatio;
+    if (!(too_large || ratio < 1 / kUnitsRatio)) return false;
+    // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
+    Emit(kUnitsSuspect, link, InertiaLocation(link),
+         judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
+             " times the half-diagonal " + Num(extent) + " m of its " + judged.geometry_name +
+             " geometry (expected " + "about 0.3 to 1): " + Causes(ratio) +
+             MeshScaleHint(*judged.bounds, ratio),
+         {{"radius_of_gyration", k},
+          {"geometry_half_diagonal", extent},
+          {"ratio", ratio},
+          {"mass", m},
+          {"trace", trace}});
+    return true;
+  }
+
+  // The "too large" verdicts of the geometry rules are made against the group's known geometry;
+  // where some of it is of unknown size (a mesh not read), the body may reach farther: the
+  // allowance is then kPartialGeometryMargin times larger.
+  static double Allowance(const GeometryBounds& group_bounds) {
+    return group_bounds.partial ? kPartialGeometryMargin : 1.0;
+  }
+
+  // inertia-exceeds-geometry / inertia-about-origin-suspect (valid inertias only). A body inside
+  // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
+  // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
+  void CheckInertiaFitsGeometry(const JudgedLink& judged) {
+    const Link& link = *judged.link;
+    const double m = link.inertial->mass;
+    const double tol = options_.tolerance;
+    const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+    const Eigen::Matrix3d& I_B = judged.props.I_SScm_F;
+    const double allowance = Allowance(*judged.group_bounds);
+    const Eigen::Vector3d o = judged.group_bounds->box_B.center();
+    const Eigen::Vector3d h = 0.5 * judged.group_bounds->box_B.sizes();
     const double scale2 = h.squaredNorm();
-    const std::string& geometry_kind = geometry_name;
-
-    // inertia-exceeds-geometry / inertia-about-origin-suspect (valid inertias only). A body inside
-    // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
-    // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
-    if (valid && !units_flagged) {
-      const double r2 = allowance * allowance * kGeometryMargin * kGeometryMargin * scale2;
-      const Eigen::Vector3d d = c - o;
-      // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
-      const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
-      const double bound = m * r2;
-      if (spread - bound > tol * bound) {
-        // Would the numbers fit as the inertia about the link origin Bo? Then I_Bcm = I − m·(|c|²1
-        // − c·cᵀ) must be valid and fit the sphere.
-        const Eigen::Matrix3d I_shifted =
-            I_B - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-        const double shifted_spread = 0.5 * I_shifted.trace() + m * d.squaredNorm();
-        const bool shifted_fits =
-            !c.isZero(0) && IsValid(I_shifted, tol) && shifted_spread - bound <= tol * bound;
-        if (shifted_fits) {
-          const Validity vs = Analyze(I_shifted);
-          Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
-               who + ": the inertia needs more room than the " + geometry_kind +
-                   " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
-                   " kg·m² about the center o of its bounding box, r = " +
-                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
-                   " m), but taken as the inertia about the link origin and shifted to the center "
-                   "of mass " +
-                   Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) +
-                   ", " + Num(vs.moments(1)) + ", " + Num(vs.moments(2)) +
-                   "): it was probably written about the link origin",
-               {{"spread", spread},
-                {"bound", bound},
-                {"shifted_spread", shifted_spread},
-                {"shifted_principal_min", vs.moments(0)},
-                {"shifted_principal_mid", vs.moments(1)},
-                {"shifted_principal_max", vs.moments(2)}});
-        } else {
-          Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
-               who + ": no mass distribution inside the bounding box of the " + geometry_kind +
-                   " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
-                   " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
-                   " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " +
-                   Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
-                   " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
-               {{"spread", spread},
-                {"bound", bound},
-                {"ratio", spread / bound},
-                {"half_diagonal", std::sqrt(r2)}});
-        }
-      }
+    const std::string& geometry_kind = judged.geometry_name;
+    const double r2 = allowance * allowance * kGeometryMargin * kGeometryMargin * scale2;
+    const Eigen::Vector3d d = c - o;
+    // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
+    const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
+    const double bound = m * r2;
+    if (!(spread - bound > tol * bound)) return;
+    // Would the numbers fit as the inertia about the link origin Bo? Then I_Bcm = I − m·(|c|²1
+    // − c·cᵀ) must be valid and fit the sphere.
+    const Eigen::Matrix3d I_shifted =
+        I_B - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+    const double shifted_spread = 0.5 * I_shifted.trace() + m * d.squaredNorm();
+    const bool shifted_fits =
+        !c.isZero(0) && IsValid(I_shifted, tol) && shifted_spread - bound <= tol * bound;
+    if (shifted_fits) {
+      const Validity vs = Analyze(I_shifted);
+      Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
+           judged.who + ": the inertia needs more room than the " + geometry_kind +
+               " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
+               " kg·m² about the center o of its bounding box, r = " +
+               Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
+               " m), but taken as the inertia about the link origin and shifted to the center "
+               "of mass " +
+               Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) + ", " +
+               Num(vs.moments(1)) + ", " + Num(vs.moments(2)) +
+               "): it was probably written about the link origin",
+           {{"spread", spread},
+            {"bound", bound},
+            {"shifted_spread", shifted_spread},
+            {"shifted_principal_min", vs.moments(0)},
+            {"shifted_principal_mid", vs.moments(1)},
+            {"shifted_principal_max", vs.moments(2)}});
+    } else {
+      Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
+           judged.who + ": no mass distribution inside the bounding box of the " + geometry_kind +
+               " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
+               " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
+               " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " +
+               Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
+               " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
+           {{"spread", spread},
+            {"bound", bound},
+            {"ratio", spread / bound},
+            {"half_diagonal", std::sqrt(r2)}});
     }
+  }
 
-    // com-outside-geometry.
+  // com-outside-geometry.
+  void CheckComInsideGeometry(const JudgedLink& judged) {
+    const Link& link = *judged.link;
+    const GeometryBounds& group_bounds = *judged.group_bounds;
+    const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+    const double allowance = Allowance(group_bounds);
+    const Eigen::Vector3d o = group_bounds.box_B.center();
+    const Eigen::Vector3d h = 0.5 * group_bounds.box_B.sizes();
+    const double scale2 = h.squaredNorm();
     const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
     const double distance = outside.norm();
     const double allowed = allowance * (kGeometryMargin - 1) * std::sqrt(scale2);
-    if (distance - allowed > tol * std::sqrt(scale2)) {
-      Emit(kComOutsideGeometry, link, PoseLocation(link),
-           who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
-               " m outside the bounding box " + Vec(group_bounds->box_B.min()) + " to " +
-               Vec(group_bounds->box_B.max()) + " of its " + geometry_kind +
-               " geometry, farther than its half-diagonal " + Num(allowed) + " m",
-           {{"com_x", c.x()},
-            {"com_y", c.y()},
-            {"com_z", c.z()},
-            {"distance", distance},
-            {"allowed", allowed}});
-    }
+    if (!(distance - allowed > options_.tolerance * std::sqrt(scale2))) return;
+    Emit(kComOutsideGeometry, link, PoseLocation(link),
+         judged.who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
+             " m outside the bounding box " + Vec(group_bounds.box_B.min()) + " to " +
+             Vec(group_bounds.box_B.max()) + " of its " + judged.geometry_name +
+             " geometry, farther than its half-diagonal " + Num(allowed) + " m",
+         {{"com_x", c.x()},
+          {"com_y", c.y()},
+          {"com_z", c.z()},
+          {"distance", distance},
+          {"allowed", allowed}});
   }
 
   // The union of the known geometry (collision and visual) of every link of `link_index`'s welded
@@ -613,6 +689,7 @@ class Checker {
          {{"mass", 0}, {"moving_groups", static_cast<double>(moving)}});
   }
 
+  // Every per-group rule on welded group `group`, in the order they are judged.
   void CheckGroup(const WeldedGroup& group) {
     // A static SDF model never moves: missing or zero mass properties are what it should have.
     if (model_.is_static) return;
@@ -624,39 +701,57 @@ class Checker {
     const Link& root = model_.links[group.links.front()];
     const CompositeInertia composite = CalcCompositeInertia(model_, group);
     bool all_massless = true;
-    int contributing = 0;
-    std::vector<std::string> invalid_members;
-    for (int i : group.links) {
-      const Link& link = model_.links[i];
-      if (!link.inertial) {
-        if (model_.format == Model::Format::kSdf) {  // SDF default: mass 1, inertia diag(1,1,1).
-          all_massless = false;
-          ++contributing;
-        }
-        continue;
-      }
-      if (link.inertial->mass != 0) all_massless = false;
-      if (link.inertial->mass != 0 || !WrittenMatrix(*link.inertial).isZero(0)) ++contributing;
-    }
+    const int contributing = CountContributingMembers(group, &all_massless);
     const std::string who = group.links.size() > 1
                                 ? "the welded group rooted at '" + root.name + "' (" +
                                       std::to_string(group.links.size()) + " links)"
                                 : "link '" + root.name + "'";
-    bool massless_moving = false;
-    if (group.is_moving && all_massless) {
-      massless_moving = true;
-      std::string how = "is free-floating";
-      if (group.parent_joint >= 0) {
-        const Joint& joint = model_.joints[group.parent_joint];
-        how = "moves on " + joint.type_name + " joint '" + joint.name + "'";
+    const bool massless_moving = CheckMasslessMovingGroup(group, who, all_massless);
+    if (!massless_moving) CheckInertialMissing(group);
+    if (!composite.I_SScm_R.allFinite() || !std::isfinite(composite.mass)) return;
+    CheckCompositeValidity(group, who, composite, contributing);
+    CheckInertiaAboutJointAxis(group, who, composite);
+  }
+
+  // How many members of `group` contribute mass or inertia (SDF gives a link without <inertial>
+  // mass 1); sets *all_massless to false when some member has a mass.
+  int CountContributingMembers(const WeldedGroup& group, bool* all_massless) const {
+    int contributing = 0;
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      if (!link.inertial) {
+        if (model_.format == Model::Format::kSdf) {  // SDF default: mass 1, inertia diag(1,1,1).
+          *all_massless = false;
+          ++contributing;
+        }
+        continue;
       }
-      Emit(kMasslessMovingBody, root, MassLocation(root),
-           who + " " + how +
-               " but has zero mass: simulators reject a moving body without mass or become "
-               "unstable",
-           {{"mass", 0}, {"group_links", static_cast<double>(group.links.size())}});
+      if (link.inertial->mass != 0) *all_massless = false;
+      if (link.inertial->mass != 0 || !WrittenMatrix(*link.inertial).isZero(0)) ++contributing;
     }
-    // inertial-missing: links with collision geometry and no <inertial>.
+    return contributing;
+  }
+
+  // massless-moving-body; returns whether the group moves and has no mass.
+  bool CheckMasslessMovingGroup(const WeldedGroup& group, const std::string& who,
+                                bool all_massless) {
+    if (!group.is_moving || !all_massless) return false;
+    const Link& root = model_.links[group.links.front()];
+    std::string how = "is free-floating";
+    if (group.parent_joint >= 0) {
+      const Joint& joint = model_.joints[group.parent_joint];
+      how = "moves on " + joint.type_name + " joint '" + joint.name + "'";
+    }
+    Emit(kMasslessMovingBody, root, MassLocation(root),
+         who + " " + how +
+             " but has zero mass: simulators reject a moving body without mass or become "
+             "unstable",
+         {{"mass", 0}, {"group_links", static_cast<double>(group.links.size())}});
+    return true;
+  }
+
+  // inertial-missing: links with collision geometry and no <inertial>.
+  void CheckInertialMissing(const WeldedGroup& group) {
     double group_mass = 0;
     for (int i : group.links) {
       const Link& link = model_.links[i];
@@ -664,71 +759,71 @@ class Checker {
         group_mass += link.inertial->mass;
       }
     }
-    if (!massless_moving) {
-      for (int i : group.links) {
-        const Link& link = model_.links[i];
-        if (link.inertial) continue;
-        int collisions = 0;
-        for (const Geometry& g : link.geometries) collisions += g.is_collision ? 1 : 0;
-        if (collisions == 0) continue;
-        // Zero-size or 1 mm placeholder collisions on a frame link: nothing to give a mass to.
-        const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(link);
-        if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
-          continue;
-        }
-        // URDF: a collision-helper link whose geometry lies inside the geometry of a welded
-        // neighbour that carries mass: that body's mass is given once, on the neighbour.
-        if (model_.format == Model::Format::kUrdf && group_mass > 0 && b && !b->partial &&
-            InsideMassiveNeighbour(group, i, b->box_B)) {
-          continue;
-        }
-        Emit(kInertialMissing, link, link.location,
-             "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
-                 (collisions == 1 ? "y" : "ies") +
-                 " but no <inertial>: its mass was probably forgotten (" +
-                 (model_.format == Model::Format::kSdf
-                      ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
-                      : "URDF makes it massless)"),
-             {{"collisions", collisions}});
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      if (link.inertial) continue;
+      int collisions = 0;
+      for (const Geometry& g : link.geometries) collisions += g.is_collision ? 1 : 0;
+      if (collisions == 0) continue;
+      // Zero-size or 1 mm placeholder collisions on a frame link: nothing to give a mass to.
+      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(link);
+      if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
+        continue;
       }
+      // URDF: a collision-helper link whose geometry lies inside the geometry of a welded
+      // neighbour that carries mass: that body's mass is given once, on the neighbour.
+      if (model_.format == Model::Format::kUrdf && group_mass > 0 && b && !b->partial &&
+          InsideMassiveNeighbour(group, i, b->box_B)) {
+        continue;
+      }
+      Emit(kInertialMissing, link, link.location,
+           "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
+               (collisions == 1 ? "y" : "ies") +
+               " but no <inertial>: its mass was probably forgotten (" +
+               (model_.format == Model::Format::kSdf
+                    ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
+                    : "URDF makes it massless)"),
+           {{"collisions", collisions}});
     }
-    if (!composite.I_SScm_R.allFinite() || !std::isfinite(composite.mass)) return;
-    // inertia-not-physical for the group as one rigid body.
-    if (contributing > 1 && !IsValid(composite.I_SScm_R, options_.tolerance)) {
-      const Validity v = Analyze(composite.I_SScm_R);
-      Emit(kInertiaNotPhysical, root, InertiaLocation(root),
-           who + ": the composite inertia about the composite center of mass " +
-               Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
-               ") is not physically valid: " + DescribeViolation(v),
-           {{"principal_min", v.moments(0)},
-            {"principal_mid", v.moments(1)},
-            {"principal_max", v.moments(2)},
-            {"trace", v.trace},
-            {"violation", v.excess},
-            {"relative_violation", v.trace > 0 ? v.excess / v.trace : 0},
-            {"tolerance", options_.tolerance},
+  }
+
+  // inertia-not-physical for the group as one rigid body (when more than one member contributes).
+  void CheckCompositeValidity(const WeldedGroup& group, const std::string& who,
+                              const CompositeInertia& composite, int contributing) {
+    if (contributing <= 1 || IsValid(composite.I_SScm_R, options_.tolerance)) return;
+    const Link& root = model_.links[group.links.front()];
+    const Validity v = Analyze(composite.I_SScm_R);
+    std::vector<std::pair<std::string, double>> values = ValidityValues(v, options_.tolerance);
+    values.emplace_back("group_links", static_cast<double>(group.links.size()));
+    Emit(kInertiaNotPhysical, root, InertiaLocation(root),
+         who + ": the composite inertia about the composite center of mass " +
+             Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
+             ") is not physically valid: " + DescribeViolation(v),
+         std::move(values));
+  }
+
+  // zero-inertia-about-joint-axis: a group turning on a revolute or continuous joint.
+  void CheckInertiaAboutJointAxis(const WeldedGroup& group, const std::string& who,
+                                  const CompositeInertia& composite) {
+    if (group.parent_joint < 0 || !(composite.mass > 0)) return;
+    const Link& root = model_.links[group.links.front()];
+    const Joint& joint = model_.joints[group.parent_joint];
+    if (joint.type != Joint::Type::kRevolute && joint.type != Joint::Type::kContinuous) return;
+    const double norm = joint.axis.norm();
+    if (!(norm > 0) || !joint.axis.allFinite()) return;
+    const Eigen::Vector3d a = joint.axis / norm;
+    const Eigen::Matrix3d I_Ro = composite.CalcInertiaAboutOrigin();
+    const double I_axis = a.dot(I_Ro * a);
+    if (I_axis <= options_.tolerance * I_Ro.trace()) {
+      Emit(kZeroInertiaAboutJointAxis, root, InertiaLocation(root),
+           who + " turns on " + joint.type_name + " joint '" + joint.name +
+               "' but its moment of inertia about the joint axis " + Vec(a) + " is " + Num(I_axis) +
+               " kg·m² (mass " + Num(composite.mass) +
+               "): a torque would give it infinite angular acceleration",
+           {{"moment_about_axis", I_axis},
+            {"mass", composite.mass},
+            {"trace", I_Ro.trace()},
             {"group_links", static_cast<double>(group.links.size())}});
-    }
-    // zero-inertia-about-joint-axis.
-    if (group.parent_joint >= 0 && composite.mass > 0) {
-      const Joint& joint = model_.joints[group.parent_joint];
-      if (joint.type != Joint::Type::kRevolute && joint.type != Joint::Type::kContinuous) return;
-      const double norm = joint.axis.norm();
-      if (!(norm > 0) || !joint.axis.allFinite()) return;
-      const Eigen::Vector3d a = joint.axis / norm;
-      const Eigen::Matrix3d I_Ro = composite.CalcInertiaAboutOrigin();
-      const double I_axis = a.dot(I_Ro * a);
-      if (I_axis <= options_.tolerance * I_Ro.trace()) {
-        Emit(kZeroInertiaAboutJointAxis, root, InertiaLocation(root),
-             who + " turns on " + joint.type_name + " joint '" + joint.name +
-                 "' but its moment of inertia about the joint axis " + Vec(a) + " is " +
-                 Num(I_axis) + " kg·m² (mass " + Num(composite.mass) +
-                 "): a torque would give it infinite angular acceleration",
-             {{"moment_about_axis", I_axis},
-              {"mass", composite.mass},
-              {"trace", I_Ro.trace()},
-              {"group_links", static_cast<double>(group.links.size())}});
-      }
     }
   }
 

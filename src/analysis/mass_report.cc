@@ -218,18 +218,19 @@ Pose CalcJointPose(const Joint& joint, double q) {
   return joint.X_PC * X_CCq;
 }
 
-bool ComputeMassReport(const Model& model, const MassReportOptions& options,
-                       ModelMassReport* report, std::string* error) {
-  *report = ModelMassReport();
-  report->name = model.name;
-  report->file = model.file;
-  if (!options.only.empty() && !options.subtree.empty()) {
-    *error = "--only and --subtree cannot be combined";
-    return false;
-  }
-  const ModelIndex index = BuildIndex(model);
+namespace {
 
-  std::unordered_map<int, double> joint_values;
+// The links named by --frame, --subtree and --only (-1 or empty when not given).
+struct NamedLinks {
+  int frame = -1;
+  int subtree = -1;
+  std::vector<int> only;  // without repeats, in the order given
+};
+
+// The values of options.joint_values by joint number; false (with *error) when one of them names
+// no joint of the model, a joint that takes no value, or is not finite.
+bool ParseJointValues(const Model& model, const MassReportOptions& options,
+                      std::unordered_map<int, double>* joint_values, std::string* error) {
   std::optional<internal::NameIndex> joint_index;  // only when joint values are given
   if (!options.joint_values.empty()) {
     joint_index.emplace(static_cast<int>(model.joints.size()),
@@ -256,89 +257,135 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
       *error = "the value of joint '" + name + "' is not finite";
       return false;
     }
-    joint_values.emplace(joint_number, value);
+    joint_values->emplace(joint_number, value);
   }
+  return true;
+}
+
+// The links of --frame, --subtree and --only; false (with *error) when one is not in the model.
+bool FindNamedLinks(const Model& model, const ModelIndex& index, const MassReportOptions& options,
+                    NamedLinks* named, std::string* error) {
   auto find_link = [&](const std::string& name, const char* what, int* out) {
     *out = index.FindLink(name);
     if (*out < 0)
       *error = std::string(what) + ": model '" + model.name + "' has no link '" + name + "'";
     return *out >= 0;
   };
-  int frame = -1;
-  if (!options.frame.empty() && !find_link(options.frame, "--frame", &frame)) return false;
-  int subtree = -1;
-  if (!options.subtree.empty() && !find_link(options.subtree, "--subtree", &subtree)) return false;
-  std::vector<int> only;
+  if (!options.frame.empty() && !find_link(options.frame, "--frame", &named->frame)) return false;
+  if (!options.subtree.empty() && !find_link(options.subtree, "--subtree", &named->subtree)) {
+    return false;
+  }
   for (const std::string& name : options.only) {
     int link = -1;
     if (!find_link(name, "--only", &link)) return false;
-    if (std::find(only.begin(), only.end(), link) == only.end()) only.push_back(link);
-  }
-
-  const int root = index.FindLink(model.root_link);
-  PoseSolver root_poses(model, index, joint_values, root);
-  std::optional<Pose> X_WF;
-  if (frame >= 0) {
-    X_WF = root_poses.Get(frame);
-    if (!X_WF) {
-      *error = "--frame: link '" + options.frame + "' is not connected to the root link '" +
-               model.root_link + "'";
-      return false;
+    if (std::find(named->only.begin(), named->only.end(), link) == named->only.end()) {
+      named->only.push_back(link);
     }
   }
-  // With --frame: whether link A's pose is known (else sets *error); in_frame re-expresses.
-  auto express = [&](int link_A) -> bool {
-    if (frame < 0 || link_A == frame) return true;
-    if (!root_poses.Get(link_A)) {
-      *error = "--frame: link '" + model.links[link_A].name +
-               "' is not connected to the root link '" + model.root_link + "'";
+  return true;
+}
+
+// Re-expresses mass properties given in a link's frame in the frame of the --frame link F (when
+// one is given), at the configuration, through the poses of the links in the root link's frame W.
+class FrameExpresser {
+ public:
+  FrameExpresser(const Model& model, const ModelIndex& index,
+                 const std::unordered_map<int, double>& joint_values,
+                 const MassReportOptions& options, int frame, std::string* error)
+      : model_(model),
+        options_(options),
+        frame_(frame),
+        error_(error),
+        root_poses_(model, index, joint_values, index.FindLink(model.root_link)) {}
+
+  // Finds X_WF; false (with *error) when F is not connected to the root link.
+  bool Init() {
+    if (frame_ < 0) return true;
+    X_WF_ = root_poses_.Get(frame_);
+    if (!X_WF_) {
+      *error_ = "--frame: link '" + options_.frame + "' is not connected to the root link '" +
+                model_.root_link + "'";
       return false;
     }
     return true;
-  };
-  auto in_frame = [&](const BodyMassProperties& body_A, int link_A) {
-    if (frame < 0 || link_A == frame) return body_A;
-    const Pose X_FA = X_WF->Inverse() * *root_poses.Get(link_A);
-    return ReExpress(body_A, options.frame, X_FA);
-  };
+  }
 
-  // Which links and groups are reported.
-  std::vector<int> links;
-  std::vector<WeldedGroup> groups;
-  if (!only.empty()) {
-    links = only;
+  // Whether link A's pose is known (else sets *error), so that InFrame can re-express from A.
+  bool CanExpress(int link_A) {
+    if (frame_ < 0 || link_A == frame_) return true;
+    if (!root_poses_.Get(link_A)) {
+      *error_ = "--frame: link '" + model_.links[link_A].name +
+                "' is not connected to the root link '" + model_.root_link + "'";
+      return false;
+    }
+    return true;
+  }
+
+  // `body_A`, given in the frame of link A, in F (unchanged without --frame).
+  BodyMassProperties InFrame(const BodyMassProperties& body_A, int link_A) {
+    if (frame_ < 0 || link_A == frame_) return body_A;
+    const Pose X_FA = X_WF_->Inverse() * *root_poses_.Get(link_A);
+    return ReExpress(body_A, options_.frame, X_FA);
+  }
+
+ private:
+  const Model& model_;
+  const MassReportOptions& options_;
+  int frame_;
+  std::string* error_;
+  PoseSolver root_poses_;
+  std::optional<Pose> X_WF_;
+};
+
+// The top of the welded group holding `link`: up the tree through fixed joints.
+int GroupTop(const Model& model, const ModelIndex& index, int link) {
+  int top = link;
+  for (std::size_t steps = 0; index.IsFixedChild(model, top) && steps <= model.links.size();
+       ++steps) {
+    const int up = index.parent_link[top];
+    if (up < 0) break;
+    top = up;
+  }
+  return top;
+}
+
+// Which links and welded groups are reported: those of --only, of --subtree, or all of them.
+void SelectLinksAndGroups(const Model& model, const ModelIndex& index, const NamedLinks& named,
+                          std::vector<int>* links, std::vector<WeldedGroup>* groups) {
+  if (!named.only.empty()) {
+    *links = named.only;
     std::unordered_set<int> group_roots;
-    for (int link : only) {
-      int top = link;
-      for (std::size_t steps = 0; index.IsFixedChild(model, top) && steps <= model.links.size();
-           ++steps) {
-        const int up = index.parent_link[top];
-        if (up < 0) break;
-        top = up;
-      }
-      if (group_roots.insert(top).second) groups.push_back(CollectGroupBelow(model, index, top));
+    for (int link : named.only) {
+      const int top = GroupTop(model, index, link);
+      if (group_roots.insert(top).second) groups->push_back(CollectGroupBelow(model, index, top));
     }
-  } else if (subtree >= 0) {
-    links.push_back(subtree);
-    std::unordered_set<int> seen{subtree};
-    for (std::size_t k = 0; k < links.size(); ++k) {
-      const int p = links[k];
+  } else if (named.subtree >= 0) {
+    links->push_back(named.subtree);
+    std::unordered_set<int> seen{named.subtree};
+    for (std::size_t k = 0; k < links->size(); ++k) {
+      const int p = (*links)[k];
       for (int pos = index.child_start[p]; pos < index.child_start[p + 1]; ++pos) {
-        if (seen.insert(index.child_list[pos]).second) links.push_back(index.child_list[pos]);
+        if (seen.insert(index.child_list[pos]).second) links->push_back(index.child_list[pos]);
       }
     }
-    std::sort(links.begin(), links.end());
-    for (int link : links) {
-      if (link == subtree || !index.IsFixedChild(model, link)) {
-        groups.push_back(CollectGroupBelow(model, index, link));
+    std::sort(links->begin(), links->end());
+    for (int link : *links) {
+      if (link == named.subtree || !index.IsFixedChild(model, link)) {
+        groups->push_back(CollectGroupBelow(model, index, link));
       }
     }
   } else {
-    links.resize(model.links.size());
-    for (std::size_t i = 0; i < links.size(); ++i) links[i] = static_cast<int>(i);
-    groups = FindWeldedGroups(model);
+    links->resize(model.links.size());
+    for (std::size_t i = 0; i < links->size(); ++i) (*links)[i] = static_cast<int>(i);
+    *groups = FindWeldedGroups(model);
   }
+}
 
+// Fills report->links and report->welded_groups; false (with the expresser's error) when one
+// cannot be expressed in the --frame link's frame.
+bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
+                          const std::vector<int>& links, const std::vector<WeldedGroup>& groups,
+                          FrameExpresser* frame, ModelMassReport* report) {
   // Reserved: LinkMassReport is large (it may hold a geometry comparison) and its implicit move
   // may copy, so growing the vector re-copied every entry so far at each reallocation: with the
   // page faults of the new blocks, the superlinear step of the report (docs/benchmarks.md).
@@ -348,10 +395,10 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
     const MassProperties props = LinkMassProperties(model.links[link], model.format);
     const BodyMassProperties body =
         MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
-    if (!express(link)) return false;
+    if (!frame->CanExpress(link)) return false;
     LinkMassReport entry;
     entry.name = model.links[link].name;
-    entry.properties = in_frame(body, link);
+    entry.properties = frame->InFrame(body, link);
     if (options.geometry != nullptr) {
       entry.geometry = CompareLinkWithGeometry(model.links[link], *options.geometry);
     }
@@ -363,14 +410,19 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
     for (int link : group.links) entry.links.push_back(model.links[link].name);
     const BodyMassProperties body =
         FromComposite(group.root_link, CalcCompositeInertia(model, group));
-    if (!express(group.links.front())) return false;
-    entry.properties = in_frame(body, group.links.front());
+    if (!frame->CanExpress(group.links.front())) return false;
+    entry.properties = frame->InFrame(body, group.links.front());
     report->welded_groups.push_back(std::move(entry));
   }
-  if (!only.empty()) return true;
+  return true;
+}
 
-  // The total: every link of the model (or subtree) at its pose in the anchor's frame.
-  const int anchor = subtree >= 0 ? subtree : root;
+// Fills report->total: every link of `links` at its pose in the frame of link `anchor` (-1: the
+// model's root link is not a link), and report->unreachable_links; false (with the expresser's
+// error) when the total cannot be expressed in the --frame link's frame.
+bool ReportTotal(const Model& model, const ModelIndex& index,
+                 const std::unordered_map<int, double>& joint_values, int anchor,
+                 const std::vector<int>& links, FrameExpresser* frame, ModelMassReport* report) {
   PoseSolver anchor_poses(model, index, joint_values, anchor);
   std::vector<MassProperties> parts;
   parts.reserve(links.size());
@@ -390,9 +442,40 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
   }
   const std::string anchor_name = anchor >= 0 ? model.links[anchor].name : model.root_link;
   const BodyMassProperties total = FromComposite(anchor_name, ComposeMassProperties(parts));
-  if (anchor >= 0 && !express(anchor)) return false;
-  report->total = anchor >= 0 ? in_frame(total, anchor) : total;
+  if (anchor >= 0 && !frame->CanExpress(anchor)) return false;
+  report->total = anchor >= 0 ? frame->InFrame(total, anchor) : total;
   return true;
+}
+
+}  // namespace
+
+bool ComputeMassReport(const Model& model, const MassReportOptions& options,
+                       ModelMassReport* report, std::string* error) {
+  *report = ModelMassReport();
+  report->name = model.name;
+  report->file = model.file;
+  if (!options.only.empty() && !options.subtree.empty()) {
+    *error = "--only and --subtree cannot be combined";
+    return false;
+  }
+  const ModelIndex index = BuildIndex(model);
+  std::unordered_map<int, double> joint_values;
+  if (!ParseJointValues(model, options, &joint_values, error)) return false;
+  NamedLinks named;
+  if (!FindNamedLinks(model, index, options, &named, error)) return false;
+  FrameExpresser frame(model, index, joint_values, options, named.frame, error);
+  if (!frame.Init()) return false;
+
+  std::vector<int> links;
+  std::vector<WeldedGroup> groups;
+  SelectLinksAndGroups(model, index, named, &links, &groups);
+  if (!ReportLinksAndGroups(model, options, links, groups, &frame, report)) return false;
+  if (!named.only.empty()) return true;
+
+  // The total: every link of the model (or subtree) at its pose in the anchor's frame.
+  const int root = index.FindLink(model.root_link);
+  const int anchor = named.subtree >= 0 ? named.subtree : root;
+  return ReportTotal(model, index, joint_values, anchor, links, &frame, report);
 }
 
 // ------------------------------------------------------------------------------ geometry

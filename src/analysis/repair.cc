@@ -650,28 +650,40 @@ Eigen::Matrix3d RepairInertia(const Eigen::Matrix3d& I, InertiaRepairMethod meth
   return result;
 }
 
-std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& findings,
-                                const RepairOptions& options, std::vector<RefusedRepair>* refused) {
-  std::map<std::string, std::set<std::string>> rules_of;
+namespace {
+
+using RulesOfLinks = std::map<std::string, std::set<std::string>>;  // link -> rules
+using LinkRule = std::pair<std::string, std::string>;               // (link, rule)
+
+// The rules of the findings on each link. massless-moving-body is reported once per group (or
+// once per kinematics-only model, with the value "moving_groups"): every member link of the
+// massless moving group(s) gets it, so that each may get a mass.
+RulesOfLinks FindRulesOfLinks(const Model& model, const std::vector<Finding>& findings) {
+  RulesOfLinks rules_of;
   for (const Finding& f : findings) {
     if (!f.link.empty()) rules_of[f.link].insert(f.rule);
   }
-  // massless-moving-body is reported once per group (or once per kinematics-only model, with the
-  // value "moving_groups"): every member link of the massless moving group(s) may get a mass.
   bool massless_found = false;
   for (const Finding& f : findings) massless_found |= f.rule == "massless-moving-body";
-  if (massless_found) {
-    const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
-    for (const Finding& f : findings) {
-      if (f.rule != "massless-moving-body") continue;
-      bool whole_model = false;
-      for (const auto& [name, value] : f.values) whole_model |= name == "moving_groups";
-      for (const WeldedGroup& group : groups) {
-        if (!group.is_moving || (!whole_model && group.root_link != f.link)) continue;
-        for (int i : group.links) rules_of[model.links[i].name].insert(f.rule);
-      }
+  if (!massless_found) return rules_of;
+  const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
+  for (const Finding& f : findings) {
+    if (f.rule != "massless-moving-body") continue;
+    bool whole_model = false;
+    for (const auto& [name, value] : f.values) whole_model |= name == "moving_groups";
+    for (const WeldedGroup& group : groups) {
+      if (!group.is_moving || (!whole_model && group.root_link != f.link)) continue;
+      for (int i : group.links) rules_of[model.links[i].name].insert(f.rule);
     }
   }
+  return rules_of;
+}
+
+// The repairs the planner proposes, in file order (those that change something); the repairs it
+// refuses are added to `refused` when given.
+std::vector<Repair> PlanEachLink(const Model& model, const RepairOptions& options,
+                                 const RulesOfLinks& rules_of,
+                                 std::vector<RefusedRepair>* refused) {
   Planner planner(model, options);
   std::vector<Repair> planned;
   for (const Link& link : model.links) {
@@ -684,79 +696,116 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
     planned.push_back(std::move(*repair));
   }
   if (refused) refused->insert(refused->end(), planner.refused.begin(), planner.refused.end());
-  if (planned.empty()) return planned;
+  return planned;
+}
 
-  // Each repair is checked again on its own, against the findings of the model as it is (not the
-  // findings given, which may come from other options): it must make the findings it answers go
-  // away and create none the model did not have, on any link.
-  CheckOptions check_options;
-  check_options.tolerance = options.tolerance;
-  check_options.shape = options.shape;
-  using Key = std::pair<std::string, std::string>;  // (link, rule)
-  std::set<Key> before;
-  for (const Finding& f : CheckModel(model, check_options)) before.insert({f.link, f.rule});
+// Checks repairs again against the findings of the model as it is (not the findings given, which
+// may come from other options): a repair must make the findings it answers go away and create
+// none the model did not have, on any link.
+class RepairJudge {
+ public:
+  RepairJudge(const Model& model, const RepairOptions& options) : model_(model) {
+    check_options_.tolerance = options.tolerance;
+    check_options_.shape = options.shape;
+    for (const Finding& f : CheckModel(model, check_options_)) before_.insert({f.link, f.rule});
+  }
+
   // What is wrong with `repair` when `all` (which holds it) are applied: a finding it answers
   // is left (judged with all of them applied: a welded group's finding may need every link of
   // the group repaired), or it creates a finding the model did not have (judged with it alone).
-  auto problems = [&](const Repair& repair, const std::vector<Repair>& all) {
+  std::vector<std::string> Problems(const Repair& repair, const std::vector<Repair>& all) const {
     std::vector<std::string> found;
-    for (const Finding& f : CheckModel(ApplyRepairs(model, all), check_options)) {
+    for (const Finding& f : CheckModel(ApplyRepairs(model_, all), check_options_)) {
       if (f.link == repair.link &&
           std::find(repair.answers.begin(), repair.answers.end(), f.rule) != repair.answers.end()) {
         found.push_back("it leaves " + f.rule + ": " + f.message);
       }
     }
-    for (const Finding& f : CheckModel(ApplyRepairs(model, {repair}), check_options)) {
-      if (!before.count({f.link, f.rule})) {
+    for (const Finding& f : CheckModel(ApplyRepairs(model_, {repair}), check_options_)) {
+      if (!before_.count({f.link, f.rule})) {
         found.push_back("it creates " + f.rule +
                         (f.link.empty() ? "" : " on link '" + f.link + "'") + ": " + f.message);
       }
     }
     return found;
-  };
-  std::vector<Repair> repairs = std::move(planned);
-  for (bool changed = true; changed && !repairs.empty();) {
+  }
+
+  const CheckOptions& check_options() const { return check_options_; }
+
+ private:
+  const Model& model_;
+  CheckOptions check_options_;
+  std::set<LinkRule> before_;  // the findings of the model as it is
+};
+
+// Drops the repairs that have problems, one at a time (each drop changes what the others are
+// judged with) until every one left passes; each dropped one is added to `refused` when given.
+void DropFailingRepairs(const RepairJudge& judge, std::vector<Repair>* repairs,
+                        std::vector<RefusedRepair>* refused) {
+  for (bool changed = true; changed && !repairs->empty();) {
     changed = false;
-    for (std::size_t i = 0; i < repairs.size(); ++i) {
-      const std::vector<std::string> found = problems(repairs[i], repairs);
+    for (std::size_t i = 0; i < repairs->size(); ++i) {
+      const Repair& repair = (*repairs)[i];
+      const std::vector<std::string> found = judge.Problems(repair, *repairs);
       if (found.empty()) continue;
       if (refused) {
-        std::string why = "the repair (" + repairs[i].method + ") does not pass the checks: ";
+        std::string why = "the repair (" + repair.method + ") does not pass the checks: ";
         for (std::size_t j = 0; j < found.size(); ++j) why += (j ? "; " : "") + found[j];
         why += " — not repaired; look at this link's mass, center of mass and inertia by hand";
-        refused->push_back({repairs[i].rule, repairs[i].link, repairs[i].link_line, why});
+        refused->push_back({repair.rule, repair.link, repair.link_line, why});
       }
-      repairs.erase(repairs.begin() + static_cast<std::ptrdiff_t>(i));
+      repairs->erase(repairs->begin() + static_cast<std::ptrdiff_t>(i));
       changed = true;
       break;
     }
   }
-  // The numbers of each repair: the fewest significant digits (at least 6) that still pass.
-  for (std::size_t i = 0; i < repairs.size(); ++i) {
-    const int index = model.FindLink(repairs[i].link);
+}
+
+// The numbers of each repair: the fewest significant digits (at least 6) that still pass.
+void RoundRepairs(const Model& model, const RepairJudge& judge, std::vector<Repair>* repairs) {
+  for (std::size_t i = 0; i < repairs->size(); ++i) {
+    const int index = model.FindLink((*repairs)[i].link);
     if (index < 0) continue;
     const Link& link = model.links[index];
     for (int digits = 6; digits <= 16; ++digits) {
-      std::vector<Repair> trial = repairs;
+      std::vector<Repair> trial = *repairs;
       RoundChanged(link.inertial, digits, &trial[i].after);
-      if (!problems(trial[i], trial).empty()) continue;
+      if (!judge.Problems(trial[i], trial).empty()) continue;
       RecomputeChanges(model, link, &trial[i]);
-      repairs[i] = std::move(trial[i]);
+      (*repairs)[i] = std::move(trial[i]);
       break;
     }
   }
-  if (repairs.empty()) return repairs;
-  // Which findings each repair resolves: check the repaired model again.
-  const std::vector<Finding> after = CheckModel(ApplyRepairs(model, repairs), check_options);
-  std::set<Key> remaining;
+}
+
+// Which findings each repair resolves: those of its link that are gone from the model with all
+// the repairs applied.
+void FindResolved(const Model& model, const CheckOptions& check_options,
+                  const RulesOfLinks& rules_of, std::vector<Repair>* repairs) {
+  const std::vector<Finding> after = CheckModel(ApplyRepairs(model, *repairs), check_options);
+  std::set<LinkRule> remaining;
   for (const Finding& f : after) remaining.insert({f.link, f.rule});
-  for (Repair& repair : repairs) {
+  for (Repair& repair : *repairs) {
     const auto it = rules_of.find(repair.link);
     if (it == rules_of.end()) continue;
     for (const std::string& rule : it->second) {
       if (!remaining.count({repair.link, rule})) repair.resolves.push_back(rule);
     }
   }
+}
+
+}  // namespace
+
+std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& findings,
+                                const RepairOptions& options, std::vector<RefusedRepair>* refused) {
+  const RulesOfLinks rules_of = FindRulesOfLinks(model, findings);
+  std::vector<Repair> repairs = PlanEachLink(model, options, rules_of, refused);
+  if (repairs.empty()) return repairs;
+  const RepairJudge judge(model, options);
+  DropFailingRepairs(judge, &repairs, refused);
+  RoundRepairs(model, judge, &repairs);
+  if (repairs.empty()) return repairs;
+  FindResolved(model, judge.check_options(), rules_of, &repairs);
   return repairs;
 }
 
