@@ -323,7 +323,14 @@ class Planner {
     if (rules.count("products-sign-suspect") && Allows("products-sign-suspect")) {
       NegateProducts(link, &plan);
     }
-    if (!IsValid(WrittenMatrix(plan.work), options_.tolerance)) Project(link, &plan);
+    // Projection answers inertia-not-physical: only for a link that has that finding (not one
+    // whose finding the file ignores or the configuration turns off: `fix` never changes a link
+    // that has no error), or whose heuristic repair above left an invalid inertia.
+    const bool reported = rules.count("inertia-not-physical") > 0;
+    if ((reported || !plan.methods.empty()) &&
+        !IsValid(WrittenMatrix(plan.work), options_.tolerance)) {
+      Project(link, &plan);
+    }
     if (plan.methods.empty()) return std::nullopt;
     return Finish(link, plan);
   }
