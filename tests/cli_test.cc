@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -378,6 +379,114 @@ TEST(CliTest, AFileUrdfdomRefusesIsAFindingAndItsInertiasAreStillChecked) {
       "check --severity urdf-not-loadable=off --severity inertia-not-physical=off "
       "drake_world.urdf");
   EXPECT_EQ(run.exit_code, 0) << run.out;
+}
+
+// `target = "mujoco"` in .massprops.toml applies to `fix` and `report` as it does to `check`
+// (docs/targets.md), and --target on the command line wins. The fixture is a thin disk written
+// with rounded digits: moments 0.0833333, 0.0833333, 0.1666667, so A + B = 0.1666666 < C.
+// Hand-derived from MuJoCo 2.2.2's exact triangle test (mjCBody::Compile, user_objects.cc):
+// MuJoCo refuses it; physics accepts it (the deficit 1e-7 is below the generic 1e-6 of the trace).
+TEST(CliTest, FixAndReportTakeTheTargetFromTheConfigurationFile) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("massprops_cli_target_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream(dir / "disk.urdf")
+        << "<robot name=\"r\"><link name=\"base\"><inertial><mass value=\"1\"/><inertia "
+           "ixx=\"0.0833333\" iyy=\"0.0833333\" izz=\"0.1666667\" ixy=\"0\" ixz=\"0\" "
+           "iyz=\"0\"/></inertial></link></robot>\n";
+    std::ofstream(dir / ".massprops.toml") << "target = \"mujoco\"\n";
+  }
+  const std::string file = Quote((dir / "disk.urdf").string());  // run from testdata/cli
+
+  RunResult run = RunTool("fix --dry-run " + file);
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_TRUE(Contains(run.out, "disk.urdf:1: ")) << "the MuJoCo repair is planned: " << run.out;
+  EXPECT_FALSE(Contains(run.out, "no change needed")) << run.out;
+  run = RunTool("fix --dry-run --target generic " + file);
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_TRUE(Contains(run.out, "disk.urdf: no change needed")) << run.out;
+
+  run = RunTool("report " + file);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(Contains(run.out, "Bodies as MuJoCo 2.2.2 compiles r")) << run.out;
+  EXPECT_TRUE(Contains(run.out, "MuJoCo refuses: inertia must satisfy A + B >= C")) << run.out;
+  run = RunTool("report --target generic " + file);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_FALSE(Contains(run.out, "MuJoCo")) << run.out;
+
+  // A configuration file that is not valid is exit 2 for fix and report too, as for check.
+  std::ofstream(dir / ".massprops.toml") << "target = \"bullet\"\n";
+  EXPECT_EQ(RunTool("fix --dry-run " + file).exit_code, 2);
+  EXPECT_EQ(RunTool("report " + file).exit_code, 2);
+  fs::remove_all(dir);
+}
+
+// merge-fixed --target: gazebo merges as libsdformat lumps (tests/merge_fixed_test.cc has the
+// numbers); mujoco and drake are refused as usage errors, before the file is read.
+TEST(CliTest, MergeFixedTakesGazeboAndRefusesMujocoAndDrake) {
+  RunResult run = RunTool("merge-fixed --target gazebo clean.urdf -o -");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(Contains(run.out, "<robot")) << run.out;
+  for (const std::string target : {"mujoco", "drake"}) {
+    run = RunTool("merge-fixed --target " + target + " no_such_file.urdf -o -");
+    EXPECT_EQ(run.exit_code, 2) << target;
+    EXPECT_TRUE(Contains(run.err, "merge-fixed --target " + target + " is not supported"))
+        << run.err;
+    EXPECT_EQ(run.out, "");
+  }
+}
+
+// `report --format json --target gazebo`: each model gets "target_bodies", the bodies Gazebo
+// simulates (docs/report.md), without the world. The chain world -> base -> a -> b is welded by
+// fixed joints; base -> a carries <preserveFixedJoint>. Masses 1, 2, 3 kg at the link origins,
+// each with inertia diag(0.1, 0.1, 0.1) kg·m², a 1 m along x from base, b 1 m along x from a.
+// Hand-derived (libsdformat's lumping rules, gazebosim/sdformat parser_urdf.cc): the bodies are
+// base (1 kg) and a + b: m = 5 kg, c = (3·1)/5 = 0.6 m along x, about c Ixx = 0.2 and
+// Iyy = Izz = 0.2 + 2·0.6² + 3·0.4² = 1.4 kg·m².
+TEST(CliTest, JsonReportListsTheTargetBodiesWithoutTheWorld) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("massprops_cli_bodies_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  auto link = [](const std::string& name, const std::string& mass) {
+    return "<link name=\"" + name + "\"><inertial><mass value=\"" + mass +
+           "\"/><inertia ixx=\"0.1\" iyy=\"0.1\" izz=\"0.1\" ixy=\"0\" ixz=\"0\" "
+           "iyz=\"0\"/></inertial></link>";
+  };
+  auto joint = [](const std::string& name, const std::string& parent, const std::string& child) {
+    return "<joint name=\"" + name + "\" type=\"fixed\"><parent link=\"" + parent +
+           "\"/><child link=\"" + child + "\"/><origin xyz=\"1 0 0\"/></joint>";
+  };
+  std::ofstream(dir / "chain.urdf")
+      << "<robot name=\"chain\"><link name=\"world\"/>" << link("base", "1") << link("a", "2")
+      << link("b", "3") << joint("to_world", "world", "base") << joint("keep", "base", "a")
+      << joint("weld", "a", "b")
+      << "<gazebo reference=\"keep\"><preserveFixedJoint>true</preserveFixedJoint></gazebo>"
+         "</robot>\n";
+  const RunResult run =
+      RunTool("report --format json --target gazebo " + Quote((dir / "chain.urdf").string()));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const json report = json::parse(run.out);
+  const json& model = report.at("models").at(0);
+  EXPECT_EQ(model.at("target"), "gazebo");
+  const json& bodies = model.at("target_bodies");
+  ASSERT_EQ(bodies.size(), 2u) << bodies.dump();
+  EXPECT_EQ(bodies[0].at("name"), "base");
+  EXPECT_EQ(bodies[0].at("links"), json({"base"}));
+  EXPECT_DOUBLE_EQ(bodies[0].at("mass").get<double>(), 1);
+  EXPECT_EQ(bodies[1].at("links"), json({"a", "b"}));
+  EXPECT_EQ(bodies[1].at("frame"), "a");
+  EXPECT_DOUBLE_EQ(bodies[1].at("mass").get<double>(), 5);
+  EXPECT_NEAR(bodies[1].at("com")[0].get<double>(), 0.6, 1e-15);
+  EXPECT_NEAR(bodies[1].at("inertia_about_com")[0][0].get<double>(), 0.2, 1e-15);
+  EXPECT_NEAR(bodies[1].at("inertia_about_com")[1][1].get<double>(), 1.4, 1e-14);
+  EXPECT_NEAR(bodies[1].at("inertia_about_com")[2][2].get<double>(), 1.4, 1e-14);
+  // Without a target the JSON has no target part.
+  const RunResult plain = RunTool("report --format json " + Quote((dir / "chain.urdf").string()));
+  EXPECT_FALSE(json::parse(plain.out).at("models").at(0).contains("target_bodies"));
+  fs::remove_all(dir);
 }
 
 }  // namespace

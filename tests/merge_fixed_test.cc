@@ -145,5 +145,78 @@ TEST(MergeFixedTest, RollPitchYawRoundTripsThroughTheUrdfConvention) {
   ExpectNear(back, locked, 1e-12);
 }
 
+// A chain world -> base -> a -> b, every joint fixed, with <preserveFixedJoint> on base->a.
+// Masses 1, 2 and 3 kg at the link origins, each with inertia diag(0.1, 0.1, 0.1) kg·m²; a is
+// 1 m along x from base, b 1 m along x from a.
+std::string GazeboChain() {
+  auto link = [](const std::string& name, double mass) {
+    return "<link name=\"" + name + "\"><inertial><mass value=\"" + std::to_string(mass) +
+           "\"/><inertia ixx=\"0.1\" iyy=\"0.1\" izz=\"0.1\" ixy=\"0\" ixz=\"0\" "
+           "iyz=\"0\"/></inertial></link>";
+  };
+  auto joint = [](const std::string& name, const std::string& parent, const std::string& child,
+                  const std::string& xyz) {
+    return "<joint name=\"" + name + "\" type=\"fixed\"><parent link=\"" + parent +
+           "\"/><child link=\"" + child + "\"/><origin xyz=\"" + xyz + "\"/></joint>";
+  };
+  return "<robot name=\"chain\"><link name=\"world\"/>" + link("base", 1) + link("a", 2) +
+         link("b", 3) + joint("to_world", "world", "base", "0 0 1") +
+         joint("keep", "base", "a", "1 0 0") + joint("weld", "a", "b", "1 0 0") +
+         "<gazebo reference=\"keep\"><preserveFixedJoint>true</preserveFixedJoint></gazebo>"
+         "</robot>";
+}
+
+// --target gazebo merges as libsdformat lumps (gazebosim/sdformat parser_urdf.cc and its
+// documentation of <preserveFixedJoint>): the preserved joint and the joint from the root link
+// named "world" stay; only b is lumped into a. The generic merge folds everything into world.
+TEST(MergeFixedTest, GazeboTargetKeepsPreservedJointsAndTheWorld) {
+  const std::string text = GazeboChain();
+  const MergeFixedResult gazebo = MergeFixedJoints(text, "chain.urdf", Target::kGazebo);
+  ASSERT_TRUE(gazebo.errors.empty()) << gazebo.errors.front().ToString();
+  EXPECT_EQ(gazebo.merged_links, 1);
+  const ReadResult read = ReadModelString(gazebo.text, "merged.urdf");
+  ASSERT_EQ(read.models.size(), 1u) << gazebo.text;
+  const Model& model = read.models.front();
+  ASSERT_EQ(model.links.size(), 3u) << gazebo.text;  // world, base, a
+  EXPECT_EQ(model.FindLink("b"), -1);
+  ASSERT_GE(model.FindLink("a"), 0);
+  const Inertial& a = *model.links[model.FindLink("a")].inertial;
+  // Hand-derived: m = 2 + 3 = 5 kg; c = (2·0 + 3·1)/5 = 0.6 m along x; about c, Ixx = 0.1 + 0.1,
+  // Iyy = Izz = 0.2 + 2·0.6² + 3·0.4² = 0.2 + 0.72 + 0.48 = 1.4 kg·m².
+  EXPECT_DOUBLE_EQ(a.mass, 5);
+  ExpectNear(a.X_BBi.p_AB, Eigen::Vector3d(0.6, 0, 0), 1e-15);
+  EXPECT_NEAR(a.ixx, 0.2, 1e-15);
+  EXPECT_NEAR(a.iyy, 1.4, 1e-14);
+  EXPECT_NEAR(a.izz, 1.4, 1e-14);
+  EXPECT_EQ(MergeFixedJoints(text, "chain.urdf").merged_links, 3);  // generic: all into world
+}
+
+// A massless member's inertia still counts (libsdformat adds it): 1 kg root with diag(0.1), a
+// massless member with diag(0.01) at the same origin gives diag(0.11), hand-added.
+TEST(MergeFixedTest, AMasslessMembersInertiaIsAdded) {
+  const std::string text =
+      "<robot name=\"r\"><link name=\"base\"><inertial><mass value=\"1\"/><inertia ixx=\"0.1\" "
+      "iyy=\"0.1\" izz=\"0.1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link><link "
+      "name=\"foot\"><inertial><mass value=\"0\"/><inertia ixx=\"0.01\" iyy=\"0.01\" "
+      "izz=\"0.01\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link><joint name=\"w\" "
+      "type=\"fixed\"><parent link=\"base\"/><child link=\"foot\"/></joint></robot>";
+  const MergeFixedResult merged = MergeFixedJoints(text, "r.urdf");
+  const ReadResult read = ReadModelString(merged.text, "merged.urdf");
+  ASSERT_EQ(read.models.size(), 1u) << merged.text;
+  const Inertial& base = *read.models.front().links.front().inertial;
+  EXPECT_DOUBLE_EQ(base.mass, 1);
+  EXPECT_NEAR(base.ixx, 0.11, 1e-15);
+  EXPECT_NEAR(base.izz, 0.11, 1e-15);
+}
+
+TEST(MergeFixedTest, MujocoAndDrakeTargetsAreNotSupported) {
+  for (Target target : {Target::kMujoco, Target::kDrake}) {
+    const MergeFixedResult merged = MergeFixedJoints(GazeboChain(), "chain.urdf", target);
+    ASSERT_EQ(merged.errors.size(), 1u);
+    EXPECT_NE(merged.errors.front().message.find("is not supported"), std::string::npos);
+    EXPECT_EQ(merged.text, "");
+  }
+}
+
 }  // namespace
 }  // namespace massprops

@@ -1065,23 +1065,29 @@ std::set<std::string> PreservedFixedJoints(std::string_view urdf_text) {
 
 }  // namespace
 
-std::vector<GazeboBody> GazeboBodies(const Model& model, std::string_view urdf_text) {
-  std::vector<GazeboBody> bodies;
-  const std::set<std::string> preserved = model.format == Model::Format::kUrdf
-                                              ? PreservedFixedJoints(urdf_text)
-                                              : std::set<std::string>();
+std::vector<WeldedGroup> GazeboLumpedGroups(const Model& model, std::string_view urdf_text) {
+  const bool urdf = model.format == Model::Format::kUrdf;
+  const std::set<std::string> preserved =
+      urdf ? PreservedFixedJoints(urdf_text) : std::set<std::string>();
   // Links joined by a fixed joint that is not preserved form one body (SDF models are not
-  // lumped: lumping is part of the URDF conversion).
+  // lumped: lumping is part of the URDF conversion). A root link named "world" is libsdformat's
+  // world: what is welded to it stays a link of its own, attached by a fixed joint.
+  const bool world_root = urdf && model.root_link == "world";
   Model lumping = model;
-  if (model.format == Model::Format::kSdf) {
-    for (Joint& j : lumping.joints) {
-      if (j.type == Joint::Type::kFixed) j.type = Joint::Type::kOther;
+  for (Joint& j : lumping.joints) {
+    if (j.type != Joint::Type::kFixed) continue;
+    if (!urdf || preserved.count(j.name) || (world_root && j.parent == "world")) {
+      j.type = Joint::Type::kOther;
     }
   }
-  for (Joint& j : lumping.joints) {
-    if (j.type == Joint::Type::kFixed && preserved.count(j.name)) j.type = Joint::Type::kOther;
-  }
-  for (const WeldedGroup& group : FindWeldedGroups(lumping)) {
+  return FindWeldedGroups(lumping);
+}
+
+std::vector<GazeboBody> GazeboBodies(const Model& model, std::string_view urdf_text) {
+  std::vector<GazeboBody> bodies;
+  const bool world_root = model.format == Model::Format::kUrdf && model.root_link == "world";
+  for (const WeldedGroup& group : GazeboLumpedGroups(model, urdf_text)) {
+    if (world_root && group.root_link == "world") continue;  // the world, not a body
     GazeboBody body;
     body.name = model.links[group.links.front()].name;
     body.links = group.links;

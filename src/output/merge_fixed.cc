@@ -13,6 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "massprops/analysis/target_profile.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/io/model_reader.h"
 
@@ -188,23 +189,49 @@ void WriteCompositeInertial(const CompositeInertia& composite, tinyxml2::XMLElem
   inertia->SetAttribute("izz", Number(I(2, 2)).c_str());
 }
 
+// Whether a link's inertial adds anything to a composite: a mass or an inertia (a massless link
+// may still carry one; libsdformat's lumping adds it too).
+bool Contributes(const Link& link) {
+  if (!link.inertial) return false;
+  const Inertial& i = *link.inertial;
+  return i.mass != 0 || i.ixx != 0 || i.iyy != 0 || i.izz != 0 || i.ixy != 0 || i.ixz != 0 ||
+         i.iyz != 0;
+}
+
 // Links of one group: moves geometry into the root, removes the merged links, and writes the
-// composite inertial when any member has mass.
+// composite inertial when any member has a mass or an inertia.
 void MergeGroupLinks(const Model& model, const WeldedGroup& group,
                      const std::unordered_map<std::string, tinyxml2::XMLElement*>& link_elements,
                      tinyxml2::XMLElement* robot, int* merged_links) {
   tinyxml2::XMLElement* root_element = link_elements.at(group.root_link);
-  bool members_have_mass = false;
+  bool members_contribute = false;
   for (std::size_t k = 1; k < group.links.size(); ++k) {
     const Link& link = model.links[group.links[k]];
-    members_have_mass = members_have_mass || (link.inertial && link.inertial->mass != 0);
+    members_contribute = members_contribute || Contributes(link);
     tinyxml2::XMLElement* link_element = link_elements.at(link.name);
     MoveGeometriesToRoot(link_element, group.X_RL[k], root_element);
     robot->DeleteChild(link_element);
     ++*merged_links;
   }
-  if (!members_have_mass) return;
+  if (!members_contribute) return;
   WriteCompositeInertial(CalcCompositeInertia(model, group), root_element);
+}
+
+// Why `target` has no merge-fixed, or nullptr when it has one.
+const char* UnsupportedTarget(Target target) {
+  switch (target) {
+    case Target::kMujoco:
+      return "merge-fixed --target mujoco is not supported: MuJoCo's fusestatic also fuses the "
+             "root link into the world and drops bodies lighter than mjMINVAL, which a URDF "
+             "cannot say (use --target generic: every fixed joint merged)";
+    case Target::kDrake:
+      return "merge-fixed --target drake is not supported: Drake keeps every link as a body "
+             "(fixed joints are welds), so there is nothing to merge";
+    case Target::kGeneric:
+    case Target::kGazebo:
+      break;
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -219,8 +246,13 @@ Eigen::Vector3d RotationToRollPitchYaw(const Eigen::Matrix3d& R) {
   return {std::atan2(R(2, 1), R(2, 2)), pitch, std::atan2(R(1, 0), R(0, 0))};
 }
 
-MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name) {
+MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name,
+                                  Target target) {
   MergeFixedResult result;
+  if (const char* why = UnsupportedTarget(target)) {
+    result.errors.push_back(MakeError(file_name, 0, why));
+    return result;
+  }
   ReadResult read = ReadModelString(xml, file_name);
   if (!read.ok() || read.models.empty()) {
     result.errors = read.errors;
@@ -246,7 +278,8 @@ MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& fil
     return result;
   }
   const RobotElements elements = CollectRobotElements(robot);
-  const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
+  const std::vector<WeldedGroup> groups =
+      target == Target::kGazebo ? GazeboLumpedGroups(model, xml) : FindWeldedGroups(model);
   const MergedLinks merged = MapMergedLinks(model, groups, &result.groups_merged);
   RewireJoints(model, merged, elements.joints, robot);
   for (const WeldedGroup& group : groups) {

@@ -184,7 +184,7 @@ bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup)
   options.from_geometry_all = args.from_geometry && args.from_geometry_links.empty();
   options.from_geometry_links = args.from_geometry_links;
   options.tolerance = args.tolerance;
-  setup->target = args.target.empty() ? Target::kGeneric : *ParseTarget(args.target);
+  setup->target = ResolveTarget(args.target, args.file);  // --target, else .massprops.toml
   ApplyTargetProfile(setup->target, &setup->check);
   setup->check.tolerance = args.tolerance;
   setup->mujoco = ReadMujocoCompilerOptions(text);

@@ -2,12 +2,15 @@
 //   0  every file was reported (or merged);
 //   2  a file could not be read or parsed, an option names a joint or link a model does not have,
 //      or the command line is wrong (the other files are still reported).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -92,9 +95,88 @@ void WriteTargetBodies(std::ostream& out, const Model& model, Target target,
   }
 }
 
+using nlohmann::json;
+
+json Vec(const Eigen::Vector3d& v) { return {v(0), v(1), v(2)}; }
+
+// One body of `report --target` in JSON: its name, its links, mass, center of mass and inertia
+// about it, in the frame of its first link (the JSON report's conventions, docs/report.md).
+json BodyJson(const Model& model, const std::vector<int>& links, double mass,
+              const Eigen::Vector3d& com, const Eigen::Matrix3d& I) {
+  json names = json::array();
+  for (int l : links) names.push_back(model.links[l].name);
+  return {{"name", model.links[links.front()].name},
+          {"links", std::move(names)},
+          {"frame", model.links[links.front()].name},
+          {"mass", mass},
+          {"com", Vec(com)},
+          {"inertia_about_com",
+           {Vec(I.row(0).transpose()), Vec(I.row(1).transpose()), Vec(I.row(2).transpose())}}};
+}
+
+// MuJoCo's bodies after fusestatic (principal moments as its eigen-solver gives them) and its
+// verdict, as `report --target mujoco` writes them in text.
+void AddMujocoJson(const Model& model, const std::string& text, json* out) {
+  const MujocoPrediction p = PredictMujoco(model, ReadMujocoCompilerOptions(text));
+  for (const MujocoBody& b : p.bodies) {
+    json links = json::array({b.name});
+    for (int l : b.fused_links) links.push_back(model.links[l].name);
+    (*out)["target_bodies"].push_back({{"name", b.name},
+                                       {"links", std::move(links)},
+                                       {"moving", b.moving},
+                                       {"mass", b.mass},
+                                       {"principal_moments", b.inertia}});
+  }
+  (*out)["target_accepted"] = p.accepted();
+  (*out)["target_refusal"] =
+      p.accepted() ? json()
+                   : json{{"message", p.errors.front().message}, {"body", p.errors.front().body}};
+  (*out)["target_not_predicted"] = p.unsupported;
+}
+
+// What `report --target` adds to a model of the JSON report: "target", "target_bodies" (Gazebo:
+// lumped bodies; Drake: every link; MuJoCo: fused bodies and its verdict). A URDF root link named
+// "world" is the world for Gazebo and Drake, not a body.
+json TargetJson(const Model& model, Target target, const std::string& text) {
+  json out = {{"target", ToString(target)}, {"target_bodies", json::array()}};
+  if (target == Target::kMujoco) {
+    AddMujocoJson(model, text, &out);
+  } else if (target == Target::kGazebo) {
+    for (const GazeboBody& b : GazeboBodies(model, text)) {
+      out["target_bodies"].push_back(
+          BodyJson(model, b.links, b.inertia.mass, b.inertia.p_RoScm_R, b.inertia.I_SScm_R));
+    }
+  } else if (target == Target::kDrake) {
+    for (std::size_t l = 0; l < model.links.size(); ++l) {
+      const Link& link = model.links[l];
+      if (model.format == Model::Format::kUrdf && link.name == "world" &&
+          model.root_link == "world") {
+        continue;
+      }
+      const MassProperties m = LinkMassProperties(link, model.format);
+      out["target_bodies"].push_back(
+          BodyJson(model, {static_cast<int>(l)}, m.mass, m.p_FoScm_F, m.I_SScm_F));
+    }
+  }
+  return out;
+}
+
+// Re-writes the JSON report `text` with each model's target part added (`targets` parallel to
+// its "models"; null entries add nothing), printed as WriteMassReport prints it.
+void WriteJsonWithTargets(std::ostream& out, const std::string& text,
+                          const std::vector<json>& targets) {
+  json root = json::parse(text);
+  json& models = root["models"];
+  for (std::size_t i = 0; i < targets.size() && i < models.size(); ++i) {
+    if (!targets[i].is_null()) models[i].update(targets[i]);
+  }
+  out << root.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+}
+
 struct MergeArgs {
   std::string input;
   std::string output;
+  std::string target = "generic";  // --target (the command line only)
 };
 
 // Parses "NAME=VALUE" with a finite VALUE; false on anything else.
@@ -106,6 +188,71 @@ bool ParseJointValue(const std::string& spec, std::string* name, double* value) 
   char* end = nullptr;
   *value = std::strtod(text.c_str(), &end);
   return end == text.c_str() + text.size() && std::isfinite(*value);
+}
+
+// Fills `options` from --joint, --frame, --only and --subtree; prints the reason and returns
+// false when they are wrong.
+bool ReadReportOptions(const ReportArgs& args, MassReportOptions* options) {
+  for (const std::string& spec : args.joints) {
+    std::string name;
+    double value = 0;
+    if (!ParseJointValue(spec, &name, &value)) {
+      std::cerr << "massprops: error: --joint expects NAME=VALUE with a finite number, got '"
+                << spec << "'\n";
+      return false;
+    }
+    options->joint_values[name] = value;
+  }
+  options->frame = args.frame;
+  options->only = args.only;
+  options->subtree = args.subtree;
+  if (!options->only.empty() && !options->subtree.empty()) {
+    std::cerr << "massprops: error: --only and --subtree cannot be combined\n";
+    return false;
+  }
+  return true;
+}
+
+// Reads one file and appends the report of each of its models to *reports, and what went wrong
+// to *errors; the reader's findings and warnings go to standard error, as `check` says them (the
+// numbers leave out what the reader skipped).
+// With `target_json` (JSON with a target): also each report's target part, parallel to *reports.
+void ReportFile(const std::string& file, const ReportArgs& args, const ReadOptions& read_options,
+                MassReportOptions options, MeshCache* mesh_cache,
+                std::vector<ModelMassReport>* reports, std::vector<MassReportError>* errors,
+                Target target, std::vector<json>* target_json) {
+  const ReadResult read = ReadModelFile(file, read_options);
+  for (const Finding& f : ReaderFindings(read)) {
+    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
+              << f.message << " [" << f.rule << "]\n";
+  }
+  for (const ReadError& w : read.warnings) {  // as `check` prints them
+    std::cerr << w.location.file << ":" << w.location.line
+              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
+              << " [" << kReadWarningRule << "]\n";
+  }
+  for (const ReadError& e : read.errors) {
+    errors->push_back({e.location.file, e.location.line,
+                       e.element.empty() ? e.message : e.element + ": " + e.message});
+  }
+  // One mesh cache per run; relative mesh paths are relative to this file.
+  const MeshResolveOptions geometry =
+      MakeResolveOptions(args.package_paths, args.model_paths, file, mesh_cache);
+  options.geometry = args.geometry ? &geometry : nullptr;
+  for (const Model& model : read.models) {
+    ModelMassReport report;
+    std::string error;
+    if (ComputeMassReport(model, options, &report, &error)) {
+      reports->push_back(std::move(report));
+      if (target_json != nullptr) {
+        target_json->push_back(target == Target::kGeneric
+                                   ? json()
+                                   : TargetJson(model, target, ReadTextForTarget(file)));
+      }
+    } else {
+      errors->push_back({file == "-" ? "<stdin>" : file, 0, error});
+    }
+  }
 }
 
 int RunReport(const ReportArgs& args) {
@@ -120,23 +267,10 @@ int RunReport(const ReportArgs& args) {
     return RunHtmlView(args.files, args.model_paths, args.package_paths);
   }
   MassReportOptions options;
-  for (const std::string& spec : args.joints) {
-    std::string name;
-    double value = 0;
-    if (!ParseJointValue(spec, &name, &value)) {
-      std::cerr << "massprops: error: --joint expects NAME=VALUE with a finite number, got '"
-                << spec << "'\n";
-      return kExitError;
-    }
-    options.joint_values[name] = value;
-  }
-  options.frame = args.frame;
-  options.only = args.only;
-  options.subtree = args.subtree;
-  if (!options.only.empty() && !options.subtree.empty()) {
-    std::cerr << "massprops: error: --only and --subtree cannot be combined\n";
-    return kExitError;
-  }
+  if (!ReadReportOptions(args, &options)) return kExitError;
+  // The target of each file (--target, else its .massprops.toml), before anything is written.
+  std::vector<Target> targets;
+  for (const std::string& file : args.files) targets.push_back(ResolveTarget(args.target, file));
   const MassReportFormat format = args.format == "json"  ? MassReportFormat::kJson
                                   : args.format == "csv" ? MassReportFormat::kCsv
                                                          : MassReportFormat::kText;
@@ -145,37 +279,13 @@ int RunReport(const ReportArgs& args) {
   std::vector<ModelMassReport> reports;
   std::vector<MassReportError> errors;
   MeshCache mesh_cache;
-  for (const std::string& file : args.files) {
-    const ReadResult read = ReadModelFile(file, read_options);
-    // What the reader skipped or could not resolve (an <include> not found, an unreadable
-    // <inertial>) is said on standard error, in every format, as `check` says it: the numbers
-    // below leave those parts out.
-    for (const Finding& f : ReaderFindings(read)) {
-      std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
-                << f.message << " [" << f.rule << "]\n";
-    }
-    for (const ReadError& w : read.warnings) {  // as `check` prints them
-      std::cerr << w.location.file << ":" << w.location.line
-                << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
-                << " [" << kReadWarningRule << "]\n";
-    }
-    for (const ReadError& e : read.errors) {
-      errors.push_back({e.location.file, e.location.line,
-                        e.element.empty() ? e.message : e.element + ": " + e.message});
-    }
-    // One mesh cache per run; relative mesh paths are relative to this file.
-    const MeshResolveOptions geometry =
-        MakeResolveOptions(args.package_paths, args.model_paths, file, &mesh_cache);
-    options.geometry = args.geometry ? &geometry : nullptr;
-    for (const Model& model : read.models) {
-      ModelMassReport report;
-      std::string error;
-      if (ComputeMassReport(model, options, &report, &error)) {
-        reports.push_back(std::move(report));
-      } else {
-        errors.push_back({file == "-" ? "<stdin>" : file, 0, error});
-      }
-    }
+  const bool json_targets =
+      format == MassReportFormat::kJson &&
+      std::any_of(targets.begin(), targets.end(), [](Target t) { return t != Target::kGeneric; });
+  std::vector<json> target_json;
+  for (std::size_t i = 0; i < args.files.size(); ++i) {
+    ReportFile(args.files[i], args, read_options, options, &mesh_cache, &reports, &errors,
+               targets[i], json_targets ? &target_json : nullptr);
   }
   if (format != MassReportFormat::kJson) {
     for (const MassReportError& e : errors) {
@@ -183,27 +293,37 @@ int RunReport(const ReportArgs& args) {
                 << ": error: " << e.message << "\n";
     }
   }
-  WriteMassReport(std::cout, format, reports, errors, options.digits_lost_threshold);
-  if (!args.target.empty() && args.target != "generic" && format == MassReportFormat::kText) {
-    const Target target = *ParseTarget(args.target);
-    for (const std::string& file : args.files) {
-      const std::string text = ReadTextForTarget(file);
-      const ReadResult read = ReadModelString(text, file, read_options);
-      for (const Model& model : read.models) WriteTargetBodies(std::cout, model, target, text);
-    }
+  if (json_targets) {
+    std::ostringstream text;
+    WriteMassReport(text, format, reports, errors, options.digits_lost_threshold);
+    WriteJsonWithTargets(std::cout, text.str(), target_json);
+  } else {
+    WriteMassReport(std::cout, format, reports, errors, options.digits_lost_threshold);
+  }
+  for (std::size_t i = 0; i < args.files.size() && format == MassReportFormat::kText; ++i) {
+    if (targets[i] == Target::kGeneric) continue;
+    const std::string text = ReadTextForTarget(args.files[i]);
+    const ReadResult read = ReadModelString(text, args.files[i], read_options);
+    for (const Model& model : read.models) WriteTargetBodies(std::cout, model, targets[i], text);
   }
   std::cout.flush();
   return errors.empty() ? kExitOk : kExitError;
 }
 
 int RunMerge(const MergeArgs& args) {
+  const Target target = *ParseTarget(args.target);
+  if (target == Target::kMujoco || target == Target::kDrake) {  // a usage error: nothing is read
+    std::cerr << "massprops: error: " << MergeFixedJoints("", "", target).errors.front().message
+              << "\n";
+    return kExitError;
+  }
   std::string text;
   if (const auto error = ReadInputFile(args.input, kMaxModelFileBytes, &text)) {
     std::cerr << error->ToString() << "\n";
     return kExitError;
   }
   const MergeFixedResult merged =
-      MergeFixedJoints(text, args.input == "-" ? "<stdin>" : args.input);
+      MergeFixedJoints(text, args.input == "-" ? "<stdin>" : args.input, target);
   if (!merged.errors.empty()) {
     for (const ReadError& e : merged.errors) std::cerr << e.ToString() << "\n";
     return kExitError;
@@ -271,10 +391,17 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
   CLI::App* merge = app.add_subcommand(
       "merge-fixed",
       "Write the model with every welded group (links joined by fixed joints) merged into one "
-      "link carrying the composite inertial (URDF).");
+      "link carrying the composite inertial (URDF); with --target gazebo, as Gazebo lumps it.");
   merge->add_option("IN", merge_args->input, "URDF file, or '-' for standard input")->required();
   merge->add_option("-o,--output", merge_args->output, "Output file, or '-' for standard output")
       ->required();
+  merge
+      ->add_option("--target", merge_args->target,
+                   "Merge as this simulator does (docs/targets.md): generic (every fixed joint), "
+                   "gazebo (as libsdformat lumps: <preserveFixedJoint>/<disableFixedJointLumping> "
+                   "and joints from a root link named world kept); mujoco and drake are refused")
+      ->check(CLI::IsMember({"generic", "mujoco", "drake", "gazebo"}))
+      ->capture_default_str();
   merge->callback([run, merge_args] { *run = [merge_args] { return RunMerge(*merge_args); }; });
 }
 

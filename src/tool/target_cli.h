@@ -16,4 +16,11 @@ CLI::Option* AddTargetOption(CLI::App* command, std::string* target);
 /// Never throws.
 std::string ReadTextForTarget(const std::string& path);
 
+/// The target of `file` as `check` decides it: `cli_target` (--target) when not empty, else the
+/// `target = "..."` of the .massprops.toml `check` uses for that file (the nearest one upward from
+/// the file's folder, else upward from the working directory; "-" is in the working directory),
+/// else generic. The configuration file is read only when --target is not given. Throws
+/// massprops::ConfigError when that file is not valid.
+Target ResolveTarget(const std::string& cli_target, const std::string& file);
+
 }  // namespace massprops::cli

@@ -1,8 +1,11 @@
 // `--target` (see src/tool/target_cli.h and docs/targets.md).
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 
+#include "massprops/analysis/config.h"
 #include "target_cli.h"
 
 namespace massprops::cli {
@@ -22,6 +25,16 @@ std::string ReadTextForTarget(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+Target ResolveTarget(const std::string& cli_target, const std::string& file) {
+  if (!cli_target.empty()) return *ParseTarget(cli_target);
+  namespace fs = std::filesystem;
+  const fs::path dir = file == "-" ? fs::path(".") : fs::path(file).parent_path();
+  std::optional<std::string> path = FindConfigUpward(dir.empty() ? "." : dir.string());
+  if (!path) path = FindConfigUpward(".");
+  if (!path) return Target::kGeneric;
+  return LoadConfig(*path).target.value_or(Target::kGeneric);
 }
 
 }  // namespace massprops::cli

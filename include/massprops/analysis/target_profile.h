@@ -159,8 +159,16 @@ struct GazeboBody {
   std::vector<int> links;    ///< Indices into Model::links, root first.
   CompositeInertia inertia;  ///< Composite in the root link's frame.
 };
-/// The bodies, in the order of their root links. `urdf_text` is the file (for the tags).
+/// The bodies, in the order of their root links (a URDF root link named "world" is the world,
+/// not a body, and is left out). `urdf_text` is the file (for the tags).
 std::vector<GazeboBody> GazeboBodies(const Model& model, std::string_view urdf_text);
+
+/// The welded groups Gazebo lumps (GazeboBodies' partition, with each member's pose in its
+/// group's root): FindWeldedGroups of the model with these fixed joints kept as joints: those
+/// named by <gazebo reference="JOINT"> with <disableFixedJointLumping>true or
+/// <preserveFixedJoint>true, and those whose parent is a root link named "world" (libsdformat's
+/// world, not a link); every joint of an SDF model. Never throws.
+std::vector<WeldedGroup> GazeboLumpedGroups(const Model& model, std::string_view urdf_text);
 
 /// Repairs that make the target accept the model, on top of `repairs` (the generic ones, which
 /// are applied first): for MuJoCo, the nearest valid inertia for a triangle refusal and a floor

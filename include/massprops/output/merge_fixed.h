@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "massprops/analysis/target_profile.h"
 #include "massprops/model/model.h"
 
 namespace massprops {
@@ -28,9 +29,18 @@ struct MergeFixedResult {
 /// SDF input gives the error "merge-fixed does not support SDF yet". A file without any fixed
 /// joint between links comes back re-printed with no change of content. Elements that name a
 /// removed link elsewhere (<gazebo reference>, <transmission>) are kept as written. A group's
-/// root link keeps its inertial as written when no other member has mass.
+/// root link keeps its inertial as written when no other member has a mass or an inertia (a
+/// massless member's inertia is added, as libsdformat's lumping adds it).
+///
+/// `target` says which fixed joints are merged: kGeneric every one; kGazebo those Gazebo lumps
+/// (GazeboLumpedGroups: a joint named by <gazebo reference="JOINT"> with
+/// <disableFixedJointLumping>true or <preserveFixedJoint>true, and a joint from a root link named
+/// "world", stay as written, with their <gazebo> elements). kMujoco and kDrake give an error
+/// ("not supported": MuJoCo's fusestatic also fuses into the world and drops massless bodies,
+/// which a URDF cannot say; Drake keeps every link).
 /// Never throws for bad input. Cost: linear in the size of the file.
-MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name);
+MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name,
+                                  Target target = Target::kGeneric);
 
 /// URDF roll-pitch-yaw angles (R = Rz(yaw)·Ry(pitch)·Rx(roll)) of the rotation R; near pitch
 /// ±90° yaw is set to 0. Precondition: R is a rotation matrix (not checked).
