@@ -5,10 +5,10 @@
 //    model), and those files are still read (leniently) into a model; the one exception is a
 //    file that is not XML (a NUL byte), which is a read error, and urdfdom must refuse it too;
 //  - on every other file the model has urdfdom's links and joints (counts, also against the
-//    MANIFEST `links` column; root; names), masses, inertias, origins and axes bit for bit, and
-//    urdfdom's geometries; the only links whose inertial differs are those urdfdom says it could
-//    not read ("Could not parse inertial element for Link [...]"), which carry
-//    `inertial-unreadable` instead.
+//    MANIFEST `links` column; root; names; each link's parent joint), masses, inertias, origins and
+//    axes bit for bit, and urdfdom's geometries; the only links whose inertial differs are those
+//    urdfdom says it could not read ("Could not parse inertial element for Link [...]"), which
+//    carry `inertial-unreadable` instead.
 
 #include <console_bridge/console.h>
 #include <gtest/gtest.h>
@@ -129,6 +129,12 @@ void ExpectSameModel(const urdf::ModelInterface& expected, const Model& actual,
     ASSERT_TRUE(other) << what;
     EXPECT_GT(link.location.line, 0) << what;
     EXPECT_EQ(link.inertial_unreadable, unreadable.count(link.name) > 0) << what;
+    // The joint the link hangs from: urdfdom's parent_joint (the last, in name order, of the
+    // joints naming it as child) is the first such joint in the Model, which the checks use.
+    const int parent = actual.FindParentJoint(link.name);
+    EXPECT_EQ(parent >= 0 ? actual.joints[parent].name : std::string(),
+              other->parent_joint ? other->parent_joint->name : std::string())
+        << what << " parent joint";
     if (link.inertial_unreadable) {
       EXPECT_FALSE(link.inertial.has_value()) << what;
     } else {

@@ -27,6 +27,8 @@
 #include <thread>
 #include <vector>
 
+#include "massprops/analysis/welded_groups.h"
+
 namespace massprops {
 namespace {
 
@@ -327,6 +329,62 @@ TEST(UrdfReaderTest, EveryInertialTextUrdfdomRefusesIsNamed) {
   EXPECT_EQ(spaces.models.at(0).links.at(1).inertial->X_BBi.p_AB, Eigen::Vector3d(1, 2, 3));
 }
 
+// The inertial of `arm` in TwoLinks with one element per line: <inertial> on line 4, <origin>
+// on 5, <mass> on 6, <inertia> on 7.
+std::string InertialLines(const std::string& xyz, const std::string& mass, const std::string& ixz) {
+  return "<inertial>\n<origin xyz=\"" + xyz + "\" rpy=\"0 0 0\"/>\n<mass value=\"" + mass +
+         "\"/>\n<inertia ixx=\"1\" ixy=\"0\" ixz=\"" + ixz +
+         "\" iyy=\"1\" iyz=\"0\" izz=\"1\"/>\n</inertial>";
+}
+
+TEST(UrdfReaderTest, NumbersThatUnderflowMakeTheInertialUnreadableWithTheText) {
+  // urdfdom reads numbers with std::stringstream >> double (urdf_model/utils.h strToDouble);
+  // libstdc++ ignores strtod's ERANGE, so 1e-400 becomes 0 and 1e-310 the subnormal 1e-310
+  // without a word. The smallest normal double is 2.2250738585072014e-308 (IEEE 754 binary64,
+  // 2^-1022); SDF refuses anything smaller (docs/sdf.md), and so must URDF.
+  struct Case {
+    std::string inertial;
+    int line;
+    std::string quoted, read_as;
+  };
+  const Case cases[] = {
+      {InertialLines("0 0 0", "1e-400", "0"), 6, "<mass value=\"1e-400\">", "as 0:"},
+      {InertialLines("0 0 0", "-1e-400", "0"), 6, "<mass value=\"-1e-400\">", "as -0:"},
+      {InertialLines("0 0 0", "1", "1e-310"), 7, "<inertia ixz=\"1e-310\">",
+       "as the subnormal 1e-310:"},
+      {InertialLines("0  -1e-400 0", "1", "0"), 5, "<origin xyz=\"0  -1e-400 0\">", "as -0:"},
+      // Two tiny numbers: the first in urdfdom's order of reading (origin, mass, inertia).
+      {InertialLines("1e-999 0 0", "1e-400", "0"), 5, "<origin xyz=\"1e-999 0 0\">", "as 0:"},
+      // No exponent: 0.(400 zeros)1 is 1e-401.
+      {InertialLines("0 0 0", "0." + std::string(400, '0') + "1", "0"), 6, "<mass value=\"0.000",
+       "as 0:"},
+  };
+  for (const Case& c : cases) {
+    const ReadResult result = Read(TwoLinks(c.inertial));
+    ASSERT_TRUE(result.ok()) << AllErrors(result);
+    const std::vector<ReadFinding> f = FindingsOf(result, "inertial-unreadable");
+    ASSERT_EQ(f.size(), 1u) << c.inertial;
+    EXPECT_EQ(f[0].link, "arm");
+    EXPECT_EQ(f[0].location.line, c.line) << c.inertial;
+    EXPECT_NE(f[0].message.find(c.quoted), std::string::npos) << f[0].message;
+    EXPECT_NE(f[0].message.find(c.read_as), std::string::npos) << f[0].message;
+    EXPECT_NE(f[0].message.find("underflows"), std::string::npos) << f[0].message;
+    const Link& arm = result.models.at(0).links.at(1);
+    EXPECT_TRUE(arm.inertial_unreadable);
+    EXPECT_FALSE(arm.inertial.has_value());
+  }
+  // Zeros written small, and the smallest normal double itself, are read as written.
+  for (const std::string mass : {"0e-999", "-0.0", "2.2250738585072014e-308", "+1e-300"}) {
+    const ReadResult result = Read(TwoLinks(InertialLines("0 0 0", mass, "0")));
+    EXPECT_TRUE(result.findings.empty()) << mass << ": " << result.findings.at(0).message;
+  }
+  // The oracle: urdfdom itself reads <mass value="1e-400"> as 0 and says nothing.
+  const urdf::ModelInterfaceSharedPtr urdfdom =
+      urdf::parseURDF(TwoLinks(InertialLines("0 0 0", "1e-400", "0")));
+  ASSERT_TRUE(urdfdom);
+  EXPECT_EQ(urdfdom->getLink("arm")->inertial->mass, 0.0);
+}
+
 TEST(UrdfReaderTest, ValuesUrdfdomAcceptsAreKeptForTheChecks) {
   // Negative and zero masses, a zero axis: urdfdom reads them; the checks judge them.
   const ReadResult result =
@@ -586,6 +644,49 @@ TEST(UrdfReaderTest, AKinematicLoopBesideARootIsUrdfdomsModel) {
   EXPECT_EQ(result.models[0].links.size(), 4u);
   EXPECT_EQ(result.models[0].joints.size(), 3u);
   EXPECT_EQ(result.models[0].root_link, "root");
+}
+
+TEST(UrdfReaderTest, ALinkWithTwoParentJointsHangsFromUrdfdomsAndIsAWarning) {
+  // two_parents.urdf: 'tip' is the child of 'a_via_base' (line 7, fixed, first in the file) and
+  // of 'b_via_left' (line 8, revolute). urdfdom's initTree (urdf_model/model.h) walks joints_, a
+  // std::map, in name order -- a_via_base, b_via_left, z_left -- and assigns tip->parent_joint
+  // at each, so the last assignment wins: 'b_via_left'. The Model must hang 'tip' from it too.
+  const ReadResult result = ReadUrdfFile(kDir + "two_parents.urdf");
+  ASSERT_TRUE(result.ok()) << AllErrors(result);
+  EXPECT_TRUE(result.findings.empty());
+  ASSERT_EQ(result.models.size(), 1u);
+  const Model& model = result.models[0];
+  ASSERT_EQ(model.joints.size(), 3u) << "every joint urdfdom has stays in the model";
+  const int parent = model.FindParentJoint("tip");
+  ASSERT_GE(parent, 0);
+  EXPECT_EQ(model.joints[parent].name, "b_via_left");
+  EXPECT_EQ(model.joints[parent].location.line, 8);
+  // Through the revolute joint, 'tip' moves: its own welded group, attached by 'b_via_left'
+  // (through the fixed 'a_via_base' it would be welded to 'base').
+  int tip_groups = 0;
+  for (const WeldedGroup& group : FindWeldedGroups(model)) {
+    if (group.root_link != "tip") continue;
+    ++tip_groups;
+    EXPECT_TRUE(group.is_moving);
+    ASSERT_GE(group.parent_joint, 0);
+    EXPECT_EQ(model.joints[group.parent_joint].name, "b_via_left");
+  }
+  EXPECT_EQ(tip_groups, 1);
+  // One warning, at the second joint naming 'tip' (line 8), with both joints and their lines.
+  ASSERT_EQ(result.warnings.size(), 1u);
+  const ReadError& w = result.warnings[0];
+  EXPECT_EQ(w.location.line, 8);
+  EXPECT_EQ(w.element, "link 'tip'");
+  EXPECT_NE(w.message.find("'a_via_base' (line 7) and 'b_via_left' (line 8)"), std::string::npos)
+      << w.message;
+  EXPECT_NE(w.message.find("ROS's URDF parser hangs it from 'b_via_left'"), std::string::npos)
+      << w.message;
+  // The oracle agrees with the hand-worked answer.
+  std::ifstream in(kDir + "two_parents.urdf");
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const urdf::ModelInterfaceSharedPtr urdfdom = urdf::parseURDF(xml);
+  ASSERT_TRUE(urdfdom);
+  EXPECT_EQ(urdfdom->getLink("tip")->parent_joint->name, "b_via_left");
 }
 
 // ---------------------------------------------------------------- bad files

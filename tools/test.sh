@@ -22,9 +22,18 @@ fi
 
 if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   # A short fuzz run: any crash, sanitizer report or broken invariant fails the run (the input is
-  # left in build-fuzz/artifacts/TARGET/; keep it in testdata/fuzz/regressions/TARGET/).
+  # left in build-fuzz/artifacts/TARGET/; keep it in testdata/fuzz/regressions/TARGET/). Every
+  # target runs even when an earlier one fails, so that one failure hides no other; the failed
+  # targets are named at the end.
+  failed=()
   for target in urdf sdf fix inertia; do
     # A fixed seed: the same inputs on every CI run, so that a run fails only for a real change.
-    "$here/tools/fuzz.sh" "$target" "${MASSPROPS_FUZZ_SECONDS:-60}" -seed=1
+    if ! "$here/tools/fuzz.sh" "$target" "${MASSPROPS_FUZZ_SECONDS:-60}" -seed=1; then
+      failed+=("$target")
+    fi
   done
+  if ((${#failed[@]} > 0)); then
+    echo "tools/test.sh: fuzz target(s) failed: ${failed[*]} (inputs in build-fuzz/artifacts/)" >&2
+    exit 1
+  fi
 fi

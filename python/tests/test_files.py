@@ -233,9 +233,14 @@ def test_hostile_numbers_do_not_crash(tmp_path):
     unreadable = [f for f in massprops.check(text) if f.rule == "inertial-unreadable"]
     assert len(unreadable) == 1 and unreadable[0].link == "a" and unreadable[0].line == 1
     assert 'value="nan"' in unreadable[0].message and unreadable[0].severity == "error"
+    # A subnormal (4.9e-324: nonzero, below the smallest normal double 2.2e-308) is one that
+    # urdfdom reads with lost precision and SDF readers refuse: inertial-unreadable, like nan.
+    text = """<robot name="r"><link name="a"><inertial><mass value="1"/>
+<inertia ixx="1" iyy="1" izz="4.9e-324" ixy="0" ixz="0" iyz="0"/></inertial></link></robot>"""
+    assert [f.rule for f in massprops.check(text)] == ["inertial-unreadable"]
     # Finite extremes are findings, and every function copes with them.
     text = """<robot name="r"><link name="a"><inertial><mass value="-1e308"/>
-<inertia ixx="1e308" iyy="-1e308" izz="4.9e-324" ixy="1e308" ixz="0" iyz="0"/></inertial>
+<inertia ixx="1e308" iyy="-1e308" izz="2.3e-308" ixy="1e308" ixz="0" iyz="0"/></inertial>
 </link></robot>"""
     findings = massprops.check(text)
     assert {"mass-not-positive", "inertia-not-physical"} <= {f.rule for f in findings}

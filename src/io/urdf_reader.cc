@@ -11,7 +11,9 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <numeric>
 #include <optional>
@@ -90,10 +92,20 @@ struct IndexedJoint {
   bool axis_has_xyz = false;
 };
 
+// A number of a link's first <inertial> that urdfdom reads, but not as written: nonzero text below
+// the smallest normal double, which urdfdom reads as 0 or as a subnormal (see Underflows).
+struct Underflow {
+  int link = 0;  // index in UrdfIndex::links
+  int line = 0;
+  std::string what;  // `<mass value="1e-400">`
+  double value = 0;  // what urdfdom reads
+};
+
 // The lines of the elements that carry mass properties, by name and order. Decides nothing.
 struct UrdfIndex {
   int robot_line = 0;
   std::vector<IndexedLink> links;
+  std::vector<Underflow> underflows;  // at most one per link, the first in urdfdom's order
   std::vector<IndexedJoint> joints;
   std::unordered_map<std::string, int> first_link;   // name -> index in links
   std::unordered_map<std::string, int> first_joint;  // name -> index in joints
@@ -114,11 +126,17 @@ class Reader {
   }
   bool ParseDom(const std::string& xml, XMLDocument* doc);
   void BuildIndex(const XMLElement* robot);
+  void IndexUnderflow(const XMLElement* inertial, int link);
   void CollectIgnoreComments(const XMLNode* node, const std::string& link, IndexedLink* out);
   void WarnAboutTextUrdfdomSkips();
   Model FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<std::string>& errors,
                     const std::string& xml);
+  void UseUrdfdomsParentJoints(const urdf::ModelInterface& urdf, Model* model);
+  void WarnAboutSecondParents(const Link& link, const std::vector<const Joint*>& joints,
+                              const Joint& kept);
   void ReportUnreadableInertial(const XMLElement* link_xml, Link* link);
+  void ReportUnderflows(Model* model);
+  void InertialUnreadable(int line, Link* link, std::string message);
   void ReportNotLoadable(const std::vector<std::string>& errors);
   int LineOfNamed(std::string_view message) const;
 
@@ -169,6 +187,63 @@ void Reader::CollectIgnoreComments(const XMLNode* node, const std::string& link,
   }
 }
 
+// Whether urdfdom (urdf::strToDouble: std::stringstream >> double, classic locale) reads `text`
+// and gets a value below the smallest normal double (2.2e-308) from a number that is not zero as
+// written: 0 for 1e-400, a subnormal for 1e-310. strtod sets ERANGE for both, and std::stod (as
+// libsdformat reads SDF) throws; libstdc++'s stream ignores ERANGE. On success *value is what
+// urdfdom reads.
+bool Underflows(std::string_view text, double* value) {
+  while (!text.empty() && IsSpace(text.front())) text.remove_prefix(1);
+  std::string_view digits = text;
+  if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  if (digits.empty()) return false;
+  double exact = 0;
+  const std::from_chars_result r =
+      std::from_chars(digits.data(), digits.data() + digits.size(), exact);
+  if (r.ptr != digits.data() + digits.size()) return false;
+  // from_chars gives out_of_range for 1e-400 and for 1e400 (which urdfdom refuses), and reads
+  // subnormals without complaint.
+  const bool tiny =
+      r.ec == std::errc() && exact != 0 && std::abs(exact) < std::numeric_limits<double>::min();
+  if (!tiny && r.ec != std::errc::result_out_of_range) return false;
+  try {
+    *value = urdf::strToDouble(std::string(text).c_str());
+  } catch (const std::runtime_error&) {
+    return false;  // 1e400: urdfdom refuses it, and says so
+  }
+  return std::abs(*value) < std::numeric_limits<double>::min();
+}
+
+// The first number of a link's first <inertial> that underflows, in urdfdom's order of reading
+// (origin xyz, rpy, mass, inertia ixx ... izz; vectors split at spaces as urdf::Vector3::init).
+void Reader::IndexUnderflow(const XMLElement* inertial, int link) {
+  const auto check = [&](const XMLElement* e, const char* attribute) {
+    const char* text = e != nullptr ? e->Attribute(attribute) : nullptr;
+    if (text == nullptr) return false;
+    const bool vector = std::strcmp(e->Name(), "origin") == 0;
+    const std::string_view all(text);
+    for (std::size_t begin = 0; begin <= all.size();) {
+      const std::size_t end = vector ? std::min(all.find(' ', begin), all.size()) : all.size();
+      double value = 0;
+      if (Underflows(all.substr(begin, end - begin), &value)) {
+        index_.underflows.push_back(
+            {link, LineOf(e),
+             std::string("<") + e->Name() + " " + attribute + "=" + Quote(text) + ">", value});
+        return true;
+      }
+      begin = end + 1;
+    }
+    return false;
+  };
+  const XMLElement* origin = inertial->FirstChildElement("origin");
+  if (check(origin, "xyz") || check(origin, "rpy")) return;
+  if (check(inertial->FirstChildElement("mass"), "value")) return;
+  const XMLElement* inertia = inertial->FirstChildElement("inertia");
+  for (const char* attribute : {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}) {
+    if (check(inertia, attribute)) return;
+  }
+}
+
 void Reader::BuildIndex(const XMLElement* robot) {
   index_.robot_line = LineOf(robot);
   for (const XMLElement* e = robot->FirstChildElement("link"); e != nullptr;
@@ -185,6 +260,7 @@ void Reader::BuildIndex(const XMLElement* robot) {
         link.mass_line = LineOf(i->FirstChildElement("mass"));
         link.inertia_line = LineOf(i->FirstChildElement("inertia"));
         link.origin_line = LineOf(i->FirstChildElement("origin"));
+        IndexUnderflow(i, static_cast<int>(index_.links.size()));
       }
       link.inertial_lines.push_back(LineOf(i));
     }
@@ -415,16 +491,43 @@ void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
     }
   }
   if (what.empty()) what = "its <inertial>";
+  InertialUnreadable(line, link,
+                     "ROS's URDF parser cannot read " + what + " of link '" + link->name +
+                         "' and loads the link with a partly read inertial (what follows the bad "
+                         "value is zero); write one decimal number per attribute, nothing around "
+                         "it");
+}
+
+// The link's inertial is not the one written: an error finding, and the link is not judged.
+void Reader::InertialUnreadable(int line, Link* link, std::string message) {
   ReadFinding finding;
   finding.rule = kInertialUnreadable;
   finding.link = link->name;
   finding.location = Loc(line);
-  finding.message = "ROS's URDF parser cannot read " + what + " of link '" + link->name +
-                    "' and loads the link with a partly read inertial (what follows the bad "
-                    "value is zero); write one decimal number per attribute, nothing around it";
+  finding.message = std::move(message);
   result_.findings.push_back(std::move(finding));
   link->inertial.reset();
   link->inertial_unreadable = true;
+}
+
+// A number urdfdom reads as 0 or a subnormal from nonzero text (1e-400): an error, as in SDF,
+// where libsdformat and massprops refuse it. A link whose inertial urdfdom could not read at all
+// has its finding already.
+void Reader::ReportUnderflows(Model* model) {
+  for (const Underflow& u : index_.underflows) {
+    const int i = model->FindLink(index_.links[u.link].name);
+    if (i < 0 || model->links[i].inertial_unreadable || !model->links[i].inertial) continue;
+    char number[32];
+    std::snprintf(number, sizeof number, "%g", u.value);
+    const std::string value = (u.value == 0 ? "" : "the subnormal ") + std::string(number);
+    Link* link = &model->links[i];
+    InertialUnreadable(u.line, link,
+                       "ROS's URDF parser reads " + u.what + " of link '" + link->name + "' as " +
+                           value +
+                           ": the number is not zero but below the smallest normal double "
+                           "(2.2e-308), so it underflows (SDF readers refuse it); write 0, or a "
+                           "value of at least 2.2e-308");
+  }
 }
 
 Model Reader::FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<std::string>& errors,
@@ -498,6 +601,8 @@ Model Reader::FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<st
     }
   }
 
+  ReportUnderflows(&model);
+
   model.joints.reserve(index_.joints.size());
   for (const IndexedJoint& indexed : index_.joints) {
     const auto found = urdf.joints_.find(indexed.name);
@@ -525,7 +630,57 @@ Model Reader::FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<st
     }
     model.joints.push_back(std::move(joint));
   }
+  UseUrdfdomsParentJoints(urdf, &model);
   return model;
+}
+
+// urdfdom's initTree (urdf_model/model.h) walks the joints in name order (a std::map) and sets
+// each child's parent_joint, so a link that is the child of several joints hangs from the last of
+// them by name. The checks hang a link from the first joint in Model::joints that names it as
+// child (FindParentJoint, FindWeldedGroups): put urdfdom's joint first among that link's joints
+// (the others keep their file order in the remaining places) and say so.
+void Reader::UseUrdfdomsParentJoints(const urdf::ModelInterface& urdf, Model* model) {
+  std::unordered_map<std::string, std::vector<int>> joints_of_child;
+  for (std::size_t j = 0; j < model->joints.size(); ++j) {
+    joints_of_child[model->joints[j].child].push_back(static_cast<int>(j));
+  }
+  std::vector<Joint> ordered = model->joints;
+  for (const Link& link : model->links) {
+    const auto joints = joints_of_child.find(link.name);
+    const auto source = urdf.links_.find(link.name);
+    if (joints == joints_of_child.end() || joints->second.size() < 2) continue;
+    if (source == urdf.links_.end() || !source->second || !source->second->parent_joint) continue;
+    const std::vector<int>& places = joints->second;  // ascending: file order
+    std::vector<int> order = places;
+    const auto kept = std::find_if(order.begin(), order.end(), [&](int j) {
+      return model->joints[j].name == source->second->parent_joint->name;
+    });
+    if (kept == order.end()) continue;
+    std::rotate(order.begin(), kept, kept + 1);
+    std::vector<const Joint*> in_file_order;
+    for (std::size_t k = 0; k < places.size(); ++k) {
+      ordered[places[k]] = model->joints[order[k]];
+      in_file_order.push_back(&model->joints[places[k]]);
+    }
+    WarnAboutSecondParents(link, in_file_order, model->joints[order[0]]);
+  }
+  model->joints = std::move(ordered);
+}
+
+// At the line of the second joint (the one that makes the link a child twice), naming them all.
+void Reader::WarnAboutSecondParents(const Link& link, const std::vector<const Joint*>& joints,
+                                    const Joint& kept) {
+  std::string listed;
+  for (std::size_t k = 0; k < joints.size(); ++k) {
+    if (k > 0) listed += k + 1 == joints.size() ? " and " : ", ";
+    listed += "'" + joints[k]->name + "' (line " + std::to_string(joints[k]->location.line) + ")";
+  }
+  Warning(joints[1]->location.line, "link '" + link.name + "'",
+          "the child of " + std::to_string(joints.size()) + " joints, " + listed +
+              "; ROS's URDF parser hangs it from '" + kept.name + "' (line " +
+              std::to_string(kept.location.line) +
+              ", the last of them in name order), and so does massprops, which leaves the "
+              "others out of the tree (they close a loop)");
 }
 
 // ------------------------------------------------------------------ urdfdom refuses the file

@@ -117,21 +117,39 @@ bool LooksLikeModel(const fs::path& path) {
   return massprops::DetectModelFormat(text).has_value();
 }
 
+// Whether a subfolder met while collecting can be listed; when it cannot (no permission, an I/O
+// error), it is named on standard error, even with --quiet (its files are not checked), and
+// counted in *skipped.
+bool CanListSubfolder(const fs::path& dir, int* skipped) {
+  std::error_code ec;
+  fs::directory_iterator probe(dir, ec);
+  if (!ec) return true;
+  std::cerr << "massprops: warning: cannot read the folder " << dir.string() << ": " << ec.message()
+            << "; its files are skipped\n";
+  ++*skipped;
+  return false;
+}
+
 // Files of a directory tree that look like robot models, sorted. *.urdf and *.sdf are always
 // taken; *.world and *.xml only when their root element is <robot> or <sdf>. Hidden folders are
 // skipped; symbolic links to folders are not followed.
 // Extensions are matched case-insensitively (.URDF, .Sdf). Every other regular file (outside
-// hidden folders) is counted in *skipped.
+// hidden folders) and every subfolder that cannot be listed is counted in *skipped.
 std::vector<std::string> CollectModelFiles(const fs::path& dir, int* skipped) {
   std::vector<std::string> files;
   std::error_code ec;
+  // skip_permission_denied stays as a safety net: every subfolder is probed before the iterator
+  // enters it (CanListSubfolder), so none is skipped without a word.
   fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec);
   for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     const fs::path& path = it->path();
     const std::string name = path.filename().string();
     std::error_code type_ec;
     if (it->is_directory(type_ec)) {
-      if (!name.empty() && name[0] == '.') it.disable_recursion_pending();
+      const bool hidden = !name.empty() && name[0] == '.';
+      if (hidden || (!it->is_symlink(type_ec) && !CanListSubfolder(path, skipped))) {
+        it.disable_recursion_pending();
+      }
       continue;
     }
     if (!it->is_regular_file(type_ec)) continue;

@@ -115,7 +115,9 @@ struct Model {
   Format format = Format::kUrdf;
   std::string file;           ///< The path as given.
   std::vector<Link> links;    ///< In file order.
-  std::vector<Joint> joints;  ///< In file order.
+  /// In file order, except that a URDF link that is the child of several joints has the joint
+  /// urdfdom hangs it from first among them (the others close loops and are left out of the tree).
+  std::vector<Joint> joints;
   std::string root_link;      ///< The link that is no joint's child (URDF: urdfdom's root).
   SourceLocation location;    ///< The <robot>/<model> element.
   /// SDF <static>true</static> (of the top-level model or its <include>): the model never moves,
