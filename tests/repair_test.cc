@@ -396,6 +396,45 @@ TEST(PlanRepairsTest, MasslessMovingLinkWithACollisionSphereGetsItsMassFromTheDe
   }
 }
 
+// A massless carriage (visual only: nothing to compute a mass from) on prismatic j_x carries a
+// massless slider with a collision sphere r = 0.05 on prismatic j_y: both are errors (nothing
+// outboard has mass). Giving the slider its mass (water: 1000·4/3·π·0.05³ = 0.523599 kg) makes
+// the carriage's mass matrix entry M_xx = 0.523599 kg > 0: the carriage's error becomes the note
+// massless-link-with-mass-outboard, which is not a finding the repair creates.
+TEST(PlanRepairsTest, MassGivenOutboardTurnsAMasslessCarriagesErrorIntoANote) {
+  const Model model = Read(
+      "<robot name=\"gantry\"><link name=\"base\"><inertial><mass value=\"10\"/><inertia "
+      "ixx=\"0.1\" ixy=\"0\" ixz=\"0\" iyy=\"0.1\" iyz=\"0\" izz=\"0.1\"/></inertial></link>\n"
+      "<link name=\"carriage\"><visual><geometry><box size=\"0.05 0.5 0.05\"/></geometry>"
+      "</visual></link>\n"
+      "<link name=\"slider\"><collision><geometry><sphere radius=\"0.05\"/></geometry>"
+      "</collision></link>\n"
+      "<joint name=\"j_x\" type=\"prismatic\"><parent link=\"base\"/><child link=\"carriage\"/>"
+      "<axis xyz=\"1 0 0\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n"
+      "<joint name=\"j_y\" type=\"prismatic\"><parent link=\"carriage\"/><child link=\"slider\"/>"
+      "<axis xyz=\"0 1 0\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n"
+      "</robot>");
+  std::vector<Finding> findings = CheckModel(model);
+  int errors = 0;
+  for (const Finding& f : findings) errors += f.rule == "massless-moving-body";
+  ASSERT_EQ(errors, 2);
+  RepairOptions options;
+  options.apply = {"massless-moving-body"};
+  std::vector<RefusedRepair> refused;
+  const std::vector<Repair> repairs = PlanRepairs(model, findings, options, &refused);
+  const std::optional<Repair> r = RepairOf(repairs, "slider");
+  ASSERT_TRUE(r.has_value()) << (refused.empty() ? "" : refused.front().why);
+  const double m = 1000 * 4.0 / 3.0 * kPi * 0.05 * 0.05 * 0.05;
+  EXPECT_NEAR(r->after.mass, m, 5e-6 * m);
+  EXPECT_FALSE(RepairOf(repairs, "carriage").has_value());
+  bool note = false;
+  for (const Finding& f : CheckModel(ApplyRepairs(model, repairs))) {
+    EXPECT_NE(f.rule, "massless-moving-body") << f.message;
+    note = note || (f.rule == "massless-link-with-mass-outboard" && f.link == "carriage");
+  }
+  EXPECT_TRUE(note);
+}
+
 TEST(PlanRepairsTest, FromGeometryWritesTheInertiaInTheRotatedInertialFrame) {
   // Box 0.1 x 0.2 x 0.3, mass kept at 6 kg: in the link frame diag(0.065, 0.05, 0.025). The
   // inertial frame is turned 90° about z (x_Bi = y_B, y_Bi = -x_B), so R_BBiᵀ·I·R_BBi =

@@ -24,6 +24,7 @@ constexpr const char* kMassNotPositive = "mass-not-positive";
 constexpr const char* kInertiaNotFinite = "inertia-not-finite";
 constexpr const char* kInertiaNotPhysical = "inertia-not-physical";
 constexpr const char* kMasslessMovingBody = "massless-moving-body";
+constexpr const char* kMasslessWithMassOutboard = "massless-link-with-mass-outboard";
 constexpr const char* kZeroInertiaAboutJointAxis = "zero-inertia-about-joint-axis";
 constexpr const char* kInertialMissing = "inertial-missing";
 constexpr const char* kProductsSignSuspect = "products-sign-suspect";
@@ -60,6 +61,13 @@ constexpr double kDummyMass = 1e-3;                 // kg
 // Where part of a welded group's geometry is a mesh of unknown size, the known geometry may cover
 // only part of the body: the geometry rules allow it to reach this many times farther.
 constexpr double kPartialGeometryMargin = 3;
+
+// massless-moving-body: a joint's generalized coordinate has zero inertia (the mass matrix is
+// singular) when the inertia that its outboard bodies put on it is at most this fraction of its
+// natural scale (see HingeInertiaOf). Far above the round-off of composing written numbers
+// (about 1e-16 relative: a point mass written on the axis composes to 0 or ~1e-17), far below
+// any real body (a 1 m, 1 kg arm would need its mass within 1 µm of the axis).
+constexpr double kSingularTolerance = 1e-12;
 
 std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
 std::string Format(const char* format, ...) {
@@ -177,7 +185,7 @@ std::string Causes(double ratio) {
   } else {
     text +=
         "a placeholder inertia, a mass raised without its inertia (the inertia of the old "
-        "mass), or " +
+        "mass), or a unit slip (" +
         GuessUnitError(factor) + ")";
   }
   return text;
@@ -192,6 +200,84 @@ std::string MeshScaleHint(const GeometryBounds& bounds, double ratio) {
          Format("%.3g", 0.5 / ratio) + " times the size the radius of gyration suggests)";
 }
 
+// What the bodies outboard of a joint give its generalized coordinates (massless-moving-body).
+//
+// With only joint J moving, at rates q̇ (every other joint still), the bodies inboard of J stay at
+// rest and the kinetic energy is that of the bodies outboard of J (its child and all their
+// descendants: composite mass m, center of mass c, central inertia I_cm, all in J's frame C, whose
+// origin O lies on the axis): T = ½ q̇ᵀ M_JJ q̇ with M_JJ = S_Jᵀ 𝕀_O S_J, 𝕀_O their composite spatial
+// inertia about O and S_J the joint's motion subspace. M_JJ is J's diagonal block of the mass
+// matrix M, and M is positive semi-definite: if vᵀ M_JJ v = 0 for some v ≠ 0, the generalized
+// velocity that is v on J and 0 elsewhere has zero kinetic energy, so M·(v, 0) = 0 and M is
+// singular. (The converse needs more than diagonal blocks: two coaxial revolute joints through a
+// massless link make M singular with every M_JJ > 0; that case is not detected here.)
+//  - revolute/continuous, unit axis a through O: S = (a; 0), M_JJ = a·I_O·a with
+//    I_O = I_cm + m·(|c|²·1 − c·cᵀ); zero when everything outboard lies on the axis line (a point
+//    mass on it, a rod along it). Scale: tr(I_O) = tr(I_cm) + 2·m·|c|², the outboard composite's
+//    own size about O (mass × extent² + trace): singular when a·I_O·a <=
+//    kSingularTolerance·tr(I_O), scale-free, and true for any tr(I_O) when a·I_O·a = 0.
+//  - prismatic: S = (0; a), M_JJ = m. Scale: the model's total mass.
+//  - ball: S = (1; 0), M_JJ = I_O: singular when its smallest eigenvalue is zero (scale tr(I_O)).
+//  - planar (normal a): two translations ⊥ a and a turn about a; det M_JJ = m²·(a·I_cm·a) (Schur
+//    complement of the translational block m·1): zero mass or a·I_cm·a = 0 (scale tr(I_cm)).
+//  - floating, and a free SDF link: M_JJ is the 6×6 spatial inertia, det M_JJ = m³·det(I_cm): zero
+//    mass or a singular central inertia (a point mass, a rod; scale tr(I_cm)).
+//  - other types (universal, screw, unknown): judged on the mass only.
+// Every type first needs m > kSingularTolerance·(the model's total mass).
+struct HingeInertia {
+  bool singular = false;
+  double mass = 0;    // outboard mass
+  double moment = 0;  // the rotational inertia judged (a·I_O·a, a smallest moment), if any
+  std::string why;    // singular: what has no inertia; regular: the rotational inertia judged
+};
+
+double SmallestMoment(const Eigen::Matrix3d& I) {
+  return internal::ScaledPrincipalMoments(I(0, 0), I(1, 1), I(2, 2), I(1, 0), I(2, 0), I(2, 1),
+                                          PrincipalSolver::kAccurate)(0);
+}
+
+HingeInertia HingeInertiaOf(Joint::Type type, const Eigen::Vector3d& axis_C,
+                            const CompositeInertia& outboard, double total_mass) {
+  HingeInertia h;
+  h.mass = outboard.mass;
+  if (!(outboard.mass > kSingularTolerance * total_mass)) {
+    h.singular = true;
+    h.why = "nothing outboard of it has mass (outboard mass " + Num(outboard.mass) + " kg)";
+    return h;
+  }
+  const Eigen::Matrix3d I_O = outboard.CalcInertiaAboutOrigin();
+  const Eigen::Matrix3d& I_cm = outboard.I_SScm_R;
+  const double norm = axis_C.norm();
+  const Eigen::Vector3d a = norm > 0 ? Eigen::Vector3d(axis_C / norm) : Eigen::Vector3d::UnitZ();
+  double scale = 0;
+  if ((type == Joint::Type::kRevolute || type == Joint::Type::kContinuous) && norm > 0) {
+    h.moment = a.dot(I_O * a);
+    scale = I_O.trace();
+    h.why = "moment of inertia about the joint axis " + Vec(a) + " through the joint origin";
+  } else if (type == Joint::Type::kBall) {
+    h.moment = SmallestMoment(I_O);
+    scale = I_O.trace();
+    h.why = "smallest principal moment of inertia about the joint center";
+  } else if (type == Joint::Type::kPlanar && norm > 0) {
+    h.moment = a.dot(I_cm * a);
+    scale = I_cm.trace();
+    h.why = "moment of inertia about the plane's normal " + Vec(a) + " through its center of mass";
+  } else if (type == Joint::Type::kFloating) {
+    h.moment = SmallestMoment(I_cm);
+    scale = I_cm.trace();
+    h.why = "smallest principal moment of inertia about its center of mass";
+  } else {
+    h.why.clear();
+    return h;
+  }
+  h.singular = h.moment <= kSingularTolerance * scale;
+  h.why = h.singular ? "everything outboard of it (mass " + Num(outboard.mass) +
+                           " kg) gives the joint no inertia: its " + h.why + " is " +
+                           Num(h.moment) + " kg·m²"
+                     : h.why + " " + Num(h.moment) + " kg·m²";
+  return h;
+}
+
 class Checker {
  public:
   Checker(const Model& model, const CheckOptions& options) : model_(model), options_(options) {}
@@ -202,6 +288,7 @@ class Checker {
     for (std::size_t g = 0; g < groups_.size(); ++g) {
       for (int i : groups_[g].links) group_of_[i] = static_cast<int>(g);
     }
+    BuildJointTree();
     for (std::size_t i = 0; i < model_.links.size(); ++i) CheckLink(static_cast<int>(i));
     kinematic_only_ = model_.format == Model::Format::kUrdf;
     for (const Link& link : model_.links) kinematic_only_ = kinematic_only_ && !link.inertial;
@@ -218,6 +305,50 @@ class Checker {
   }
 
  private:
+  // children_[l]: (child link, joint) of every joint from link l that is its child's tree parent
+  // joint (the first in file order, as FindWeldedGroups decides); total_mass_: the model's mass.
+  void BuildJointTree() {
+    children_.assign(model_.links.size(), {});
+    for (std::size_t j = 0; j < model_.joints.size(); ++j) {
+      const Joint& joint = model_.joints[j];
+      const int p = model_.FindLink(joint.parent), c = model_.FindLink(joint.child);
+      if (p < 0 || c < 0 || model_.FindParentJoint(joint.child) != static_cast<int>(j)) continue;
+      children_[p].emplace_back(c, static_cast<int>(j));
+    }
+    total_mass_ = 0;
+    for (const Link& link : model_.links) {
+      const double m = LinkMassProperties(link, model_.format).mass;
+      if (m > 0 && std::isfinite(m)) total_mass_ += m;
+    }
+  }
+
+  // The composite of link `child_link` and everything outboard of it (its welded group and every
+  // group attached below, through any joint, at the zero configuration), about and expressed in
+  // `child_link`'s frame; nullopt when a member's <inertial> could not be read.
+  std::optional<CompositeInertia> OutboardComposite(int child_link) const {
+    std::vector<MassProperties> parts;
+    std::vector<std::pair<int, Pose>> stack = {{child_link, Pose()}};
+    std::vector<bool> seen(model_.links.size(), false);
+    while (!stack.empty()) {
+      const auto [l, X_CL] = stack.back();
+      stack.pop_back();
+      if (seen[l]) continue;
+      seen[l] = true;
+      const Link& link = model_.links[l];
+      if (link.inertial_unreadable) return std::nullopt;
+      const MassProperties props_L = LinkMassProperties(link, model_.format);
+      if (props_L.mass != 0 || !props_L.I_SScm_F.isZero(0)) {
+        MassProperties props_C;
+        props_C.mass = props_L.mass;
+        props_C.p_FoScm_F = X_CL.p_AB + X_CL.R_AB * props_L.p_FoScm_F;
+        props_C.I_SScm_F = X_CL.R_AB * props_L.I_SScm_F * X_CL.R_AB.transpose();
+        parts.push_back(props_C);
+      }
+      for (const auto& [c, j] : children_[l]) stack.emplace_back(c, X_CL * model_.joints[j].X_PC);
+    }
+    return ComposeMassProperties(parts);
+  }
+
   // The severity of `rule` after the overrides, or nullopt when the rule is off.
   std::optional<Severity> SeverityOf(const char* rule) const {
     const auto it = options_.overrides.find(rule);
@@ -732,22 +863,74 @@ class Checker {
     return contributing;
   }
 
-  // massless-moving-body; returns whether the group moves and has no mass.
+  // massless-moving-body (error) where a moving group without mass makes the mass matrix
+  // singular (see HingeInertiaOf): what lies outboard of its joint gives the joint's coordinates
+  // no inertia, or a joint it carries gets none; otherwise massless-link-with-mass-outboard (note).
+  // Returns whether the group moves and has no mass.
   bool CheckMasslessMovingGroup(const WeldedGroup& group, const std::string& who,
                                 bool all_massless) {
     if (!group.is_moving || !all_massless) return false;
-    const Link& root = model_.links[group.links.front()];
-    std::string how = "is free-floating";
-    if (group.parent_joint >= 0) {
-      const Joint& joint = model_.joints[group.parent_joint];
-      how = "moves on " + joint.type_name + " joint '" + joint.name + "'";
+    const int root_index = group.links.front();
+    const Link& root = model_.links[root_index];
+    Joint free;  // a free-floating SDF link moves as on a floating joint
+    free.type = Joint::Type::kFloating;
+    const Joint& joint = group.parent_joint >= 0 ? model_.joints[group.parent_joint] : free;
+    const std::string how = group.parent_joint >= 0
+                                ? "moves on " + joint.type_name + " joint '" + joint.name + "'"
+                                : "is free-floating";
+    const std::optional<CompositeInertia> outboard = OutboardComposite(root_index);
+    // An outboard <inertial> unreadable or not finite: its own finding says so; nothing to judge.
+    if (!outboard || !std::isfinite(outboard->mass) || !outboard->I_SScm_R.allFinite()) return true;
+    const HingeInertia hinge = HingeInertiaOf(joint.type, joint.axis, *outboard, total_mass_);
+    const std::vector<std::pair<std::string, double>> values = {
+        {"mass", 0},
+        {"outboard_mass", hinge.mass},
+        {"moment_outboard", hinge.moment},
+        {"group_links", static_cast<double>(group.links.size())}};
+    const std::string singular =
+        ": the mass matrix is singular (a joint coordinate has zero inertia), so simulators reject "
+        "the model or become unstable";
+    if (hinge.singular) {
+      Emit(kMasslessMovingBody, root, MassLocation(root),
+           who + " " + how + " but has zero mass, and " + hinge.why + singular, values);
+      return true;
     }
-    Emit(kMasslessMovingBody, root, MassLocation(root),
-         who + " " + how +
-             " but has zero mass: simulators reject a moving body without mass or become "
-             "unstable",
-         {{"mass", 0}, {"group_links", static_cast<double>(group.links.size())}});
+    if (const std::optional<std::string> carried = SingularCarriedJoint(group)) {
+      Emit(kMasslessMovingBody, root, MassLocation(root),
+           who + " " + how + " but has zero mass, and " + *carried + singular, values);
+      return true;
+    }
+    Emit(kMasslessWithMassOutboard, root, MassLocation(root),
+         who + " " + how + " with zero mass, but " + Num(hinge.mass) + " kg lies outboard of it" +
+             (hinge.why.empty() ? "" : " (" + hinge.why + ")") +
+             ": the mass matrix is regular, so Drake and Pinocchio accept it; MuJoCo refuses a "
+             "moving body whose mass is below mjMINVAL = 1e-15 unless its compiler options "
+             "boundmass/boundinertia raise it (see `massprops check --target mujoco`)",
+         values);
     return true;
+  }
+
+  // For a massless group: the first non-fixed joint from one of its links to a group with mass
+  // whose outboard bodies give the joint's coordinates no inertia (why, in words), or nullopt. A
+  // joint to a massless group is judged with that group.
+  std::optional<std::string> SingularCarriedJoint(const WeldedGroup& group) const {
+    for (int l : group.links) {
+      for (const auto& [c, j] : children_[l]) {
+        if (group_of_[c] == group_of_[l]) continue;  // a welded member
+        bool child_massless = true;
+        CountContributingMembers(groups_[group_of_[c]], &child_massless);
+        if (child_massless) continue;
+        const Joint& joint = model_.joints[j];
+        const std::optional<CompositeInertia> outboard = OutboardComposite(c);
+        if (!outboard || !std::isfinite(outboard->mass) || !outboard->I_SScm_R.allFinite())
+          continue;
+        const HingeInertia h = HingeInertiaOf(joint.type, joint.axis, *outboard, total_mass_);
+        if (h.singular) {
+          return "carries " + joint.type_name + " joint '" + joint.name + "', where " + h.why;
+        }
+      }
+    }
+    return std::nullopt;
   }
 
   // inertial-missing: links with collision geometry and no <inertial>.
@@ -830,7 +1013,9 @@ class Checker {
   const Model& model_;
   const CheckOptions& options_;
   std::vector<WeldedGroup> groups_;
-  std::vector<int> group_of_;  // link index -> index into groups_
+  std::vector<int> group_of_;                               // link index -> index into groups_
+  std::vector<std::vector<std::pair<int, int>>> children_;  // see BuildJointTree
+  double total_mass_ = 0;
   bool kinematic_only_ = false;
   std::vector<Finding> findings_;
 };
@@ -866,7 +1051,11 @@ const std::vector<RuleInfo>& AllRules() {
        "At the center of mass, a principal moment is negative or the triangle inequality fails "
        "(per link and per welded group)."},
       {kMasslessMovingBody, Severity::kError, true,
-       "A welded group that moves relative to its parent has zero mass."},
+       "A welded group that moves relative to its parent has zero mass, and nothing outboard "
+       "gives its joint (or a joint it carries) inertia: the mass matrix is singular."},
+      {kMasslessWithMassOutboard, Severity::kNote, true,
+       "A massless moving welded group with mass outboard of it (a multi-axis joint's "
+       "intermediate link): physics accepts it, MuJoCo does not without boundmass."},
       {kZeroInertiaAboutJointAxis, Severity::kWarning, true,
        "A revolute/continuous joint's child group has zero moment of inertia about the axis."},
       {kInertialMissing, Severity::kWarning, true,

@@ -714,7 +714,14 @@ class RepairJudge {
   RepairJudge(const Model& model, const RepairOptions& options) : model_(model) {
     check_options_.tolerance = options.tolerance;
     check_options_.shape = options.shape;
-    for (const Finding& f : CheckModel(model, check_options_)) before_.insert({f.link, f.rule});
+    for (const Finding& f : CheckModel(model, check_options_)) {
+      before_.insert({f.link, f.rule});
+      // Mass given to a body outboard of a massless moving group turns the group's error into
+      // this note: the same massless body, now harmless, not a finding the repair creates.
+      if (f.rule == "massless-moving-body") {
+        before_.insert({f.link, "massless-link-with-mass-outboard"});
+      }
+    }
   }
 
   // What is wrong with `repair` when `all` (which holds it) are applied: a finding it answers
