@@ -386,6 +386,34 @@ TEST(PrincipalAxesTest, NegligibleOffDiagonalGivesAValidEigensystem) {
   }
 }
 
+// Found by the inertia fuzzer (testdata/fuzz/regressions/inertia/axes-underflowing-pair-*, and
+// the earlier open finding of six entries between 8e-320 and 1.3e-231): one moment dominates by
+// 160 orders (1.1e74 against 0.377 and products of -1.2e-88), so the other two are equal to
+// round-off and any orthonormal pair spans their plane; the deflation's 2x2 rotation was
+// normalized with squares that underflowed (|x| ~ 1e-162), returning axes of length 1.0027 and
+// 1.0000168. Hand-derived expectation: the values are 0, 0 and the trace (to round-off of the
+// trace), and V is a rotation (orthonormal, determinant 1) whatever the pair's axes are.
+TEST(PrincipalAxesTest, AxesStayOrthonormalWhenTheEqualPairUnderflows) {
+  const std::array<std::array<double, 6>, 2> cases = {{
+      {1.1063927024996823e+74, 0.37701416044477737, -1.1655535480901152e-88,
+       -1.1655535480901393e-88, -1.1655535480901393e-88, -1.1655535480901393e-88},
+      {1.2895927855622272e-231, 0.0, 3.22526e-319, 5.012646388445023e-304, 8.087e-320, 0.0},
+  }};
+  for (const auto& e : cases) {
+    Matrix3<double> A;  // (ixx, iyy, izz, ixy, ixz, iyz) as matrix entries
+    A << e[0], e[3], e[4], e[3], e[1], e[5], e[4], e[5], e[2];
+    const double trace = e[0] + e[1] + e[2];
+    for (PrincipalSolver solver : kBothSolvers) {
+      const auto [w, V] = CalcSymmetricEigensystem(A, solver);
+      EXPECT_LE((V.transpose() * V - Matrix3<double>::Identity()).norm(), 8 * kEps<double>);
+      EXPECT_NEAR(V.determinant(), 1, 8 * kEps<double>);
+      EXPECT_NEAR(w[0] / trace, 0, 4 * kEps<double>);
+      EXPECT_NEAR(w[1] / trace, 0, 4 * kEps<double>);
+      EXPECT_NEAR(w[2] / trace, 1, 4 * kEps<double>);
+    }
+  }
+}
+
 // Only the lower triangle is read (documented): garbage in the upper triangle has no effect.
 TEST(PrincipalAxesTest, OnlyTheLowerTriangleIsRead) {
   Matrix3<double> lower;

@@ -278,16 +278,30 @@ bool Deflate(const Sym3<T>& c, T mu, Vector3<T>* mu_out, Matrix3<T>* V) {
   if (V == nullptr) return true;
   // The eigenvector of lo in the (u, w) plane, (a, b) in that basis, from the formula that does
   // not cancel: (|delta| + h, -2 m01) when delta >= 0, (-2 m01, |delta| + h) otherwise.
-  const T x = abs(delta) + h;
+  T x = abs(delta) + h;
+  T y = two_m01;
   T a = T(1), b = T(0);
-  const T norm2 = x * x + two_m01 * two_m01;
+  T norm2 = x * x + y * y;
+  // When the pair is equal to round-off of the spread, x and y can be so small that their squares
+  // are subnormal or zero (entries 1e-88 beside 1e74: |x| ~ 1e-162): (a, b) would then not be a
+  // unit vector and the axes not orthonormal (found by the inertia fuzzer). Rescale by the larger
+  // of the two first; normal inputs never take this branch, so their results are unchanged.
+  constexpr T kMinNorm2 = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
+  if (norm2 < kMinNorm2) {
+    const T big = std::max(abs(x), abs(y));
+    if (big > T(0)) {
+      x /= big;
+      y /= big;
+      norm2 = x * x + y * y;
+    }
+  }
   if (norm2 > T(0)) {
     const T scale = T(1) / sqrt(norm2);
     if (delta >= T(0)) {
       a = x * scale;
-      b = -two_m01 * scale;
+      b = -y * scale;
     } else {
-      a = -two_m01 * scale;
+      a = -y * scale;
       b = x * scale;
     }
   }
