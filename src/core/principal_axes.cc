@@ -201,6 +201,42 @@ T IsolatedChebyshevRoot(T s) {
 
 enum class Mode { kClosedFormValues, kDeflatedValues, kDeflatedVectors };
 
+// The unit eigenvector (a, b) of the smaller eigenvalue of [[m00, m01], [m01, m11]], given
+// delta = m11 - m00, h = sqrt(delta^2 + 4 m01^2) and two_m01 = 2 m01, from the formula that does
+// not cancel: (|delta| + h, -2 m01) when delta >= 0, (-2 m01, |delta| + h) otherwise, normalized.
+// When the pair is equal to round-off of the spread, x and y can be so small that their squares
+// are subnormal or zero (entries 1e-88 beside 1e74: |x| ~ 1e-162): (a, b) would then not be a
+// unit vector and the axes not orthonormal (found by the inertia fuzzer). They are rescaled by the
+// larger of the two first; normal inputs never take that branch, so their results are unchanged.
+template <typename T>
+void LowerEigenvectorOfPair(T delta, T h, T two_m01, T* a, T* b) {
+  using std::abs;
+  using std::sqrt;
+  T x = abs(delta) + h;
+  T y = two_m01;
+  *a = T(1);
+  *b = T(0);
+  T norm2 = x * x + y * y;
+  constexpr T kMinNorm2 = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
+  if (norm2 < kMinNorm2) {
+    const T big = std::max(abs(x), abs(y));
+    if (big > T(0)) {
+      x /= big;
+      y /= big;
+      norm2 = x * x + y * y;
+    }
+  }
+  if (!(norm2 > T(0))) return;
+  const T scale = T(1) / sqrt(norm2);
+  if (delta >= T(0)) {
+    *a = x * scale;
+    *b = -y * scale;
+  } else {
+    *a = -y * scale;
+    *b = x * scale;
+  }
+}
+
 // Deflation of the normalized, shifted matrix C (trace 0, sum of squares 6) by its isolated
 // eigenvalue mu (the one farthest from the other two, at least sqrt(3) away from both). Its unit
 // eigenvector v is the largest cross product of two rows of C - mu*1 (accurate because mu is well
@@ -276,35 +312,9 @@ bool Deflate(const Sym3<T>& c, T mu, Vector3<T>* mu_out, Matrix3<T>* V) {
     *mu_out = Vector3<T>(std::min(mu, lo), lo, hi);
   }
   if (V == nullptr) return true;
-  // The eigenvector of lo in the (u, w) plane, (a, b) in that basis, from the formula that does
-  // not cancel: (|delta| + h, -2 m01) when delta >= 0, (-2 m01, |delta| + h) otherwise.
-  T x = abs(delta) + h;
-  T y = two_m01;
-  T a = T(1), b = T(0);
-  T norm2 = x * x + y * y;
-  // When the pair is equal to round-off of the spread, x and y can be so small that their squares
-  // are subnormal or zero (entries 1e-88 beside 1e74: |x| ~ 1e-162): (a, b) would then not be a
-  // unit vector and the axes not orthonormal (found by the inertia fuzzer). Rescale by the larger
-  // of the two first; normal inputs never take this branch, so their results are unchanged.
-  constexpr T kMinNorm2 = std::numeric_limits<T>::min() / std::numeric_limits<T>::epsilon();
-  if (norm2 < kMinNorm2) {
-    const T big = std::max(abs(x), abs(y));
-    if (big > T(0)) {
-      x /= big;
-      y /= big;
-      norm2 = x * x + y * y;
-    }
-  }
-  if (norm2 > T(0)) {
-    const T scale = T(1) / sqrt(norm2);
-    if (delta >= T(0)) {
-      a = x * scale;
-      b = -y * scale;
-    } else {
-      a = -y * scale;
-      b = x * scale;
-    }
-  }
+  // The eigenvector of lo in the (u, w) plane, (a, b) in that basis.
+  T a, b;
+  LowerEigenvectorOfPair(delta, h, two_m01, &a, &b);
   // Unit u = u * ru, unit w = w * ru * rv.
   const T au = a * ru, bu = b * ru, aw = a * ru * rv, bw = b * ru * rv;
   const Vector3<T> e_lo = au * u + bw * w;

@@ -131,6 +131,10 @@ class Reader {
   void WarnAboutTextUrdfdomSkips();
   Model FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<std::string>& errors,
                     const std::string& xml);
+  Link LinkFromUrdfdom(const IndexedLink& indexed, const urdf::Link& source);
+  void ReportUnreadableInertials(const std::vector<std::string>& unreadable, const std::string& xml,
+                                 Model* model);
+  Joint JointFromUrdfdom(const IndexedJoint& indexed, const urdf::Joint& source);
   void UseUrdfdomsParentJoints(const urdf::ModelInterface& urdf, Model* model);
   void WarnAboutSecondParents(const Link& link, const std::vector<const Joint*>& joints,
                               const Joint& kept);
@@ -530,6 +534,7 @@ void Reader::ReportUnderflows(Model* model) {
   }
 }
 
+// The Model of what urdfdom read, in the file's order, with the index's lines.
 Model Reader::FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<std::string>& errors,
                           const std::string& xml) {
   Model model;
@@ -542,96 +547,105 @@ Model Reader::FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<st
   for (const IndexedLink& indexed : index_.links) {
     const auto found = urdf.links_.find(indexed.name);
     if (found == urdf.links_.end() || !found->second) continue;
-    const urdf::Link& source = *found->second;
-    Link link;
-    link.name = source.name;
-    link.location = Loc(indexed.line);
-    link.ignored_rules = indexed.ignored_rules;
-    if (source.inertial) {
-      const urdf::Inertial& i = *source.inertial;
-      Inertial& inertial = link.inertial.emplace();
-      inertial.mass = i.mass;
-      inertial.X_BBi = ToPose(i.origin);
-      inertial.ixx = i.ixx;
-      inertial.iyy = i.iyy;
-      inertial.izz = i.izz;
-      inertial.ixy = i.ixy;
-      inertial.ixz = i.ixz;
-      inertial.iyz = i.iyz;
-      inertial.location = Loc(indexed.inertial_lines.empty() ? 0 : indexed.inertial_lines[0]);
-      inertial.mass_location = Loc(indexed.mass_line);
-      inertial.inertia_location = Loc(indexed.inertia_line);
-      inertial.pose_location = Loc(indexed.origin_line);
-    }
-    // urdfdom keeps the <visual>s (then the <collision>s) it read before the first it could not:
-    // the k-th kept one is the k-th element of its kind.
-    std::size_t visuals = 0, collisions = 0;
-    for (const IndexedLink::Holder& holder : indexed.holders) {
-      const urdf::GeometrySharedPtr* geometry = nullptr;
-      const urdf::Pose* origin = nullptr;
-      if (holder.is_collision && collisions < source.collision_array.size()) {
-        geometry = &source.collision_array[collisions]->geometry;
-        origin = &source.collision_array[collisions]->origin;
-        ++collisions;
-      } else if (!holder.is_collision && visuals < source.visual_array.size()) {
-        geometry = &source.visual_array[visuals]->geometry;
-        origin = &source.visual_array[visuals]->origin;
-        ++visuals;
-      }
-      if (geometry == nullptr || !*geometry) continue;
-      Geometry g = ToGeometry(**geometry, *origin, holder.is_collision);
-      g.location = Loc(holder.line);
-      link.geometries.push_back(std::move(g));
-    }
-    model.links.push_back(std::move(link));
+    model.links.push_back(LinkFromUrdfdom(indexed, *found->second));
   }
-
-  const std::vector<std::string> unreadable = LinksWithUnreadableInertial(errors);
-  if (!unreadable.empty()) {
-    XMLDocument doc;
-    if (ParseDom(xml, &doc)) {
-      const XMLElement* robot = doc.FirstChildElement("robot");
-      for (const std::string& name : unreadable) {
-        const auto indexed = index_.first_link.find(name);
-        const int i = model.FindLink(name);
-        if (indexed == index_.first_link.end() || i < 0 || robot == nullptr) continue;
-        const XMLElement* link_xml = NthChild(robot, "link", indexed->second);
-        if (link_xml != nullptr) ReportUnreadableInertial(link_xml, &model.links[i]);
-      }
-    }
-  }
-
+  ReportUnreadableInertials(LinksWithUnreadableInertial(errors), xml, &model);
   ReportUnderflows(&model);
-
   model.joints.reserve(index_.joints.size());
   for (const IndexedJoint& indexed : index_.joints) {
     const auto found = urdf.joints_.find(indexed.name);
     if (found == urdf.joints_.end() || !found->second) continue;
-    const urdf::Joint& source = *found->second;
-    Joint joint;
-    joint.name = source.name;
-    joint.type = JointTypeOf(source.type);
-    joint.type_name = indexed.type;
-    joint.parent = source.parent_link_name;
-    joint.child = source.child_link_name;
-    joint.X_PC = ToPose(source.parent_to_joint_origin_transform);
-    joint.location = Loc(indexed.line);
-    if (joint.type != Joint::Type::kFixed && joint.type != Joint::Type::kFloating) {
-      const Eigen::Vector3d axis(source.axis.x, source.axis.y, source.axis.z);
-      const double norm = axis.norm();
-      joint.axis = norm > 0 ? Eigen::Vector3d(axis / norm) : axis;
-      if (!(norm > 0)) {
-        Warning(indexed.axis_line > 0 ? indexed.axis_line : indexed.line,
-                "<axis> of joint '" + joint.name + "'",
-                indexed.axis_line > 0 && !indexed.axis_has_xyz
-                    ? "no 'xyz' attribute: ROS's URDF parser leaves the axis (0, 0, 0)"
-                    : "the axis is zero");
-      }
-    }
-    model.joints.push_back(std::move(joint));
+    model.joints.push_back(JointFromUrdfdom(indexed, *found->second));
   }
   UseUrdfdomsParentJoints(urdf, &model);
   return model;
+}
+
+// One link as urdfdom read it: its inertial and the geometries it kept, located by the index.
+Link Reader::LinkFromUrdfdom(const IndexedLink& indexed, const urdf::Link& source) {
+  Link link;
+  link.name = source.name;
+  link.location = Loc(indexed.line);
+  link.ignored_rules = indexed.ignored_rules;
+  if (source.inertial) {
+    const urdf::Inertial& i = *source.inertial;
+    Inertial& inertial = link.inertial.emplace();
+    inertial.mass = i.mass;
+    inertial.X_BBi = ToPose(i.origin);
+    inertial.ixx = i.ixx;
+    inertial.iyy = i.iyy;
+    inertial.izz = i.izz;
+    inertial.ixy = i.ixy;
+    inertial.ixz = i.ixz;
+    inertial.iyz = i.iyz;
+    inertial.location = Loc(indexed.inertial_lines.empty() ? 0 : indexed.inertial_lines[0]);
+    inertial.mass_location = Loc(indexed.mass_line);
+    inertial.inertia_location = Loc(indexed.inertia_line);
+    inertial.pose_location = Loc(indexed.origin_line);
+  }
+  // urdfdom keeps the <visual>s (then the <collision>s) it read before the first it could not:
+  // the k-th kept one is the k-th element of its kind.
+  std::size_t visuals = 0, collisions = 0;
+  for (const IndexedLink::Holder& holder : indexed.holders) {
+    const urdf::GeometrySharedPtr* geometry = nullptr;
+    const urdf::Pose* origin = nullptr;
+    if (holder.is_collision && collisions < source.collision_array.size()) {
+      geometry = &source.collision_array[collisions]->geometry;
+      origin = &source.collision_array[collisions]->origin;
+      ++collisions;
+    } else if (!holder.is_collision && visuals < source.visual_array.size()) {
+      geometry = &source.visual_array[visuals]->geometry;
+      origin = &source.visual_array[visuals]->origin;
+      ++visuals;
+    }
+    if (geometry == nullptr || !*geometry) continue;
+    Geometry g = ToGeometry(**geometry, *origin, holder.is_collision);
+    g.location = Loc(holder.line);
+    link.geometries.push_back(std::move(g));
+  }
+  return link;
+}
+
+// inertial-unreadable on the links whose <inertial> urdfdom could only partly read, quoting the
+// text (from a DOM of the same text: the index keeps no attribute values).
+void Reader::ReportUnreadableInertials(const std::vector<std::string>& unreadable,
+                                       const std::string& xml, Model* model) {
+  if (unreadable.empty()) return;
+  XMLDocument doc;
+  if (!ParseDom(xml, &doc)) return;
+  const XMLElement* robot = doc.FirstChildElement("robot");
+  for (const std::string& name : unreadable) {
+    const auto indexed = index_.first_link.find(name);
+    const int i = model->FindLink(name);
+    if (indexed == index_.first_link.end() || i < 0 || robot == nullptr) continue;
+    const XMLElement* link_xml = NthChild(robot, "link", indexed->second);
+    if (link_xml != nullptr) ReportUnreadableInertial(link_xml, &model->links[i]);
+  }
+}
+
+// One joint as urdfdom read it (its axis normalized; a zero axis is a read warning).
+Joint Reader::JointFromUrdfdom(const IndexedJoint& indexed, const urdf::Joint& source) {
+  Joint joint;
+  joint.name = source.name;
+  joint.type = JointTypeOf(source.type);
+  joint.type_name = indexed.type;
+  joint.parent = source.parent_link_name;
+  joint.child = source.child_link_name;
+  joint.X_PC = ToPose(source.parent_to_joint_origin_transform);
+  joint.location = Loc(indexed.line);
+  if (joint.type != Joint::Type::kFixed && joint.type != Joint::Type::kFloating) {
+    const Eigen::Vector3d axis(source.axis.x, source.axis.y, source.axis.z);
+    const double norm = axis.norm();
+    joint.axis = norm > 0 ? Eigen::Vector3d(axis / norm) : axis;
+    if (!(norm > 0)) {
+      Warning(indexed.axis_line > 0 ? indexed.axis_line : indexed.line,
+              "<axis> of joint '" + joint.name + "'",
+              indexed.axis_line > 0 && !indexed.axis_has_xyz
+                  ? "no 'xyz' attribute: ROS's URDF parser leaves the axis (0, 0, 0)"
+                  : "the axis is zero");
+    }
+  }
+  return joint;
 }
 
 // urdfdom's initTree (urdf_model/model.h) walks the joints in name order (a std::map) and sets
