@@ -44,11 +44,14 @@ ModelIndex BuildIndex(const Model& model) {
   const int n = static_cast<int>(model.links.size());
   index.parent_joint.assign(n, -1);
   index.parent_link.assign(n, -1);
+  int previous_child = -1;  // hints for a file written in order (NameIndex::Find)
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const Joint& joint = model.joints[j];
-    const int child = index.FindLink(joint.child);
+    const int child = index.link.Find(joint.child, previous_child + 1);
+    const int parent_hint = previous_child;
+    previous_child = child;
     if (child < 0 || index.parent_joint[child] >= 0) continue;
-    const int parent = index.FindLink(joint.parent);
+    const int parent = index.link.Find(joint.parent, parent_hint);
     if (parent == child) continue;
     index.parent_joint[child] = j;
     index.parent_link[child] = parent;
@@ -82,7 +85,7 @@ class PoseSolver {
       known_.assign(model_.links.size(), 0);
       memo_.resize(model_.links.size());
     }
-    std::vector<int> path;
+    path_.clear();
     int cur = link;
     std::optional<Pose> base;
     const std::size_t n = model_.links.size();
@@ -95,11 +98,11 @@ class PoseSolver {
         base = memo_[cur];
         break;
       }
-      if (cur < 0 || path.size() > n) break;  // Above the root, or a cycle: unreachable.
-      path.push_back(cur);
+      if (cur < 0 || path_.size() > n) break;  // Above the root, or a cycle: unreachable.
+      path_.push_back(cur);
       cur = index_.parent_link[cur];
     }
-    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+    for (auto it = path_.rbegin(); it != path_.rend(); ++it) {
       if (base) {
         const int j = index_.parent_joint[*it];
         const auto q = joint_values_.find(j);
@@ -118,6 +121,7 @@ class PoseSolver {
   int anchor_;
   std::vector<char> known_;                // per link: memo_ holds its pose (or nullopt)
   std::vector<std::optional<Pose>> memo_;  // per link
+  std::vector<int> path_;                  // of the current walk (kept: no allocation per call)
 };
 
 // The group of links welded to `root` below it (root first, the others in file order), with
@@ -152,6 +156,17 @@ BodyMassProperties ReExpress(const BodyMassProperties& body_A, const std::string
   Eigen::Matrix3d I_F = R * body_A.inertia_about_com * R.transpose();
   I_F = (0.5 * (I_F + I_F.transpose())).eval();
   return MakeBodyMassProperties(frame_F, body_A.mass, X_FA.p_AB + R * body_A.com, I_F);
+}
+
+// A link's mass properties in its frame L re-expressed in frame A (X_AL given), the inertia made
+// exactly symmetric again.
+MassProperties InFrameA(const MassProperties& props_L, const Pose& X_AL) {
+  MassProperties props_A;
+  props_A.mass = props_L.mass;
+  props_A.p_FoScm_F = X_AL.p_AB + X_AL.R_AB * props_L.p_FoScm_F;
+  props_A.I_SScm_F = X_AL.R_AB * props_L.I_SScm_F * X_AL.R_AB.transpose();
+  props_A.I_SScm_F = (0.5 * (props_A.I_SScm_F + props_A.I_SScm_F.transpose())).eval();
+  return props_A;
 }
 
 BodyMassProperties FromComposite(const std::string& frame, const CompositeInertia& c) {
@@ -231,13 +246,23 @@ struct NamedLinks {
 // no joint of the model, a joint that takes no value, or is not finite.
 bool ParseJointValues(const Model& model, const MassReportOptions& options,
                       std::unordered_map<int, double>* joint_values, std::string* error) {
-  std::optional<internal::NameIndex> joint_index;  // only when joint values are given
-  if (!options.joint_values.empty()) {
+  // A few names (the usual case) are looked for by one pass over the joints each; more through
+  // an index of all the joint names. Either way, of joints with the same name the first.
+  constexpr std::size_t kMaxScans = 4;
+  std::optional<internal::NameIndex> joint_index;
+  if (options.joint_values.size() > kMaxScans) {
     joint_index.emplace(static_cast<int>(model.joints.size()),
                         [&model](int j) -> const std::string& { return model.joints[j].name; });
   }
+  auto find_joint = [&](const std::string& name) {
+    if (joint_index) return joint_index->Find(name);
+    for (std::size_t j = 0; j < model.joints.size(); ++j) {
+      if (model.joints[j].name == name) return static_cast<int>(j);
+    }
+    return -1;
+  };
   for (const auto& [name, value] : options.joint_values) {
-    const int joint_number = joint_index->Find(name);
+    const int joint_number = find_joint(name);
     if (joint_number < 0) {
       *error = "model '" + model.name + "' has no joint named '" + name + "'";
       return false;
@@ -377,7 +402,7 @@ void SelectLinksAndGroups(const Model& model, const ModelIndex& index, const Nam
   } else {
     links->resize(model.links.size());
     for (std::size_t i = 0; i < links->size(); ++i) (*links)[i] = static_cast<int>(i);
-    *groups = FindWeldedGroups(model);
+    *groups = internal::FindWeldedGroups(model, index.parent_joint, index.parent_link);
   }
 }
 
@@ -396,23 +421,22 @@ bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
     const BodyMassProperties body =
         MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
     if (!frame->CanExpress(link)) return false;
-    LinkMassReport entry;
+    LinkMassReport& entry = report->links.emplace_back();  // in place: the entry is large
     entry.name = model.links[link].name;
     entry.properties = frame->InFrame(body, link);
     if (options.geometry != nullptr) {
       entry.geometry = CompareLinkWithGeometry(model.links[link], *options.geometry);
     }
-    report->links.push_back(std::move(entry));
   }
   for (const WeldedGroup& group : groups) {
-    GroupMassReport entry;
-    entry.root_link = group.root_link;
-    for (int link : group.links) entry.links.push_back(model.links[link].name);
     const BodyMassProperties body =
         FromComposite(group.root_link, CalcCompositeInertia(model, group));
     if (!frame->CanExpress(group.links.front())) return false;
+    GroupMassReport& entry = report->welded_groups.emplace_back();
+    entry.root_link = group.root_link;
+    entry.links.reserve(group.links.size());
+    for (int link : group.links) entry.links.push_back(model.links[link].name);
     entry.properties = frame->InFrame(body, group.links.front());
-    report->welded_groups.push_back(std::move(entry));
   }
   return true;
 }
@@ -424,24 +448,29 @@ bool ReportTotal(const Model& model, const ModelIndex& index,
                  const std::unordered_map<int, double>& joint_values, int anchor,
                  const std::vector<int>& links, FrameExpresser* frame, ModelMassReport* report) {
   PoseSolver anchor_poses(model, index, joint_values, anchor);
-  std::vector<MassProperties> parts;
-  parts.reserve(links.size());
   for (int link : links) {
-    const std::optional<Pose> X_AL = anchor_poses.Get(link);
-    if (!X_AL) {
-      report->unreachable_links.push_back(model.links[link].name);
-      continue;
-    }
-    const MassProperties props_L = LinkMassProperties(model.links[link], model.format);
-    MassProperties props_A;
-    props_A.mass = props_L.mass;
-    props_A.p_FoScm_F = X_AL->p_AB + X_AL->R_AB * props_L.p_FoScm_F;
-    props_A.I_SScm_F = X_AL->R_AB * props_L.I_SScm_F * X_AL->R_AB.transpose();
-    props_A.I_SScm_F = (0.5 * (props_A.I_SScm_F + props_A.I_SScm_F.transpose())).eval();
-    parts.push_back(props_A);
+    if (!anchor_poses.Get(link)) report->unreachable_links.push_back(model.links[link].name);
   }
+  // Each part made twice on demand (its pose memoized) rather than stored: see
+  // internal::ComposeMassPropertiesOnDemand.
+  const CompositeInertia composite = internal::ComposeMassPropertiesOnDemand(
+      links.size(),
+      [&](std::size_t k, double* mass, Eigen::Vector3d* p_AoLcm_A) {
+        const std::optional<Pose> X_AL = anchor_poses.Get(links[k]);
+        if (!X_AL) return false;
+        Eigen::Vector3d p_LoLcm_L;
+        *mass = internal::LinkMassAndCom(model.links[links[k]], model.format, &p_LoLcm_L);
+        *p_AoLcm_A = X_AL->p_AB + X_AL->R_AB * p_LoLcm_L;
+        return true;
+      },
+      [&](std::size_t k, MassProperties* props_A) {
+        const std::optional<Pose> X_AL = anchor_poses.Get(links[k]);
+        if (!X_AL) return false;
+        *props_A = InFrameA(LinkMassProperties(model.links[links[k]], model.format), *X_AL);
+        return true;
+      });
   const std::string anchor_name = anchor >= 0 ? model.links[anchor].name : model.root_link;
-  const BodyMassProperties total = FromComposite(anchor_name, ComposeMassProperties(parts));
+  const BodyMassProperties total = FromComposite(anchor_name, composite);
   if (anchor >= 0 && !frame->CanExpress(anchor)) return false;
   report->total = anchor >= 0 ? frame->InFrame(total, anchor) : total;
   return true;

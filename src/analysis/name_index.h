@@ -40,8 +40,25 @@ class NameIndex {
           break;
         }
       }
-      if (!duplicate) slots_[pos] = i;
+      if (duplicate) {
+        has_duplicates_ = true;
+      } else {
+        slots_[pos] = i;
+      }
     }
+  }
+
+  /// The position of `name`, or −1; tries position `hint` first (any int), which costs one string
+  /// comparison and, when it is right, spares the hashing and the table's cache miss. Analyses
+  /// pass where the name usually is in a file written in order (a joint's child is the link after
+  /// the previous joint's child, its parent that child). Without repeated names the name at
+  /// `hint` is the answer; with repeated names the hint is not used (the first must be found).
+  int Find(std::string_view name, int hint) const {
+    if (!has_duplicates_ && hint >= 0 && static_cast<std::size_t>(hint) < names_.size() &&
+        names_[hint] == name) {
+      return hint;
+    }
+    return Find(name);
   }
 
   /// The position of `name`, or −1.
@@ -59,6 +76,7 @@ class NameIndex {
   std::size_t mask_ = 0;
   std::vector<std::string_view> names_;
   std::vector<std::size_t> hashes_;
+  bool has_duplicates_ = false;  // some name is given more than once
 };
 
 }  // namespace massprops::internal

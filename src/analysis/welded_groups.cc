@@ -17,17 +17,25 @@ struct Tree {
   std::vector<int> parent_link;   // per link
 };
 
+// The same, borrowed (from a Tree, or from the report's index of the model).
+struct TreeView {
+  const std::vector<int>& parent_joint;
+  const std::vector<int>& parent_link;
+};
+
 Tree BuildTree(const Model& model) {
   const int n = static_cast<int>(model.links.size());
   const internal::NameIndex index(
       n, [&model](int i) -> const std::string& { return model.links[i].name; });
-  auto find = [&index](const std::string& name) { return index.Find(name); };
   Tree tree{std::vector<int>(n, -1), std::vector<int>(n, -1)};
+  int previous_child = -1;  // hints for a file written in order (NameIndex::Find)
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j) {
     const Joint& joint = model.joints[j];
-    const int child = find(joint.child);
+    const int child = index.Find(joint.child, previous_child + 1);
+    const int parent_hint = previous_child;
+    previous_child = child;
     if (child < 0 || tree.parent_joint[child] >= 0) continue;
-    const int parent = find(joint.parent);
+    const int parent = index.Find(joint.parent, parent_hint);
     if (parent == child) continue;  // A self-loop attaches nothing.
     tree.parent_joint[child] = j;
     tree.parent_link[child] = parent;
@@ -44,9 +52,144 @@ Eigen::Matrix3d InertiaMatrix(const Inertial& inertial) {
   return I;
 }
 
-// m·(|d|²·1 − d·dᵀ): the inertia of a point mass m at d about the origin (PSD for m >= 0).
-Eigen::Matrix3d PointMassInertia(double mass, const Eigen::Vector3d& d) {
-  return mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+using internal::PointMassInertia;
+
+// fixed_up[i]: the link that i is welded to (its parent through a fixed joint), or -1.
+std::vector<int> FixedParents(const Model& model, const TreeView& tree) {
+  const int n = static_cast<int>(model.links.size());
+  std::vector<int> fixed_up(n, -1);
+  for (int i = 0; i < n; ++i) {
+    const int j = tree.parent_joint[i];
+    if (j >= 0 && model.joints[j].type == Joint::Type::kFixed) fixed_up[i] = tree.parent_link[i];
+  }
+  return fixed_up;
+}
+
+// root[i]: the top of link i's welded group, found by an iterative walk toward the root with
+// memoization (each link is finished once). A fixed-joint cycle is cut in *fixed_up where found.
+std::vector<int> FindGroupRoots(std::vector<int>* fixed_up) {
+  const int n = static_cast<int>(fixed_up->size());
+  enum State : char { kUnvisited, kOnPath, kDone };
+  std::vector<State> state(n, kUnvisited);
+  std::vector<int> root(n, -1);
+  std::vector<int> path;
+  for (int i = 0; i < n; ++i) {
+    if (state[i] == kDone) continue;
+    bool restart = true;
+    while (restart) {
+      restart = false;
+      path.clear();
+      int cur = i;
+      while (cur >= 0 && state[cur] != kDone) {
+        if (state[cur] == kOnPath) {
+          // A fixed-joint cycle: cut it here and walk again.
+          (*fixed_up)[cur] = -1;
+          for (int k : path) state[k] = kUnvisited;
+          restart = true;
+          break;
+        }
+        state[cur] = kOnPath;
+        path.push_back(cur);
+        cur = (*fixed_up)[cur];
+      }
+    }
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      const int up = (*fixed_up)[*it];
+      root[*it] = up < 0 ? *it : root[up];
+      state[*it] = kDone;
+    }
+  }
+  return root;
+}
+
+// One group per root link, in file order, with its members (root first, then file order) and
+// room for their poses (identity until FillGroupPoses): each vector allocated once, at its size.
+// *position: each link's place in its group; *group_of: each root link's group.
+std::vector<WeldedGroup> MakeGroups(const Model& model, const TreeView& tree,
+                                    const std::vector<int>& root, std::vector<int>* position,
+                                    std::vector<int>* group_of) {
+  const int n = static_cast<int>(model.links.size());
+  group_of->assign(n, -1);
+  std::vector<int> size;  // per group
+  for (int i = 0; i < n; ++i) {
+    if (root[i] != i) continue;
+    (*group_of)[i] = static_cast<int>(size.size());
+    size.push_back(0);
+  }
+  for (int i = 0; i < n; ++i) ++size[(*group_of)[root[i]]];
+  std::vector<WeldedGroup> groups(size.size());
+  bool root_group_seen = false;
+  for (int i = 0; i < n; ++i) {
+    if (root[i] != i) continue;
+    WeldedGroup& group = groups[(*group_of)[i]];
+    group.root_link = model.links[i].name;
+    group.links.reserve(size[(*group_of)[i]]);
+    group.links.push_back(i);
+    group.X_RL.resize(size[(*group_of)[i]]);
+    const int j = tree.parent_joint[i];
+    if (j < 0) {
+      // No parent joint: the model's root, or a free-floating link.
+      const bool is_model_root =
+          model.root_link.empty() ? !root_group_seen : group.root_link == model.root_link;
+      root_group_seen = root_group_seen || is_model_root;
+      group.is_moving = !is_model_root;
+    } else if (model.joints[j].type == Joint::Type::kFixed) {
+      group.is_moving = false;  // Welded to something outside the model (the world).
+    } else {
+      group.parent_joint = j;
+      group.is_moving = true;
+    }
+  }
+  position->assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    if (root[i] == i) continue;
+    std::vector<int>& links = groups[(*group_of)[root[i]]].links;
+    (*position)[i] = static_cast<int>(links.size());
+    links.push_back(i);
+  }
+  return groups;
+}
+
+// X_RL of every member L of every group (R: the group's root link), written in place: each link's
+// pose is its welded parent's times the fixed joint's X_PC, walking up to a link already posed.
+void FillGroupPoses(const Model& model, const TreeView& tree, const std::vector<int>& fixed_up,
+                    const std::vector<int>& root, const std::vector<int>& position,
+                    const std::vector<int>& group_of, std::vector<WeldedGroup>* groups) {
+  const int n = static_cast<int>(model.links.size());
+  auto X_RL = [&](int link) -> Pose& {
+    return (*groups)[group_of[root[link]]].X_RL[position[link]];
+  };
+  std::vector<char> posed(n, 0);
+  std::vector<int> path;
+  for (int i = 0; i < n; ++i) {
+    path.clear();
+    // fixed_up[k] >= 0 for every link k that is not its group's root (posed: identity).
+    for (int cur = i; !posed[cur] && root[cur] != cur; cur = fixed_up[cur]) path.push_back(cur);
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      X_RL(*it) = X_RL(fixed_up[*it]) * model.joints[tree.parent_joint[*it]].X_PC;
+      posed[*it] = 1;
+    }
+  }
+}
+
+// A link's mass properties in its frame L re-expressed in frame R (X_RL given); false for a link
+// with neither mass nor inertia, which composition leaves out.
+bool LinkPartInR(const Link& link, Model::Format format, const Pose& X_RL, MassProperties* part_R) {
+  const MassProperties props_L = LinkMassProperties(link, format);
+  if (props_L.mass == 0 && props_L.I_SScm_F.isZero(0)) return false;
+  part_R->mass = props_L.mass;
+  part_R->p_FoScm_F = X_RL.p_AB + X_RL.R_AB * props_L.p_FoScm_F;
+  part_R->I_SScm_F = X_RL.R_AB * props_L.I_SScm_F * X_RL.R_AB.transpose();
+  return true;
+}
+
+// The link's center of mass in frame R (X_RL given) and its mass, as LinkPartInR computes them.
+double LinkMassAndComInR(const Link& link, Model::Format format, const Pose& X_RL,
+                         Eigen::Vector3d* p_RoLcm_R) {
+  Eigen::Vector3d p_LoLcm_L;
+  const double mass = internal::LinkMassAndCom(link, format, &p_LoLcm_L);
+  *p_RoLcm_R = X_RL.p_AB + X_RL.R_AB * p_LoLcm_L;
+  return mass;
 }
 
 }  // namespace
@@ -65,86 +208,31 @@ SpatialInertia<double> CompositeInertia::CalcSpatialInertia() const {
 }
 
 std::vector<WeldedGroup> FindWeldedGroups(const Model& model) {
-  const int n = static_cast<int>(model.links.size());
   const Tree tree = BuildTree(model);
-  // fixed_up[i]: the link that i is welded to (its parent through a fixed joint), or -1.
-  std::vector<int> fixed_up(n, -1);
-  for (int i = 0; i < n; ++i) {
-    const int j = tree.parent_joint[i];
-    if (j >= 0 && model.joints[j].type == Joint::Type::kFixed) fixed_up[i] = tree.parent_link[i];
-  }
-  // Iterative walk toward the root with memoization: each link is finished once.
-  enum State : char { kUnvisited, kOnPath, kDone };
-  std::vector<State> state(n, kUnvisited);
-  std::vector<int> root(n, -1);
-  std::vector<Pose> X_RL(n);
-  std::vector<int> path;
-  for (int i = 0; i < n; ++i) {
-    if (state[i] == kDone) continue;
-    bool restart = true;
-    while (restart) {
-      restart = false;
-      path.clear();
-      int cur = i;
-      while (cur >= 0 && state[cur] != kDone) {
-        if (state[cur] == kOnPath) {
-          // A fixed-joint cycle: cut it here and walk again.
-          fixed_up[cur] = -1;
-          for (int k : path) state[k] = kUnvisited;
-          restart = true;
-          break;
-        }
-        state[cur] = kOnPath;
-        path.push_back(cur);
-        cur = fixed_up[cur];
-      }
-    }
-    for (auto it = path.rbegin(); it != path.rend(); ++it) {
-      const int k = *it;
-      const int up = fixed_up[k];
-      if (up < 0) {
-        root[k] = k;
-        X_RL[k] = Pose();
-      } else {
-        root[k] = root[up];
-        X_RL[k] = X_RL[up] * model.joints[tree.parent_joint[k]].X_PC;
-      }
-      state[k] = kDone;
-    }
-  }
+  return internal::FindWeldedGroups(model, tree.parent_joint, tree.parent_link);
+}
 
-  std::vector<WeldedGroup> groups;
-  std::vector<int> group_of(n, -1);
-  bool root_group_seen = false;
-  for (int i = 0; i < n; ++i) {
-    if (root[i] != i) continue;
-    group_of[i] = static_cast<int>(groups.size());
-    WeldedGroup group;
-    group.root_link = model.links[i].name;
-    group.links.push_back(i);
-    group.X_RL.push_back(Pose());
-    const int j = tree.parent_joint[i];
-    if (j < 0) {
-      // No parent joint: the model's root, or a free-floating link.
-      const bool is_model_root =
-          model.root_link.empty() ? !root_group_seen : group.root_link == model.root_link;
-      root_group_seen = root_group_seen || is_model_root;
-      group.is_moving = !is_model_root;
-    } else if (model.joints[j].type == Joint::Type::kFixed) {
-      group.is_moving = false;  // Welded to something outside the model (the world).
-    } else {
-      group.parent_joint = j;
-      group.is_moving = true;
-    }
-    groups.push_back(std::move(group));
-  }
-  for (int i = 0; i < n; ++i) {
-    if (root[i] == i) continue;
-    WeldedGroup& group = groups[group_of[root[i]]];
-    group.links.push_back(i);
-    group.X_RL.push_back(X_RL[i]);
-  }
+std::vector<WeldedGroup> internal::FindWeldedGroups(const Model& model,
+                                                    const std::vector<int>& parent_joint,
+                                                    const std::vector<int>& parent_link) {
+  const TreeView tree{parent_joint, parent_link};
+  std::vector<int> fixed_up = FixedParents(model, tree);
+  const std::vector<int> root = FindGroupRoots(&fixed_up);
+  std::vector<int> position;  // of each link in its group's `links` and `X_RL`
+  std::vector<int> group_of;  // of each group root link
+  std::vector<WeldedGroup> groups = MakeGroups(model, tree, root, &position, &group_of);
+  FillGroupPoses(model, tree, fixed_up, root, position, group_of, &groups);
   return groups;
+}
+
+double internal::LinkMassAndCom(const Link& link, Model::Format format,
+                                Eigen::Vector3d* p_BoBcm_B) {
+  if (!link.inertial) {
+    p_BoBcm_B->setZero();
+    return format == Model::Format::kSdf ? 1.0 : 0.0;
+  }
+  *p_BoBcm_B = link.inertial->X_BBi.p_AB;
+  return link.inertial->mass;
 }
 
 MassProperties LinkMassProperties(const Link& link, Model::Format format) {
@@ -177,38 +265,30 @@ SpatialInertia<double> LinkSpatialInertia(const Link& link, Model::Format format
 }
 
 CompositeInertia ComposeMassProperties(const std::vector<MassProperties>& parts_in_R) {
-  CompositeInertia result;
-  // Pass 1: total mass and the mass-weighted sum of the centers of mass.
-  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
-  for (const MassProperties& part : parts_in_R) {
-    result.mass += part.mass;
-    if (part.mass != 0) weighted += part.mass * part.p_FoScm_F;
-  }
-  if (result.mass != 0) result.p_RoScm_R = weighted / result.mass;
-  // Pass 2: each central inertia shifted away from its own center of mass to the composite one.
-  for (const MassProperties& part : parts_in_R) {
-    result.I_SScm_R += part.I_SScm_F;
-    if (part.mass != 0) {
-      result.I_SScm_R += PointMassInertia(part.mass, part.p_FoScm_F - result.p_RoScm_R);
-    }
-  }
-  return result;
+  return internal::ComposeMassPropertiesOnDemand(
+      parts_in_R.size(),
+      [&parts_in_R](std::size_t k, double* mass, Eigen::Vector3d* p_RoPcm_R) {
+        *mass = parts_in_R[k].mass;
+        *p_RoPcm_R = parts_in_R[k].p_FoScm_F;
+        return true;
+      },
+      [&parts_in_R](std::size_t k, MassProperties* props) {
+        *props = parts_in_R[k];
+        return true;
+      });
 }
 
 CompositeInertia CalcCompositeInertia(const Model& model, const WeldedGroup& group) {
-  std::vector<MassProperties> parts;
-  parts.reserve(group.links.size());
-  for (std::size_t k = 0; k < group.links.size(); ++k) {
-    const MassProperties props_L = LinkMassProperties(model.links[group.links[k]], model.format);
-    if (props_L.mass == 0 && props_L.I_SScm_F.isZero(0)) continue;
-    const Pose& X = group.X_RL[k];
-    MassProperties props_R;
-    props_R.mass = props_L.mass;
-    props_R.p_FoScm_F = X.p_AB + X.R_AB * props_L.p_FoScm_F;
-    props_R.I_SScm_F = X.R_AB * props_L.I_SScm_F * X.R_AB.transpose();
-    parts.push_back(props_R);
-  }
-  return ComposeMassProperties(parts);
+  return internal::ComposeMassPropertiesOnDemand(
+      group.links.size(),
+      [&](std::size_t k, double* mass, Eigen::Vector3d* p_RoLcm_R) {
+        *mass =
+            LinkMassAndComInR(model.links[group.links[k]], model.format, group.X_RL[k], p_RoLcm_R);
+        return true;
+      },
+      [&](std::size_t k, MassProperties* part_R) {
+        return LinkPartInR(model.links[group.links[k]], model.format, group.X_RL[k], part_R);
+      });
 }
 
 std::vector<Pose> CalcLinkPosesInRootFrame(const Model& model, std::vector<bool>* reachable) {
@@ -232,6 +312,7 @@ std::vector<Pose> CalcLinkPosesInRootFrame(const Model& model, std::vector<bool>
     if (model.links[i].name == model.root_link) root = i;
   }
   std::vector<int> queue;
+  queue.reserve(n);
   if (root >= 0) {
     queue.push_back(root);
     seen[root] = true;
@@ -254,23 +335,19 @@ ModelCompositeInertia CalcModelCompositeInertia(const Model& model) {
   std::vector<bool> reachable;
   const std::vector<Pose> X_WL = CalcLinkPosesInRootFrame(model, &reachable);
   ModelCompositeInertia result;
-  std::vector<MassProperties> parts;
-  parts.reserve(model.links.size());
   for (std::size_t i = 0; i < model.links.size(); ++i) {
-    if (!reachable[i]) {
-      result.unreachable_links.push_back(static_cast<int>(i));
-      continue;
-    }
-    const MassProperties props_L = LinkMassProperties(model.links[i], model.format);
-    if (props_L.mass == 0 && props_L.I_SScm_F.isZero(0)) continue;
-    const Pose& X = X_WL[i];
-    MassProperties props_W;
-    props_W.mass = props_L.mass;
-    props_W.p_FoScm_F = X.p_AB + X.R_AB * props_L.p_FoScm_F;
-    props_W.I_SScm_F = X.R_AB * props_L.I_SScm_F * X.R_AB.transpose();
-    parts.push_back(props_W);
+    if (!reachable[i]) result.unreachable_links.push_back(static_cast<int>(i));
   }
-  result.inertia = ComposeMassProperties(parts);
+  result.inertia = internal::ComposeMassPropertiesOnDemand(
+      model.links.size(),
+      [&](std::size_t i, double* mass, Eigen::Vector3d* p_WoLcm_W) {
+        if (!reachable[i]) return false;
+        *mass = LinkMassAndComInR(model.links[i], model.format, X_WL[i], p_WoLcm_W);
+        return true;
+      },
+      [&](std::size_t i, MassProperties* part_W) {
+        return reachable[i] && LinkPartInR(model.links[i], model.format, X_WL[i], part_W);
+      });
   return result;
 }
 

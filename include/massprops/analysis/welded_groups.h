@@ -14,6 +14,7 @@
 /// composite of invalid file inertias must still be computable in order to be checked.
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,59 @@ struct ModelCompositeInertia {
 /// Computes the ModelCompositeInertia. A model without links, or whose root_link is not found,
 /// gives zero mass and every link unreachable. Cost: linear in links and joints (iterative).
 ModelCompositeInertia CalcModelCompositeInertia(const Model& model);
+
+namespace internal {
+// Not part of the API: shared by the library's welded_groups.cc and mass_report.cc.
+
+// m·(|d|²·1 − d·dᵀ): the inertia of a point mass m at d about the origin (PSD for m >= 0).
+inline Eigen::Matrix3d PointMassInertia(double mass, const Eigen::Vector3d& d) {
+  return mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+}
+
+// ComposeMassProperties on parts 0 .. count − 1 made on demand instead of stored: pass 1 asks
+// only for each part's mass and center of mass (mass_and_com(k, &m, &p_RoPcm_R), false: not a
+// part), pass 2 for the whole part (part(k, &props), false: not a part, or one of zero mass and
+// zero inertia, which composition leaves out). Both passes do ComposeMassProperties' arithmetic
+// on the same numbers, so the results are bit for bit those of composing the stored parts; a
+// part of zero mass adds nothing in pass 1 (the sum of masses starts at +0 and cannot become
+// −0), so pass 1 need not know which parts pass 2 leaves out. Storing the parts cost 104 bytes
+// per link written and read back, out of cache at 10^5–10^6 links (docs/benchmarks.md).
+template <typename MassAndCom, typename Part>
+CompositeInertia ComposeMassPropertiesOnDemand(std::size_t count, MassAndCom mass_and_com,
+                                               Part part) {
+  CompositeInertia result;
+  // Pass 1: total mass and the mass-weighted sum of the centers of mass.
+  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < count; ++k) {
+    double mass = 0;
+    Eigen::Vector3d p_RoPcm_R;
+    if (!mass_and_com(k, &mass, &p_RoPcm_R)) continue;
+    result.mass += mass;
+    if (mass != 0) weighted += mass * p_RoPcm_R;
+  }
+  if (result.mass != 0) result.p_RoScm_R = weighted / result.mass;
+  // Pass 2: each central inertia shifted away from its own center of mass to the composite one.
+  MassProperties props;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!part(k, &props)) continue;
+    result.I_SScm_R += props.I_SScm_F;
+    if (props.mass != 0) {
+      result.I_SScm_R += PointMassInertia(props.mass, props.p_FoScm_F - result.p_RoScm_R);
+    }
+  }
+  return result;
+}
+
+// The link's mass, and its center of mass p_BoBcm_B, exactly as LinkMassProperties gives them,
+// without computing the inertia.
+double LinkMassAndCom(const Link& link, Model::Format format, Eigen::Vector3d* p_BoBcm_B);
+
+// FindWeldedGroups(model) for a model whose tree is already known: parent_joint[i] and
+// parent_link[i] for each link i as FindWeldedGroups finds them (-1: none).
+std::vector<WeldedGroup> FindWeldedGroups(const Model& model, const std::vector<int>& parent_joint,
+                                          const std::vector<int>& parent_link);
+
+}  // namespace internal
 
 /// The pose X_WL of every link L in the root link frame W at the zero configuration, indexed like
 /// Model::links; `reachable[i]` is false (and the pose identity) for links not reachable from the
