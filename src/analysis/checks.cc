@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -309,11 +312,22 @@ class Checker {
   // joint (the first in file order, as FindWeldedGroups decides); total_mass_: the model's mass.
   void BuildJointTree() {
     children_.assign(model_.links.size(), {});
+    // Names hashed once (Model::FindLink and FindParentJoint search linearly: per joint, that
+    // would make a chain of n links cost n^2).
+    std::unordered_map<std::string_view, int> link_of;
+    link_of.reserve(model_.links.size());
+    for (std::size_t i = 0; i < model_.links.size(); ++i) {
+      link_of.emplace(model_.links[i].name, static_cast<int>(i));  // the first of a name
+    }
+    std::unordered_set<std::string_view> has_parent_joint;
+    has_parent_joint.reserve(model_.joints.size());
     for (std::size_t j = 0; j < model_.joints.size(); ++j) {
       const Joint& joint = model_.joints[j];
-      const int p = model_.FindLink(joint.parent), c = model_.FindLink(joint.child);
-      if (p < 0 || c < 0 || model_.FindParentJoint(joint.child) != static_cast<int>(j)) continue;
-      children_[p].emplace_back(c, static_cast<int>(j));
+      // The tree parent joint of a link is the first joint naming it as child.
+      if (!has_parent_joint.insert(joint.child).second) continue;
+      const auto p = link_of.find(joint.parent), c = link_of.find(joint.child);
+      if (p == link_of.end() || c == link_of.end()) continue;
+      children_[p->second].emplace_back(c->second, static_cast<int>(j));
     }
     total_mass_ = 0;
     for (const Link& link : model_.links) {
