@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "massprops/analysis/checks.h"
+#include "massprops/io/model_reader.h"
+
 namespace massprops::cli {
 
 /// `report` (mass, center of mass, inertia per link, welded group and model) and `merge-fixed`
@@ -26,5 +29,10 @@ void AddViewCommands(CLI::App& app, std::function<int()>* run);
 /// code (0 written; 2 a file could not be read, a bad configuration file, or a write error).
 int RunHtmlView(const std::vector<std::string>& files, const std::vector<std::string>& model_paths,
                 const std::vector<std::string>& package_paths);
+
+/// Prints the reader's findings (unresolved includes, unreadable inertials, ...) and read
+/// warnings to standard error as `check` prints them, so that nothing the reader skipped goes
+/// unsaid. Defined in src/tool/fix_command.cc.
+void PrintReaderFindings(const ReadResult& read, const CheckOptions& options);
 
 }  // namespace massprops::cli

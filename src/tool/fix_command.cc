@@ -75,20 +75,6 @@ std::string FileOfLink(const std::vector<Model>& models, const std::string& link
   return "";
 }
 
-// Prints the reader's findings (unresolved includes, unreadable inertials, ...) as `check` does,
-// so that nothing the reader skipped goes unsaid.
-void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
-  for (const Finding& f : ReaderFindings(read, options)) {
-    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
-              << f.message << " [" << f.rule << "]\n";
-  }
-  for (const ReadError& w : read.warnings) {  // as `check` prints them
-    std::cerr << w.location.file << ":" << w.location.line
-              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
-              << " [" << kReadWarningRule << "]\n";
-  }
-}
-
 // Rejects contradictory or out-of-range options before anything is read; prints the reason and
 // returns false when the command line is wrong.
 bool CheckFixArgs(const FixArgs& args) {
@@ -545,6 +531,18 @@ int RunFix(const FixArgs& args) {
 }
 
 }  // namespace
+
+void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
+  for (const Finding& f : ReaderFindings(read, options)) {
+    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
+              << f.message << " [" << f.rule << "]\n";
+  }
+  for (const ReadError& w : read.warnings) {  // as `check` prints them
+    std::cerr << w.location.file << ":" << w.location.line
+              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
+              << " [" << kReadWarningRule << "]\n";
+  }
+}
 
 void AddFixCommands(CLI::App& app, std::function<int()>* run) {
   auto args = std::make_shared<FixArgs>();

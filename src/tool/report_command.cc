@@ -222,15 +222,7 @@ void ReportFile(const std::string& file, const ReportArgs& args, const ReadOptio
                 std::vector<ModelMassReport>* reports, std::vector<MassReportError>* errors,
                 Target target, std::vector<json>* target_json) {
   const ReadResult read = ReadModelFile(file, read_options);
-  for (const Finding& f : ReaderFindings(read)) {
-    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
-              << f.message << " [" << f.rule << "]\n";
-  }
-  for (const ReadError& w : read.warnings) {  // as `check` prints them
-    std::cerr << w.location.file << ":" << w.location.line
-              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
-              << " [" << kReadWarningRule << "]\n";
-  }
+  PrintReaderFindings(read, CheckOptions{});
   for (const ReadError& e : read.errors) {
     errors->push_back({e.location.file, e.location.line,
                        e.element.empty() ? e.message : e.element + ": " + e.message});
