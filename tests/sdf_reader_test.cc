@@ -303,6 +303,29 @@ TEST(SdfReaderTest, WorldJointsJoinTheirModelsIntoOneModelWithScopedNames) {
   EXPECT_EQ(old.warnings[0].location.line, 2);
 }
 
+// SDFormat reserves the link name "world" (libsdformat 12: "The supplied link name [world] is
+// reserved.", e.g. bullet3's wsg50_one_motor_gripper_new_free_base.sdf). massprops reads such a
+// link like any other but says so, at the link's line, since a <parent>world</parent> then means
+// this link instead of the world frame.
+TEST(SdfReaderTest, ALinkNamedWorldIsAWarningAtItsLine) {
+  const ReadResult r = ReadSdfString(
+      "<sdf version='1.6'><model name='m'>\n"
+      "<link name='world'/>\n"
+      "<link name='base'/>\n"
+      "<joint name='j' type='fixed'><parent>world</parent><child>base</child></joint>"
+      "</model></sdf>",
+      "world_link.sdf", FixtureOptions());
+  ASSERT_TRUE(r.ok());
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0].location.line, 2);
+  EXPECT_NE(r.warnings[0].message.find("reserved"), std::string::npos);
+  // A link with another name says nothing.
+  const ReadResult plain =
+      ReadSdfString("<sdf version='1.6'><model name='m'><link name='base'/></model></sdf>",
+                    "plain.sdf", FixtureOptions());
+  EXPECT_TRUE(plain.warnings.empty());
+}
+
 TEST(SdfReaderTest, AnUnresolvedIncludeCostsOnlyWhatItNamesAndSaysHowToPointMasspropsAtIt) {
   const ReadResult r = ReadSdfFile(kDir + "/unresolved_include.sdf", FixtureOptions());
   ASSERT_TRUE(r.ok()) << r.errors.front().ToString();

@@ -1500,6 +1500,15 @@ void Reader::ReadModelLinks(ModelBuild* b, Model* model, SdfModelFrames* frames)
     Link link;
     link.name = LocalName(*b, i);
     link.location = nodes_[i].location;
+    if (nodes_[i].element != nullptr && Attr(nodes_[i].element, "name") == "world") {
+      // libsdformat: "The supplied link name [world] is reserved." (it refuses the file). Here
+      // the link is read like any other, so a joint whose <parent> is world hangs from it, where
+      // SDFormat means the world frame: say so (bullet3's wsg50 gripper, written for PyBullet).
+      Warning(nodes_[i].location.file, nodes_[i].element, "<link> 'world'",
+              "the name 'world' is reserved in SDFormat (libsdformat refuses the file); massprops "
+              "reads it as an ordinary link, so a joint whose <parent> is world hangs from this "
+              "link, not from the world frame: rename the link");
+    }
     ReadLinkContents(i, b->top, *X, &link);
     model->links.push_back(std::move(link));
   }
