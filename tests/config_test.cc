@@ -195,6 +195,17 @@ TEST(ConfigTest, FindConfigUpwardOfAMissingFolderStillLooksAboveIt) {
   EXPECT_EQ(fs::path(*found), dir.path() / kConfigFileName);
 }
 
+// The rule every command follows (docs/cli.md): the nearest file upward from the model's folder;
+// a model file's own name plays no part (a file named like a folder is not searched "inside").
+TEST(ConfigTest, FindConfigForAModelFileSearchesUpwardFromItsFolder) {
+  TempDir dir;
+  fs::create_directories(dir.path() / "robot" / "urdf");
+  WriteFile(dir.path() / "robot" / kConfigFileName, "");
+  const auto found = FindConfigFor((dir.path() / "robot" / "urdf" / "arm.urdf").string());
+  ASSERT_TRUE(found.has_value());
+  EXPECT_EQ(fs::path(*found), dir.path() / "robot" / kConfigFileName);
+}
+
 TEST(ConfigTest, ApplyConfigSetsToleranceAndReplacesOverridesOfTheSameRule) {
   CheckOptions options;
   options.overrides["units-suspect"] = Severity::kError;

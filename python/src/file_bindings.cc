@@ -317,12 +317,7 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
   std::optional<Config> loaded;
   try {
     if (py::isinstance<py::str>(config) && config.cast<std::string>() == "auto") {
-      const std::string dir = source.is_text ? "." : [&] {
-        const std::size_t slash = source.path.rfind('/');
-        return slash == std::string::npos ? std::string(".") : source.path.substr(0, slash + 1);
-      }();
-      std::optional<std::string> found = FindConfigUpward(dir);
-      if (!found) found = FindConfigUpward(".");
+      const std::optional<std::string> found = FindConfigFor(source.is_text ? "-" : source.path);
       if (found) loaded = LoadConfig(*found);
     } else if (!config.is_none()) {
       loaded = LoadConfig(py::str(py::module_::import("os").attr("fspath")(config)));

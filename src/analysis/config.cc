@@ -170,6 +170,13 @@ std::optional<std::string> FindConfigUpward(const std::string& dir) {
   }
 }
 
+std::optional<std::string> FindConfigFor(const std::string& model_file) {
+  const fs::path dir = model_file == "-" ? fs::path(".") : fs::path(model_file).parent_path();
+  std::optional<std::string> path = FindConfigUpward(dir.empty() ? "." : dir.string());
+  if (!path) path = FindConfigUpward(".");
+  return path;
+}
+
 void ApplyConfig(const Config& config, CheckOptions& options) {
   if (config.tolerance) options.tolerance = *config.tolerance;
   for (const auto& [rule, level] : config.overrides) options.overrides[rule] = level;

@@ -216,11 +216,10 @@ int ListRules(const CheckArgs& args) {
 // Per-folder configuration lookup, each file read once.
 class ConfigCache {
  public:
-  // The configuration that applies to a file in `dir`: the nearest .massprops.toml upward, else
-  // the one upward from the working directory; nullptr when there is none. Throws ConfigError.
-  const Config* ForDirectory(const fs::path& dir) {
-    std::optional<std::string> path = massprops::FindConfigUpward(dir.string());
-    if (!path) path = massprops::FindConfigUpward(".");
+  // The configuration that applies to `file` (massprops::FindConfigFor); nullptr when there is
+  // none. Throws ConfigError.
+  const Config* ForFile(const std::string& file) {
+    const std::optional<std::string> path = massprops::FindConfigFor(file);
     if (!path) return nullptr;
     auto it = configs_.find(*path);
     if (it == configs_.end()) it = configs_.emplace(*path, massprops::LoadConfig(*path)).first;
@@ -378,8 +377,7 @@ std::vector<Settings> LoadSettings(const CheckArgs& args, const CliOverrides& cl
   ConfigCache config_cache;
   std::vector<Settings> settings;
   for (const std::string& file : files) {
-    const fs::path dir = file == "-" ? fs::path(".") : fs::path(file).parent_path();
-    const Config* config = explicit_config ? &*explicit_config : config_cache.ForDirectory(dir);
+    const Config* config = explicit_config ? &*explicit_config : config_cache.ForFile(file);
     settings.push_back(SettingsFor(args, cli, config));
   }
   return settings;

@@ -29,10 +29,7 @@ std::string ReadTextForTarget(const std::string& path) {
 
 Target ResolveTarget(const std::string& cli_target, const std::string& file) {
   if (!cli_target.empty()) return *ParseTarget(cli_target);
-  namespace fs = std::filesystem;
-  const fs::path dir = file == "-" ? fs::path(".") : fs::path(file).parent_path();
-  std::optional<std::string> path = FindConfigUpward(dir.empty() ? "." : dir.string());
-  if (!path) path = FindConfigUpward(".");
+  const std::optional<std::string> path = FindConfigFor(file);
   if (!path) return Target::kGeneric;
   return LoadConfig(*path).target.value_or(Target::kGeneric);
 }

@@ -323,10 +323,7 @@ Settings SettingsFor(const ViewArgs& args, const std::string& file) {
   if (!args.config.empty()) {
     config = LoadConfig(args.config);
   } else {
-    const fs::path dir = file == "-" ? fs::path(".") : fs::path(file).parent_path();
-    std::optional<std::string> path = FindConfigUpward(dir.empty() ? "." : dir.string());
-    if (!path) path = FindConfigUpward(".");
-    if (path) config = LoadConfig(*path);
+    if (const std::optional<std::string> path = FindConfigFor(file)) config = LoadConfig(*path);
   }
   if (config) {
     ApplyConfig(*config, settings.options);

@@ -74,6 +74,12 @@ Config LoadConfig(const std::string& path);
 /// Cost: one stat per folder up to the root.
 std::optional<std::string> FindConfigUpward(const std::string& dir);
 
+/// The configuration file that applies to `model_file` (a path, or "-" for standard input), as
+/// every command finds it: the nearest `.massprops.toml` upward from the file's folder (the
+/// working directory for "-"), else the nearest upward from the working directory; nullopt when
+/// there is none. Never throws. Cost: two FindConfigUpward at most.
+std::optional<std::string> FindConfigFor(const std::string& model_file);
+
 /// Applies `config` to `options`: its tolerance, then its overrides (replacing those of the same
 /// rule).
 void ApplyConfig(const Config& config, CheckOptions& options);
