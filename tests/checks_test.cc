@@ -160,14 +160,59 @@ TEST(ChecksTest, UnitsSuspectNamesTheUnitMistakeThatFits) {
   EXPECT_NE(selected[0]->message.find("grams"), std::string::npos) << selected[0]->message;
   EXPECT_NE(selected[0]->message.find("0.00381882 m"), std::string::npos) << selected[0]->message;
   EXPECT_NE(selected[0]->message.find("0.212132 m"), std::string::npos) << selected[0]->message;
-  // The causes of a radius of gyration too small, the unit slip closed in its parentheses.
+  // The causes of a radius of gyration too small, with the evidence for each (issue 12: "never
+  // asserts one cause the numbers cannot tell apart"). Divided by 1000, the mass makes k/e
+  // 0.0180021·sqrt(1000) = 0.569275, inside 0.3..1; the inertia is that of a solid of this size
+  // (k = e/2 = 0.106066 m) weighing tr(I)/(2·k²) = 0.0583334/0.0225 = 2.5926 kg; the diagonal
+  // 0.0279167, 0.0279167, 0.0025 is not a typed-in round placeholder.
   const std::string& m = selected[0]->message;
-  EXPECT_NE(m.find("a placeholder inertia, a mass raised without its inertia (the inertia of the "
-                   "old mass), or a unit slip (the mass looks like grams (1000 too large): divide "
-                   "it by 1000)"),
+  EXPECT_NE(m.find("a unit slip (the mass looks like grams (1000 too large): divide it by 1000, "
+                   "which gives 0.569275 times the half-diagonal, in the expected range)"),
             std::string::npos)
       << m;
+  EXPECT_NE(m.find("a placeholder inertia (no sign of one"), std::string::npos) << m;
+  EXPECT_NE(
+      m.find("a mass raised without its inertia (possible whatever the numbers: this inertia "
+             "is that of a solid of this size weighing 2.5926 kg; the link's mass is 2000 kg)"),
+      std::string::npos)
+      << m;
+  EXPECT_NE(m.find("the numbers point to the unit slip"), std::string::npos) << m;
   EXPECT_EQ(std::count(m.begin(), m.end(), '('), std::count(m.begin(), m.end(), ')')) << m;
+}
+
+// 0.1 kg with the typed-in inertia 1, 1, 1 in a 5 cm cube: k = sqrt(3/0.2) = 3.87298 m, e =
+// 0.025·sqrt(3) = 0.0433013 m, k/e = 89.4427; kg·cm² (×1e-4 on I, /100 on k) gives 0.894427, in
+// range, and equal diagonal values are a placeholder's mark: both fit, so neither is asserted.
+TEST(ChecksTest, UnitsSuspectSaysWhenTheNumbersCannotTellTwoCausesApart) {
+  const auto selected =
+      Select(CheckModel(ReadFixture("units-suspect-placeholder")), "units-suspect");
+  ASSERT_EQ(selected.size(), 1u);
+  const std::string& m = selected[0]->message;
+  EXPECT_NE(m.find("multiply it by 1e-4, which gives 0.894427 times the half-diagonal, in the "
+                   "expected range"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("a placeholder inertia (the diagonal is 1, 1, 1 with no products)"),
+            std::string::npos)
+      << m;
+  // tr(I)/(2·(e/2)²) = 3/(2·0.00046875) = 3200 kg.
+  EXPECT_NE(m.find("weighing 3200 kg; the link's mass is 0.1 kg"), std::string::npos) << m;
+  EXPECT_NE(m.find("the numbers cannot tell the unit slip from the placeholder"), std::string::npos)
+      << m;
+}
+
+// 0.1 kg with diagonal 6.13, 6.13, 2.74 (tr 15) in a 5 cm cube: k = sqrt(15/0.2) = 8.66025 m, k/e
+// = 200; (k/(e/2))² = 1.6e5 is nearest kg·mm² (1e6), which gives 200/1000 = 0.2, out of range;
+// the values are not round: no cause is pointed to.
+TEST(ChecksTest, UnitsSuspectPointsToNoCauseWhenNoneHasEvidence) {
+  const auto selected = Select(CheckModel(ReadFixture("units-suspect-no-cause")), "units-suspect");
+  ASSERT_EQ(selected.size(), 1u);
+  const std::string& m = selected[0]->message;
+  EXPECT_NE(m.find("that gives 0.2 times the half-diagonal, still out of range: no unit slip fits"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("weighing 16000 kg"), std::string::npos) << m;  // 15 / (2·0.00046875)
+  EXPECT_NE(m.find("nothing in the numbers points to one cause"), std::string::npos) << m;
 }
 
 TEST(ChecksTest, OverridesChangeTheSeverityOrDisableARule) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -257,15 +258,31 @@ TEST(MassReportTest, EquivalentBoxIsAbsentWhenTheTriangleInequalityFails) {
 
 TEST(MassReportTest, FarShiftedTinyBodyReportsTheDigitsLost) {
   const ModelMassReport report = Report(ReadFixture("far_tiny.urdf"));
-  // m|c|² = 0.001·1000² = 1000; trace 3e-12: log10(1000/3e-12) = log10(3.33e14) ≈ 14.52.
+  // m|c|² = 0.01·1000² = 1e4; trace 3e-11: log10(1e4/3e-11) = log10(3.33e14) ≈ 14.52.
   const LinkMassReport* far = FindLinkEntry(report, "far");
-  EXPECT_NEAR(far->properties.digits_lost, std::log10(1000 / 3e-12), 1e-9);
+  EXPECT_NEAR(far->properties.digits_lost, std::log10(1e4 / 3e-11), 1e-9);
   EXPECT_EQ(FindLinkEntry(report, "base")->properties.digits_lost, 0);
   std::ostringstream text;
   WriteMassReport(text, MassReportFormat::kText, {report});
   EXPECT_NE(text.str().find("link 'far': about 14.5 significant digits lost"), std::string::npos)
       << text.str();
   EXPECT_NE(text.str().find("link 'base': no equivalent box"), std::string::npos);
+}
+
+// The note is for a body whose central inertia loses digits. A point mass (tr(I) = 0) has none to
+// lose, though the estimate is capped at all of them: log10(m|c|²/(eps·m|c|²)) = log10(1/eps) =
+// 15.65; a 0.5 g marker (a dummy mass, docs/rules.md) at 1 km loses log10(0.0005·1e6/3e-12) =
+// 14.22, but its inertia does not matter. Neither gets the note (issue 12: the note fired on mg
+// markers whose inertia is zero).
+TEST(MassReportTest, DigitsLostNoteLeavesOutPointMassesAndMarkers) {
+  const ModelMassReport report = Report(ReadFixture("far_point_and_marker.urdf"));
+  EXPECT_NEAR(FindLinkEntry(report, "point")->properties.digits_lost,
+              -std::log10(std::numeric_limits<double>::epsilon()), 1e-9);
+  EXPECT_NEAR(FindLinkEntry(report, "marker")->properties.digits_lost, std::log10(500 / 3e-12),
+              1e-9);
+  std::ostringstream text;
+  WriteMassReport(text, MassReportFormat::kText, {report});
+  EXPECT_EQ(text.str().find("digits lost"), std::string::npos) << text.str();
 }
 
 TEST(MassReportTest, OnlyReportsTheListedLinksAndTheirGroupsWithoutTotal) {

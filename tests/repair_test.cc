@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <optional>
 #include <random>
 #include <string>
@@ -210,6 +211,26 @@ TEST(PlanRepairsTest, InvalidInertiaIsProjectedAndTheFindingResolved) {
   for (const Finding& f : CheckModel(ApplyRepairs(model, repairs))) {
     EXPECT_NE(f.severity, Severity::kError) << f.message;
   }
+}
+
+// A number written with more digits than 6 keeps as many as it had, and no more (issue 12: "the
+// fewest significant digits (at least 6)"; before, such a number was written with all 17).
+// Moments (a, b, c) = (0.100000000001, 0.2, 0.5): the projection (repair.h) moves them by
+// (+t, +t, -t) until σ_3 = (a + b - c)/2 >= 1e-9·0.5,
+// so t = (c - a - b + 1e-9)/3 = 0.200000000999/3 = 0.0666666669996667 (hand-derived): a + t =
+// 0.1666666670006667, written with the 12 digits of 0.100000000001: 0.166666667001 (not
+// 0.16666666700066667); b + t and c - t with 6: 0.266667 and 0.433333.
+TEST(PlanRepairsTest, ARepairKeepsTheDigitsTheFileWroteAndNoMore) {
+  const Model model =
+      Read(ArmUrdf("<inertial><mass value=\"1\"/>"
+                   "<inertia ixx=\"0.100000000001\" ixy=\"0\" ixz=\"0\" iyy=\"0.2\" iyz=\"0\" "
+                   "izz=\"0.5\"/></inertial>\n",
+                   ""));
+  const std::optional<Repair> r = RepairOf(Plan(model), "arm");
+  ASSERT_TRUE(r.has_value());
+  EXPECT_EQ(r->after.ixx, 0.166666667001) << std::setprecision(17) << r->after.ixx;
+  EXPECT_EQ(r->after.iyy, 0.266667);
+  EXPECT_EQ(r->after.izz, 0.433333);
 }
 
 TEST(PlanRepairsTest, AnInvalidInertiaTheFileIgnoresIsLeftAlone) {

@@ -83,7 +83,7 @@ TEST(ReportCliTest, CsvHasAHeaderAndOneRowPerBody) {
 TEST(ReportCliTest, TextReportSaysHowManyDigitsTheFarTinyBodyLost) {
   const ToolRun run = RunTool("report " + Fixture("far_tiny.urdf"));
   ASSERT_EQ(run.exit_code, 0);
-  // log10(0.001·1000² / 3e-12) = 14.52 (mass_report_test.cc).
+  // log10(0.01·1000² / 3e-11) = 14.52 (mass_report_test.cc).
   EXPECT_NE(run.output.find("about 14.5 significant digits lost"), std::string::npos) << run.output;
 }
 

@@ -154,44 +154,106 @@ std::optional<GeometryBounds> BoundsOf(const Link& link, bool collision) {
   return bounds;
 }
 
-// Which unit mistake makes tr(I)/m off by `factor` (= (k / k_expected)²), by nearest power of ten.
-std::string GuessUnitError(double factor) {
-  struct Candidate {
-    double factor;
-    const char* text;
-  };
-  static const Candidate kCandidates[] = {
-      {1e6, "the inertia looks like kg·mm² (1e6 too large): multiply it by 1e-6"},
-      {1e4, "the inertia looks like kg·cm² (1e4 too large): multiply it by 1e-4"},
-      {1e-3, "the mass looks like grams (1000 too large): divide it by 1000"},
-      {1e-6, "the inertia looks 1e6 too small (converted from kg·mm² twice?)"},
-  };
-  const Candidate* best = &kCandidates[0];
-  for (const Candidate& c : kCandidates) {
+// A unit mistake and the factor by which it makes (k / k_expected)² too large.
+struct UnitSlip {
+  double factor;
+  const char* text;
+};
+constexpr UnitSlip kUnitSlips[] = {
+    {1e6, "the inertia looks like kg·mm² (1e6 too large): multiply it by 1e-6"},
+    {1e4, "the inertia looks like kg·cm² (1e4 too large): multiply it by 1e-4"},
+    {1e-3, "the mass looks like grams (1000 too large): divide it by 1000"},
+    {1e-6, "the inertia looks 1e6 too small (converted from kg·mm² twice?)"},
+};
+
+// The unit slip whose factor is nearest to `factor` (= (k / k_expected)²), by power of ten.
+const UnitSlip& NearestUnitSlip(double factor) {
+  const UnitSlip* best = &kUnitSlips[0];
+  for (const UnitSlip& c : kUnitSlips) {
     if (std::abs(std::log10(factor / c.factor)) < std::abs(std::log10(factor / best->factor))) {
       best = &c;
     }
   }
-  return best->text;
+  return *best;
 }
 
-// The causes that fit a radius of gyration `ratio` times the geometry's half-diagonal: the numbers
-// alone cannot tell a unit slip from a placeholder, an edited mass or stabilisation values.
-std::string Causes(double ratio) {
-  const double factor = ratio * ratio / 0.25;  // (k / k_expected)², k_expected = half-diagonal / 2
-  std::string text = "the causes that fit: ";
-  if (ratio > 1) {
-    text +=
-        "an inertia raised on purpose (to stabilise a simulation) or copied from a bigger "
-        "part, a mass lowered without its inertia, a placeholder inertia, or a unit slip (" +
-        GuessUnitError(factor) + ")";
-  } else {
-    text +=
-        "a placeholder inertia, a mass raised without its inertia (the inertia of the old "
-        "mass), or a unit slip (" +
-        GuessUnitError(factor) + ")";
+// A number a person types in: one significant digit (1, 0.01, 5e-4), to 1e-9 relative.
+bool IsRoundNumber(double x) {
+  if (!(x > 0) || !std::isfinite(x)) return false;
+  const double mantissa = x / std::pow(10.0, std::floor(std::log10(x)));
+  return std::abs(mantissa - std::round(mantissa)) <= 1e-9 * mantissa;
+}
+
+// The mark of a typed-in placeholder inertia: no products and a diagonal of equal or round values
+// (1, 1, 1; 0.001, 0.001, 0.001; 0.01, 0.02, 0.01). Returns the evidence, or "" when absent.
+std::string PlaceholderPattern(const Eigen::Matrix3d& I) {
+  if (I(0, 1) != 0 || I(0, 2) != 0 || I(1, 2) != 0) return "";
+  const Eigen::Vector3d d = I.diagonal();
+  const std::string diagonal = Num(d(0)) + ", " + Num(d(1)) + ", " + Num(d(2));
+  if (d(0) == d(1) && d(1) == d(2)) return "the diagonal is " + diagonal + " with no products";
+  if (IsRoundNumber(d(0)) && IsRoundNumber(d(1)) && IsRoundNumber(d(2))) {
+    return "the diagonal is the round numbers " + diagonal + " with no products";
   }
-  return text;
+  return "";
+}
+
+// The close of a causes list: which of the two causes the numbers can show points where.
+std::string Verdict(bool slip_fits, bool placeholder) {
+  if (slip_fits && placeholder)
+    return "; the numbers cannot tell the unit slip from the placeholder";
+  if (slip_fits) return "; the numbers point to the unit slip";
+  if (placeholder) return "; the numbers point to the placeholder";
+  return "; nothing in the numbers points to one cause";
+}
+
+// The causes that fit a radius of gyration k (inertia I, mass m) that is `ratio` times the
+// geometry's half-diagonal `extent`, with the evidence the numbers give for each. The numbers can
+// point to a unit slip (one unit factor brings k/extent into the expected 0.3 to 1) and to a
+// placeholder (typed-in values); they cannot confirm a mass edited without its inertia or values
+// raised on purpose (always possible, so listed with what they would imply), and where two causes
+// have evidence the message says that the numbers cannot tell them apart.
+std::string Causes(const Eigen::Matrix3d& I, double m, double ratio, double extent) {
+  const double k_expected = 0.5 * extent;  // a solid body filling its box: k ≈ 0.45–0.58·extent
+  const double factor = ratio * ratio / 0.25;
+  const UnitSlip& slip = NearestUnitSlip(factor);
+  const double fixed_ratio = ratio / std::sqrt(slip.factor);
+  const bool slip_fits = fixed_ratio >= 0.3 && fixed_ratio <= 1;
+  const std::string placeholder = PlaceholderPattern(I);
+  // The mass a solid of this size would need to carry this inertia: tr(I) = 2·m'·k_expected².
+  const double fitting_mass = I.trace() / (2 * k_expected * k_expected);
+  std::string text =
+      "the causes that fit, and what the numbers say of each: a unit slip (" +
+      std::string(slip.text) + (slip_fits ? ", which gives " : "; that gives ") + Num(fixed_ratio) +
+      " times the half-diagonal" +
+      (slip_fits ? ", in the expected range" : ", still out of range: no unit slip fits") +
+      "); a placeholder inertia (" +
+      (placeholder.empty() ? "no sign of one: the values are not typed-in round numbers"
+                           : placeholder) +
+      "); " +
+      (ratio > 1 ? "a mass lowered without its inertia, or an inertia raised on purpose "
+                   "(to stabilise a simulation) or copied from a bigger part"
+                 : "a mass raised without its inertia") +
+      " (possible whatever the numbers: this inertia is that of a solid of this size "
+      "weighing " +
+      Num(fitting_mass) + " kg; the link's mass is " + Num(m) + " kg)";
+  return text + Verdict(slip_fits, !placeholder.empty());
+}
+
+// The causes that fit a radius of gyration k beyond kMaxGyrationRadiusWithoutGeometry on a link
+// with no geometry of known size (inertia I): with no size to compare, a unit slip is judged by
+// whether kg·mm² read as kg·m² brings k under a metre.
+std::string CausesWithoutGeometry(const Eigen::Matrix3d& I, double k) {
+  const std::string placeholder = PlaceholderPattern(I);
+  const bool slip_fits = k / 1000 <= 1;
+  std::string text =
+      "the causes that fit, and what the numbers say of each: a unit slip (an "
+      "inertia in kg·mm² would make it " +
+      Num(k / 1000) + " m" + (slip_fits ? ", a body's size" : ", still too large") +
+      "); a placeholder inertia (" +
+      (placeholder.empty() ? "no sign of one: the values are not typed-in round numbers"
+                           : placeholder) +
+      "); an inertia raised on purpose (possible whatever the numbers)";
+  return text + Verdict(slip_fits, !placeholder.empty());
 }
 
 // A mesh 1000 times too large (an STL in millimetres referenced without scale="0.001 ...") makes
@@ -617,9 +679,8 @@ class Checker {
       Emit(kUnitsSuspect, link, InertiaLocation(link),
            judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
                Num(kMaxGyrationRadiusWithoutGeometry) +
-               " m (the link has no geometry of known size): the inertia looks like kg·mm² "
-               "(1e6 too large), which would make it " +
-               Num(k / 1000) + " m",
+               " m (the link has no geometry of known size): " +
+               CausesWithoutGeometry(judged.I_written, k),
            {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
       return true;
     }
@@ -634,8 +695,8 @@ class Checker {
     Emit(kUnitsSuspect, link, InertiaLocation(link),
          judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
              " times the half-diagonal " + Num(extent) + " m of its " + judged.geometry_name +
-             " geometry (expected " + "about 0.3 to 1): " + Causes(ratio) +
-             MeshScaleHint(*judged.bounds, ratio),
+             " geometry (expected " + "about 0.3 to 1): " +
+             Causes(judged.I_written, m, ratio, extent) + MeshScaleHint(*judged.bounds, ratio),
          {{"radius_of_gyration", k},
           {"geometry_half_diagonal", extent},
           {"ratio", ratio},

@@ -227,11 +227,15 @@ double RoundToDigits(double x, int digits) {
 // to `digits` significant digits; numbers the repair keeps stay exactly as written, and so does
 // the precision of a number that was written with more digits.
 void RoundChanged(const std::optional<Inertial>& before, int digits, Inertial* after) {
-  // A number written with more digits than `digits` keeps them (a negation or a rescaling does not
-  // throw away the file's precision).
+  // A number written with more digits than `digits` is written with as many as it had (a negation
+  // or a rescaling does not throw away the file's precision, nor adds digits it never had).
   auto round = [&](double old_value, double* x) {
-    if (before && (old_value == *x || RoundToDigits(old_value, digits) != old_value)) return;
-    *x = RoundToDigits(*x, digits);
+    if (before && old_value == *x) return;
+    int precision = digits;
+    if (before) {
+      while (precision < 17 && RoundToDigits(old_value, precision) != old_value) ++precision;
+    }
+    *x = RoundToDigits(*x, precision);
   };
   const Inertial b = before ? *before : Inertial{};
   round(b.mass, &after->mass);
@@ -244,7 +248,15 @@ void RoundChanged(const std::optional<Inertial>& before, int digits, Inertial* a
   round(b.iyz, &after->iyz);
 }
 
+// A number written into the file: the shortest decimal that reads back to the same double.
 std::string Num(double x) { return FormatShortest(x); }
+
+// A number in a sentence of the why text: 6 significant digits, enough to recognise it.
+std::string Short(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.6g", x);
+  return buffer;
+}
 
 std::string Percent(double x) {
   char buffer[64];
@@ -410,16 +422,16 @@ class Planner {
     if (use_mass) {
       plan->methods.push_back("from-geometry");
       plan->whys.push_back("the inertia (and center of mass) of the link's " + adjective + what +
-                           " geometry, solid and uniform, with the link's mass " + Num(mass) +
+                           " geometry, solid and uniform, with the link's mass " + Short(mass) +
                            " kg");
     } else {
       plan->methods.push_back("from-geometry-density");
-      std::string reason = rule == "massless-moving-body"
-                               ? "the link moves but its body has no mass"
-                           : !link.inertial ? "the link has " + what + " geometry but no <inertial>"
-                                            : "the mass " + Num(mass) + " is not a positive number";
-      plan->whys.push_back(reason + ": mass = density " + Num(options_.density) +
-                           " kg/m³ × volume " + Num(g->volume) + " m³ = " + Num(g->mass) +
+      std::string reason =
+          rule == "massless-moving-body" ? "the link moves but its body has no mass"
+          : !link.inertial               ? "the link has " + what + " geometry but no <inertial>"
+                                         : "the mass " + Short(mass) + " is not a positive number";
+      plan->whys.push_back(reason + ": mass = density " + Short(options_.density) +
+                           " kg/m³ × volume " + Short(g->volume) + " m³ = " + Short(g->mass) +
                            " kg, with the inertia and center of mass of its " + adjective + what +
                            " geometry (solid, uniform)");
     }
@@ -483,13 +495,13 @@ class Planner {
     }
     if (chosen == nullptr) {
       const double k = std::sqrt(trace / (2 * w.mass));
-      std::string why = "inertia trace " + Num(trace) + " kg·m² on a " + Num(w.mass) +
-                        " kg body: radius of gyration " + Num(k) + " m";
+      std::string why = "inertia trace " + Short(trace) + " kg·m² on a " + Short(w.mass) +
+                        " kg body: radius of gyration " + Short(k) + " m";
       if (extent > 0 && plausible.size() > 1) {
-        why += "; more than one unit factor fits the geometry (half-diagonal " + Num(extent) +
+        why += "; more than one unit factor fits the geometry (half-diagonal " + Short(extent) +
                " m), so which one is a guess (--fix-units takes the nearest)";
       } else if (extent > 0) {
-        why += " against a geometry half-diagonal of " + Num(extent) +
+        why += " against a geometry half-diagonal of " + Short(extent) +
                " m; no unit factor (inertia ×1e-6, ×1e-4, ×1e6, mass ÷1000) makes it fit";
       } else {
         why += "; the link has no geometry to tell which unit factor, if any, fits";
@@ -519,7 +531,7 @@ class Planner {
     SetMatrix(R.transpose() * I_shifted * R, &w);
     Note(plan, "inertia-about-origin-suspect", "shift-to-com",
          "the numbers were the inertia about the link origin: shifted to the center of mass " +
-             std::string("(") + Num(c.x()) + ", " + Num(c.y()) + ", " + Num(c.z()) +
+             std::string("(") + Short(c.x()) + ", " + Short(c.y()) + ", " + Short(c.z()) +
              ") by subtracting m·(|c|²·1 − c·cᵀ)");
   }
 
@@ -571,8 +583,8 @@ class Planner {
     if (w.mass > 0 && k < kMinRadiusOfGyration) {
       refused.push_back(
           {"inertia-not-physical", link.name, link.location.line,
-           "inertia of trace " + Num(I.trace()) + " kg·m² on a " + Num(w.mass) +
-               " kg body: radius of gyration " + Num(k) +
+           "inertia of trace " + Short(I.trace()) + " kg·m² on a " + Short(w.mass) +
+               " kg body: radius of gyration " + Short(k) +
                " m; a units or placeholder mistake, not a rounding error — not repaired; "
                "give the link the inertia of its body (its CAD model, or `fix --from-geometry "
                "LINK`)"});
@@ -585,9 +597,9 @@ class Planner {
     const Eigen::Vector3d after = internal::ScaledPrincipalMoments(
         repaired(0, 0), repaired(1, 1), repaired(2, 2), repaired(1, 0), repaired(2, 0),
         repaired(2, 1), PrincipalSolver::kAccurate);
-    const std::string moments = "principal moments " + Num(before(0)) + ", " + Num(before(1)) +
-                                ", " + Num(before(2)) + " → " + Num(after(0)) + ", " +
-                                Num(after(1)) + ", " + Num(after(2));
+    const std::string moments = "principal moments " + Short(before(0)) + ", " + Short(before(1)) +
+                                ", " + Short(before(2)) + " → " + Short(after(0)) + ", " +
+                                Short(after(1)) + ", " + Short(after(2));
     if (options_.method == InertiaRepairMethod::kBalance) {
       Note(plan, "inertia-not-physical", "balance",
            "no mass distribution has this inertia: all three principal moments set to their mean "

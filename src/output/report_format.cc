@@ -278,7 +278,10 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
                         "': no equivalent box: the principal moments violate the triangle "
                         "inequality (or are not finite)");
       }
-      if (p.digits_lost > threshold) {
+      // Not for a point mass (tr(I) = 0: no central inertia to lose digits of) nor a dummy mass
+      // of 1 g or less (a marker: its inertia does not matter; the same bound as the geometry
+      // rules' dummy masses, docs/rules.md).
+      if (p.digits_lost > threshold && I.trace() > 0 && p.mass > 1e-3) {
         notes.push_back(e.kind + " '" + e.name + "': about " + Number(p.digits_lost, 3) +
                         " significant digits lost to cancellation by the shift between the "
                         "origin of frame '" +
