@@ -459,9 +459,9 @@ class Planner {
       const char* text;
     };
     static const Candidate kCandidates[] = {
-        {1e-6, 1, "the inertia was in kg·mm²: multiplied by 1e-6"},
-        {1e-4, 1, "the inertia was in kg·cm²: multiplied by 1e-4"},
-        {1, 1e-3, "the mass was in grams: divided by 1000"},
+        {1e-6, 1, "the inertia taken as kg·mm²: multiplied by 1e-6"},
+        {1e-4, 1, "the inertia taken as kg·cm²: multiplied by 1e-4"},
+        {1, 1e-3, "the mass taken as grams: divided by 1000"},
         {1e6, 1, "the inertia was 1e6 too small: multiplied by 1e6"},
     };
     // A solid body inside its geometry has k between about 0.3 and 0.6 of the half-diagonal e; a
@@ -516,7 +516,9 @@ class Planner {
     w.mass *= chosen->mass_factor;
     SetMatrix(I * chosen->inertia_factor, &w);
     Note(plan, "units-suspect", "rescale-units",
-         std::string("the radius of gyration was out of proportion with the geometry; ") +
+         std::string(
+             "the radius of gyration was out of proportion with the geometry and this is the one "
+             "unit factor that makes the link fit it (asked for by --apply units-suspect); ") +
              chosen->text);
   }
 
