@@ -215,6 +215,71 @@ TEST(ChecksTest, UnitsSuspectPointsToNoCauseWhenNoneHasEvidence) {
   EXPECT_NE(m.find("nothing in the numbers points to one cause"), std::string::npos) << m;
 }
 
+// A link the ratio test cannot judge (placeholder geometry, a dummy mass) is still reported when
+// its typed-in inertia matters. Hand-derived: the palm (0.5 kg box, 0.1 m) has I = 0.5·0.02/12 =
+// 0.000833333 per axis, trace 0.002499999; the accelerometer (1 g, I = 1e-3 per axis, trace
+// 0.003) sits at the palm's center of mass, so the group's central trace is 0.005499999 and the
+// share 0.003/0.0055 = 54.5%; k = sqrt(0.003/(2·0.001)) = 1.22474 m.
+TEST(ChecksTest, MadeUpInertiaOnALinkWithNothingToJudgeItByIsReportedWhenItMatters) {
+  const auto made_up = Select(CheckModel(ReadFixture("units-suspect-made-up")), "units-suspect");
+  ASSERT_EQ(made_up.size(), 1u);
+  EXPECT_EQ(made_up[0]->link, "accelerometer");
+  const std::string& m = made_up[0]->message;
+  EXPECT_NE(m.find("its geometry is a placeholder (half-diagonal 0.000866025 m)"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("54.5% of its welded group's (trace 0.003 of 0.0055 kg·m²"), std::string::npos)
+      << m;
+  EXPECT_NE(m.find("radius of gyration 1.22474 m"), std::string::npos) << m;
+  // 1e-5 per axis: 3e-5 of 0.00253 = 1.2% (below 5%): a marker that does not matter.
+  EXPECT_TRUE(
+      Select(CheckModel(ReadFixture("units-suspect-made-up-small")), "units-suspect").empty());
+  // Unequal moments 1e-3, 1e-5, 1e-3 (40% of the group): a thought-out inertia, not a blanket
+  // placeholder; nothing to judge it by, so nothing said.
+  EXPECT_TRUE(Select(CheckModel(ReadFixture("units-suspect-made-up-anisotropic")), "units-suspect")
+                  .empty());
+}
+
+// A static SDF model never moves: k = sqrt(0.063/12) = 0.0724569 m against the half-diagonal
+// 0.5·sqrt(5.1² + 0.2² + 0.1²) = 2.55245 m is 0.0284 (< 1/30) and is reported only when the
+// model is not static.
+TEST(ChecksTest, HeuristicsSayNothingAboutAStaticModel) {
+  for (const bool is_static : {true, false}) {
+    const std::string path =
+        kCheckDir + "units-suspect-static-" + (is_static ? "true" : "false") + ".sdf";
+    const ReadResult read = ReadSdfFile(path);
+    ASSERT_TRUE(read.ok()) << path;
+    ASSERT_EQ(read.models.size(), 1u);
+    EXPECT_EQ(read.models[0].is_static, is_static);
+    const auto found = Select(CheckModel(read.models[0]), "units-suspect");
+    EXPECT_EQ(found.size(), is_static ? 0u : 1u) << path;
+    if (!found.empty()) {
+      EXPECT_NE(
+          found[0]->message.find("0.0724569 m is 0.0283872 times the half-diagonal 2.55245 m"),
+          std::string::npos)
+          << found[0]->message;
+    }
+  }
+}
+
+// Too small is judged against the smaller of the collision and the visual geometry: k =
+// sqrt(9/6) = 1.22474 m against the visual sphere r 1.2 (half-diagonal 1.2·sqrt(3) = 2.07846 m:
+// 0.589) fits; with a visual sphere of r 22 (half-diagonal 38.1051 m: 0.0321 < 1/30) it does not.
+TEST(ChecksTest, TooSmallIsJudgedAgainstTheSmallerGeometry) {
+  EXPECT_TRUE(
+      Select(CheckModel(ReadFixture("units-suspect-two-geometries")), "units-suspect").empty());
+  std::ifstream in(kCheckDir + "units-suspect-two-geometries.urdf");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xml = text.str();
+  const std::string visual = "<sphere radius=\"1.2\"/>";
+  ASSERT_NE(xml.find(visual), std::string::npos);
+  xml.replace(xml.find(visual), visual.size(), "<sphere radius=\"22\"/>");
+  const ReadResult read = ReadUrdfString(xml, "two-geometries.urdf");
+  ASSERT_TRUE(read.ok());
+  EXPECT_EQ(Select(CheckModel(read.models[0]), "units-suspect").size(), 1u);
+}
+
 TEST(ChecksTest, OverridesChangeTheSeverityOrDisableARule) {
   const Model model = ReadFixture("inertia-not-physical");
   CheckOptions options;

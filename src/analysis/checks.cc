@@ -64,6 +64,10 @@ constexpr double kDummyMass = 1e-3;                 // kg
 // Where part of a welded group's geometry is a mesh of unknown size, the known geometry may cover
 // only part of the body: the geometry rules allow it to reach this many times farther.
 constexpr double kPartialGeometryMargin = 3;
+// A typed-in inertia on a link with nothing to judge it by matters when it is at least this share
+// of its welded group's central inertia (an error of 5% in a body's inertia is about what careful
+// identification achieves, so more than that changes what a controller sees).
+constexpr double kMadeUpInertiaShare = 0.05;
 
 // massless-moving-body: a joint's generalized coordinate has zero inertia (the mass matrix is
 // singular) when the inertia that its outboard bodies put on it is at most this fraction of its
@@ -152,6 +156,22 @@ std::optional<GeometryBounds> BoundsOf(const Link& link, bool collision) {
   }
   if (bounds.count == 0) return std::nullopt;
   return bounds;
+}
+
+// The half-diagonal that "too small" is judged against: the smaller of the link's collision and
+// visual geometry when both are known primitives larger than a placeholder (either may be the
+// body: gz-sim's entity_semantics.sdf has a 23.4 m collision sphere around a 1.2 m visual one);
+// else that of `bounds`.
+double SmallestGeometryExtent(const Link& link, const GeometryBounds& bounds) {
+  double extent = 0.5 * bounds.box_B.diagonal().norm();
+  const std::optional<GeometryBounds> collision = BoundsOf(link, /*collision=*/true);
+  const std::optional<GeometryBounds> visual = BoundsOf(link, /*collision=*/false);
+  if (!collision || !visual) return extent;
+  for (const GeometryBounds* b : {&*collision, &*visual}) {
+    const double e = 0.5 * b->box_B.diagonal().norm();
+    if (e >= kPlaceholderHalfDiagonal) extent = std::min(extent, e);
+  }
+  return extent;
 }
 
 // A unit mistake and the factor by which it makes (k / k_expected)² too large.
@@ -492,6 +512,12 @@ class Checker {
     std::optional<LinkShape> shape;
     // Its own geometry's extent; none for placeholder geometry and dummy masses.
     std::optional<GeometryBounds> bounds;
+    // Why bounds is empty although the link has geometry: "placeholder geometry (...)" or
+    // "a dummy mass (...)"; empty otherwise.
+    std::string unjudged_because;
+    // Too small is judged against the smaller of the collision and the visual geometry when both
+    // are known primitives of a real size (either may describe the body): its half-diagonal.
+    double smallest_extent = 0;
     // The extent its inertia and center of mass must fit: its own, or its welded group's.
     std::optional<GeometryBounds> group_bounds;
     std::string geometry_name;  // "collision", "visual mesh", ...
@@ -508,9 +534,12 @@ class Checker {
     const double m = link.inertial->mass;
     if (!(m > 0) || !std::isfinite(m)) return;
 
+    // A static SDF model never moves: the simulator never uses its mass properties, so the
+    // heuristics (what a simulation would get wrong) have nothing to say (gz-sim's conveyor.sdf).
+    if (model_.is_static) return;
     const JudgedLink judged = JudgeAgainstGeometry(link_index, who, valid);
     CheckProductsSignAgainstGeometry(judged);
-    const bool units_flagged = CheckUnits(judged);
+    const bool units_flagged = CheckUnits(judged) || CheckMadeUpInertia(judged);
     if (!judged.group_bounds) return;
     if (valid && !units_flagged) CheckInertiaFitsGeometry(judged);
     CheckComInsideGeometry(judged);
@@ -616,9 +645,17 @@ class Checker {
     bounds = CalcLinkGeometryBounds(link, judged.shape);
     // Placeholder geometry and dummy masses: nothing to judge by (see kPlaceholderHalfDiagonal).
     if (bounds && 0.5 * bounds->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
+      judged.unjudged_because = "its geometry is a placeholder (half-diagonal " +
+                                Num(0.5 * bounds->box_B.diagonal().norm()) + " m)";
       bounds.reset();
     }
-    if (link.inertial->mass <= kDummyMass) bounds.reset();
+    if (link.inertial->mass <= kDummyMass) {
+      if (judged.unjudged_because.empty()) {
+        judged.unjudged_because = "its mass " + Num(link.inertial->mass) + " kg is a dummy's";
+      }
+      bounds.reset();
+    }
+    if (bounds) judged.smallest_extent = SmallestGeometryExtent(link, *bounds);
     // A mass lumped onto one link of a welded group shows as a center of mass outside the link's
     // own geometry: such a link is judged against the geometry of the whole group (in this link's
     // frame); any other link against its own (collision and visual).
@@ -688,9 +725,11 @@ class Checker {
     if (!(extent > 0)) return false;
     const double ratio = k / extent;
     const double group_extent = 0.5 * judged.group_bounds->box_B.diagonal().norm();
-    // Too large only against the whole group's known geometry; too small against the link.
+    // Too large only against the whole group's known geometry; too small against the link's
+    // smaller geometry set (collision or visual, whichever is smaller, when both are known).
     const bool too_large = ratio > kUnitsRatio && k / group_extent > kUnitsRatio;
-    if (!(too_large || ratio < 1 / kUnitsRatio)) return false;
+    const bool too_small = k / judged.smallest_extent < 1 / kUnitsRatio;
+    if (!(too_large || too_small)) return false;
     // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
     Emit(kUnitsSuspect, link, InertiaLocation(link),
          judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
@@ -702,6 +741,42 @@ class Checker {
           {"ratio", ratio},
           {"mass", m},
           {"trace", trace}});
+    return true;
+  }
+
+  // units-suspect for a link the ratio test cannot judge (placeholder geometry, a dummy mass):
+  // such links are left alone because they do not matter, which holds only if their inertia does
+  // not either. Flags a typed-in isotropic inertia (PlaceholderPattern) that is at least
+  // kMadeUpInertiaShare of its welded group's central inertia (the group has other members with
+  // mass): numbers no body backs that change the group's dynamics (pr2's 1 g accelerometers with
+  // I = 1e-3 kg·m², 8% of the gripper palm group; 0.1 kg cameras with I = 0.01 kg·m²).
+  bool CheckMadeUpInertia(const JudgedLink& judged) {
+    if (judged.bounds || judged.unjudged_because.empty()) return false;
+    // Only a blanket placeholder: equal moments and no products (1e-3, 1e-3, 1e-3). Unequal round
+    // values show a thought-out inertia (pr2's laser_tilt_link, 1e-4, 1e-6, 1e-4: its scanner's).
+    const Eigen::Matrix3d& I = judged.I_written;
+    if (!(I(0, 0) == I(1, 1) && I(1, 1) == I(2, 2))) return false;
+    const std::string pattern = PlaceholderPattern(I);
+    if (pattern.empty()) return false;
+    const Link& link = *judged.link;
+    const WeldedGroup& group = groups_[group_of_[judged.index]];
+    if (group.links.size() < 2) return false;
+    const CompositeInertia composite = CalcCompositeInertia(model_, group);
+    const double own = judged.props.I_SScm_F.trace();
+    const double total = composite.I_SScm_R.trace();
+    if (!(composite.mass > link.inertial->mass) || !(total > 0)) return false;
+    const double share = own / total;
+    if (!(share >= kMadeUpInertiaShare)) return false;
+    const double m = link.inertial->mass;
+    const double k = std::sqrt(own / (2 * m));
+    Emit(kUnitsSuspect, link, InertiaLocation(link),
+         judged.who + ": " + judged.unjudged_because + " and " + pattern +
+             ", yet this inertia is " + Format("%.3g%%", 100 * share) +
+             " of its welded group's (trace " + Num(own) + " of " + Num(total) +
+             " kg·m² about the group's center of mass; radius of gyration " + Num(k) +
+             " m): typed-in numbers that no body backs change the group's dynamics; give the "
+             "link the inertia of its part (or zero, if it is only a frame)",
+         {{"radius_of_gyration", k}, {"mass", m}, {"trace", own}, {"group_share", share}});
     return true;
   }
 
