@@ -71,10 +71,10 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
-  // 13 rules of CheckModel + 4 rules whose findings the readers make (ReadResult::findings,
+  // 14 rules of CheckModel + 4 rules whose findings the readers make (ReadResult::findings,
   // inertial-auto from the SDF reader) + 9 target-profile rules (target_profile.h, reported only
   // with --target) + 2 geometry rules (geometry_checks.h), off unless --geometry.
-  EXPECT_EQ(ids.size(), 19u + TargetRules().size());
+  EXPECT_EQ(ids.size(), 20u + TargetRules().size());
   EXPECT_EQ(TargetRules().size(), 9u);
   EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);
@@ -228,9 +228,8 @@ TEST(ChecksTest, MadeUpInertiaOnALinkWithNothingToJudgeItByIsReportedWhenItMatte
   EXPECT_NE(m.find("its geometry is a placeholder (half-diagonal 0.000866025 m)"),
             std::string::npos)
       << m;
-  EXPECT_NE(m.find("54.5% of its welded group's (trace 0.003 of 0.0055 kg·m²"), std::string::npos)
-      << m;
-  EXPECT_NE(m.find("radius of gyration 1.22474 m"), std::string::npos) << m;
+  EXPECT_NE(m.find("54.5% of the group's (trace 0.003 of 0.0055 kg·m²"), std::string::npos) << m;
+  EXPECT_NE(m.find("this link's radius of gyration 1.22474 m"), std::string::npos) << m;
   // 1e-5 per axis: 3e-5 of 0.00253 = 1.2% (below 5%): a marker that does not matter.
   EXPECT_TRUE(
       Select(CheckModel(ReadFixture("units-suspect-made-up-small")), "units-suspect").empty());
@@ -278,6 +277,59 @@ TEST(ChecksTest, TooSmallIsJudgedAgainstTheSmallerGeometry) {
   const ReadResult read = ReadUrdfString(xml, "two-geometries.urdf");
   ASSERT_TRUE(read.ok());
   EXPECT_EQ(Select(CheckModel(read.models[0]), "units-suspect").size(), 1u);
+}
+
+// An SDF model none of whose links has an <inertial> gets one note, not inertial-missing on every
+// link (issue 12: the per-link warnings fired on sdformat's and gz-sim's frame test models); with
+// one <inertial> in the model, the link that lacks one is a warning again.
+TEST(ChecksTest, AnSdfModelWithoutAnyInertialGetsOneNote) {
+  for (const bool ok : {false, true}) {
+    const std::string path = kCheckDir + "model-without-inertials" + (ok ? "-ok" : "") + ".sdf";
+    const ReadResult read = ReadSdfFile(path);
+    ASSERT_TRUE(read.ok()) << path;
+    const std::vector<Finding> findings = CheckModel(read.models[0]);
+    const auto note = Select(findings, "model-without-inertials");
+    const auto missing = Select(findings, "inertial-missing");
+    EXPECT_EQ(note.size(), ok ? 0u : 1u) << Dump(findings);
+    EXPECT_EQ(missing.size(), ok ? 1u : 0u) << Dump(findings);
+    if (!note.empty()) {
+      EXPECT_EQ(note[0]->severity, Severity::kNote);
+      EXPECT_EQ(note[0]->link, "L1");
+      EXPECT_NE(note[0]->message.find("each of its 2 link(s)"), std::string::npos);
+    }
+    if (!missing.empty()) {
+      EXPECT_EQ(missing[0]->link, "L2");
+    }
+  }
+}
+
+// Made-up inertias add up: two 1 g frames with I = 4e-5 per axis (trace 1.2e-4 each) at the
+// 0.5 kg palm's center of mass (trace 0.0025): each alone is 1.2e-4/0.00274 = 4.4% (< 5%), both
+// 2.4e-4/0.00274 = 8.76% of the group's central trace, so both are reported.
+TEST(ChecksTest, MadeUpInertiasOfAWeldedGroupAreJudgedTogether) {
+  const auto found = Select(CheckModel(ReadFixture("units-suspect-made-up-two")), "units-suspect");
+  ASSERT_EQ(found.size(), 2u);
+  for (const Finding* f : found) {
+    EXPECT_NE(f->message.find("with that of 1 other such link of its welded group is 8.76% of the "
+                              "group's (trace 0.00024 of 0.00274 kg·m²"),
+              std::string::npos)
+        << f->message;
+  }
+}
+
+// A 1 cm visual-only box marks a frame; it does not bound the body (Cassie's motor rotors): the
+// 0.27228 kg rotor with tr(I)/2 = 0.000332378 kg·m² exceeds m·(2·0.00866)² = 8.1684e-05 (the
+// margin of 2 for a collision box) but not m·(6·0.00866)² = 7.35e-4 (the partial margin, 2 × 3).
+TEST(ChecksTest, AVisualMarkerDoesNotBoundTheBody) {
+  EXPECT_TRUE(Select(CheckModel(ReadFixture("inertia-exceeds-geometry-marker-visual")),
+                     "inertia-exceeds-geometry")
+                  .empty());
+  const auto found = Select(CheckModel(ReadFixture("inertia-exceeds-geometry-marker-collision")),
+                            "inertia-exceeds-geometry");
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NE(found[0]->message.find("0.000332378 kg·m² exceeds m·r² = 8.1684e-05"),
+            std::string::npos)
+      << found[0]->message;
 }
 
 TEST(ChecksTest, OverridesChangeTheSeverityOrDisableARule) {

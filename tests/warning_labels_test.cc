@@ -1,9 +1,10 @@
 // The labelled warning set (testdata/labels/warnings.tsv, docs/labels.md): every warning that
-// `massprops check` gave on ../shared/corpus before issue 12, judged real or noise by a robot
-// engineer's reading of the file (the evidence, with numbers, is in each row). The tool as built
-// now runs over the corpus as tools/corpus_summary.py runs it; on the labelled rows its warnings
-// must be right at least 9 times in 10, every real row must still be reported, and no warning may
-// fire that the set has not judged.
+// `massprops check` gave on ../shared/corpus before issue 12 or gives now, judged real or noise by
+// a robot engineer's reading of the file (tools/label_evidence.py's numbers, read without
+// massprops, are in each row). The tool as built runs over the corpus as tools/corpus_summary.py
+// runs it: its warnings must be right at least 9 times in 10, every real row must still be
+// reported (rows whose why says "uncertain:" — the file cannot decide — count in the figures but
+// are not required), and no warning may fire that the set has not judged.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -30,8 +31,13 @@ std::string SameDefect(const std::string& rule) {
   return "";
 }
 
-std::map<Key, bool> ReadLabels() {  // key -> real
-  std::map<Key, bool> labels;
+struct Label {
+  bool real = false;
+  bool uncertain = false;  // the why says "uncertain:" (the evidence in the file cannot decide)
+};
+
+std::map<Key, Label> ReadLabels() {
+  std::map<Key, Label> labels;
   std::ifstream in(std::string(MASSPROPS_TESTDATA_DIR) + "/labels/warnings.tsv");
   std::string line;
   std::getline(in, line);  // header
@@ -41,7 +47,8 @@ std::map<Key, bool> ReadLabels() {  // key -> real
     std::string cell;
     while (std::getline(stream, cell, '\t')) cells.push_back(cell);
     if (cells.size() < 5) continue;
-    labels[{cells[0], cells[1], cells[2]}] = cells[3] == "real";
+    labels[{cells[0], cells[1], cells[2]}] = {
+        cells[3] == "real", cells[4].substr(0, 40).find("uncertain:") != std::string::npos};
   }
   return labels;
 }
@@ -50,7 +57,7 @@ TEST(WarningLabelsTest, WarningsAreRightNineTimesInTenAndEveryRealOneStillFires)
   const std::vector<massprops::test_support::ManifestRow> rows =
       massprops::test_support::ReadCorpusManifest();
   if (rows.empty()) GTEST_SKIP() << "no corpus";
-  const std::map<Key, bool> labels = ReadLabels();
+  const std::map<Key, Label> labels = ReadLabels();
   ASSERT_GT(labels.size(), 400u);
 
   std::string args = "check --format json --fail-on error";
@@ -81,33 +88,31 @@ TEST(WarningLabelsTest, WarningsAreRightNineTimesInTenAndEveryRealOneStillFires)
                        f.at("link").get<std::string>()));
     }
   }
-  auto label_of = [&](const Key& key) -> const bool* {
+  auto label_of = [&](const Key& key) -> const Label* {
     auto it = labels.find(key);
     if (it == labels.end() && !SameDefect(std::get<1>(key)).empty()) {
       it = labels.find({std::get<0>(key), SameDefect(std::get<1>(key)), std::get<2>(key)});
     }
     return it == labels.end() ? nullptr : &it->second;
   };
-  std::set<std::string> labelled_files;
-  for (const auto& [key, is_real] : labels) labelled_files.insert(std::get<0>(key));
   int real = 0, noise = 0;
   for (const Key& key : fired) {
-    // Files the tool could not read before (no warning of theirs was labelled) are not judged.
-    if (!labelled_files.count(std::get<0>(key))) continue;
-    const bool* label = label_of(key);
+    const Label* label = label_of(key);
     EXPECT_NE(label, nullptr) << "an unjudged warning: " << std::get<0>(key) << " "
                               << std::get<1>(key) << " " << std::get<2>(key);
-    if (label) (*label ? real : noise) += 1;
+    if (label) (label->real ? real : noise) += 1;
   }
   int real_rows = 0, still = 0;
-  for (const auto& [key, is_real] : labels) {
-    if (!is_real) continue;
+  for (const auto& [key, label] : labels) {
+    if (!label.real) continue;
     ++real_rows;
     const Key other{std::get<0>(key), SameDefect(std::get<1>(key)), std::get<2>(key)};
     const bool fires = fired.count(key) || fired.count(other);
     still += fires;
-    EXPECT_TRUE(fires) << "a real warning no longer fires: " << std::get<0>(key) << " "
-                       << std::get<1>(key) << " " << std::get<2>(key);
+    if (!label.uncertain) {
+      EXPECT_TRUE(fires) << "a real warning no longer fires: " << std::get<0>(key) << " "
+                         << std::get<1>(key) << " " << std::get<2>(key);
+    }
   }
   const double precision = real + noise > 0 ? static_cast<double>(real) / (real + noise) : 0;
   std::printf(

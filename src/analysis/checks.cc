@@ -30,6 +30,7 @@ constexpr const char* kMasslessMovingBody = "massless-moving-body";
 constexpr const char* kMasslessWithMassOutboard = "massless-link-with-mass-outboard";
 constexpr const char* kZeroInertiaAboutJointAxis = "zero-inertia-about-joint-axis";
 constexpr const char* kInertialMissing = "inertial-missing";
+constexpr const char* kModelWithoutInertials = "model-without-inertials";
 constexpr const char* kProductsSignSuspect = "products-sign-suspect";
 constexpr const char* kUnitsSuspect = "units-suspect";
 constexpr const char* kInertiaAboutOriginSuspect = "inertia-about-origin-suspect";
@@ -61,6 +62,7 @@ constexpr double kGeometryMargin = 2;
 // whose inertia matters; the geometry rules say nothing about either.
 constexpr double kPlaceholderHalfDiagonal = 0.005;  // metres
 constexpr double kDummyMass = 1e-3;                 // kg
+constexpr double kMarkerHalfDiagonal = 0.01;        // metres: a 1 cm cube is 0.00866
 // Where part of a welded group's geometry is a mesh of unknown size, the known geometry may cover
 // only part of the body: the geometry rules allow it to reach this many times farther.
 constexpr double kPartialGeometryMargin = 3;
@@ -197,6 +199,21 @@ const UnitSlip& NearestUnitSlip(double factor) {
   return *best;
 }
 
+// Why a link's inertia cannot be judged by its geometry, or "" when it can: placeholder geometry
+// (half-diagonal below kPlaceholderHalfDiagonal) or a dummy mass.
+std::string UnjudgedBecause(const Link& link, const std::optional<GeometryBounds>& bounds) {
+  if (bounds) {
+    const double e = 0.5 * bounds->box_B.diagonal().norm();
+    if (e < kPlaceholderHalfDiagonal) {
+      return "its geometry is a placeholder (half-diagonal " + Num(e) + " m)";
+    }
+  }
+  if (link.inertial && link.inertial->mass <= kDummyMass) {
+    return "its mass " + Num(link.inertial->mass) + " kg is a dummy's";
+  }
+  return "";
+}
+
 // A number a person types in: one significant digit (1, 0.01, 5e-4), to 1e-9 relative.
 bool IsRoundNumber(double x) {
   if (!(x > 0) || !std::isfinite(x)) return false;
@@ -215,6 +232,14 @@ std::string PlaceholderPattern(const Eigen::Matrix3d& I) {
     return "the diagonal is the round numbers " + diagonal + " with no products";
   }
   return "";
+}
+
+// PlaceholderPattern of a blanket placeholder only: equal moments and no products (1e-3, 1e-3,
+// 1e-3). Unequal round values show a thought-out inertia (pr2's laser_tilt_link, 1e-4, 1e-6, 1e-4:
+// its scanner's). "" when absent.
+std::string BlanketPlaceholder(const Eigen::Matrix3d& I) {
+  if (!(I(0, 0) == I(1, 1) && I(1, 1) == I(2, 2))) return "";
+  return PlaceholderPattern(I);
 }
 
 // The close of a causes list: which of the two causes the numbers can show points where.
@@ -374,6 +399,11 @@ class Checker {
       for (int i : groups_[g].links) group_of_[i] = static_cast<int>(g);
     }
     BuildJointTree();
+    sdf_without_inertials_ = model_.format == Model::Format::kSdf && !model_.links.empty();
+    for (const Link& link : model_.links) {
+      sdf_without_inertials_ =
+          sdf_without_inertials_ && !link.inertial && !link.inertial_unreadable;
+    }
     for (std::size_t i = 0; i < model_.links.size(); ++i) CheckLink(static_cast<int>(i));
     kinematic_only_ = model_.format == Model::Format::kUrdf;
     for (const Link& link : model_.links) kinematic_only_ = kinematic_only_ && !link.inertial;
@@ -644,16 +674,15 @@ class Checker {
     std::optional<GeometryBounds>& bounds = judged.bounds;
     bounds = CalcLinkGeometryBounds(link, judged.shape);
     // Placeholder geometry and dummy masses: nothing to judge by (see kPlaceholderHalfDiagonal).
-    if (bounds && 0.5 * bounds->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
-      judged.unjudged_because = "its geometry is a placeholder (half-diagonal " +
-                                Num(0.5 * bounds->box_B.diagonal().norm()) + " m)";
-      bounds.reset();
-    }
-    if (link.inertial->mass <= kDummyMass) {
-      if (judged.unjudged_because.empty()) {
-        judged.unjudged_because = "its mass " + Num(link.inertial->mass) + " kg is a dummy's";
-      }
-      bounds.reset();
+    judged.unjudged_because = UnjudgedBecause(link, bounds);
+    if (!judged.unjudged_because.empty()) bounds.reset();
+    // A visual-only marker (no collision; a box of at most kMarkerHalfDiagonal drawn to show a
+    // frame, as PR2, Cassie and Atlas do) shows where the link is, not how far its body reaches:
+    // like a mesh of unknown size, it is partial (Cassie's motor rotors, 0.27 kg with k = 3.5 cm,
+    // behind 1 cm marker boxes).
+    if (bounds && !bounds->from_collision &&
+        0.5 * bounds->box_B.diagonal().norm() < kMarkerHalfDiagonal) {
+      bounds->partial = true;
     }
     if (bounds) judged.smallest_extent = SmallestGeometryExtent(link, *bounds);
     // A mass lumped onto one link of a welded group shows as a center of mass outside the link's
@@ -752,31 +781,52 @@ class Checker {
   // I = 1e-3 kg·m², 8% of the gripper palm group; 0.1 kg cameras with I = 0.01 kg·m²).
   bool CheckMadeUpInertia(const JudgedLink& judged) {
     if (judged.bounds || judged.unjudged_because.empty()) return false;
-    // Only a blanket placeholder: equal moments and no products (1e-3, 1e-3, 1e-3). Unequal round
-    // values show a thought-out inertia (pr2's laser_tilt_link, 1e-4, 1e-6, 1e-4: its scanner's).
-    const Eigen::Matrix3d& I = judged.I_written;
-    if (!(I(0, 0) == I(1, 1) && I(1, 1) == I(2, 2))) return false;
-    const std::string pattern = PlaceholderPattern(I);
+    const std::string pattern = BlanketPlaceholder(judged.I_written);
     if (pattern.empty()) return false;
     const Link& link = *judged.link;
     const WeldedGroup& group = groups_[group_of_[judged.index]];
     if (group.links.size() < 2) return false;
     const CompositeInertia composite = CalcCompositeInertia(model_, group);
-    const double own = judged.props.I_SScm_F.trace();
     const double total = composite.I_SScm_R.trace();
     if (!(composite.mass > link.inertial->mass) || !(total > 0)) return false;
-    const double share = own / total;
+    // The made-up inertias of a group add up: judge their sum (pr2's head carries eleven frames
+    // with I = 1e-3 or 1e-2 kg·m², each a few percent of the head, together three times its own).
+    double made_up = 0;
+    int others = 0;
+    for (int i : group.links) {
+      const Link& member = model_.links[i];
+      if (!member.inertial || !(member.inertial->mass > 0)) continue;
+      if (i != judged.index) {
+        if (BlanketPlaceholder(WrittenMatrix(*member.inertial)).empty() ||
+            UnjudgedBecause(member, CalcLinkGeometryBounds(member)).empty()) {
+          continue;
+        }
+        ++others;
+      }
+      made_up += WrittenMatrix(*member.inertial).trace();
+    }
+    const double share = made_up / total;
     if (!(share >= kMadeUpInertiaShare)) return false;
+    const double own = judged.I_written.trace();
     const double m = link.inertial->mass;
     const double k = std::sqrt(own / (2 * m));
     Emit(kUnitsSuspect, link, InertiaLocation(link),
-         judged.who + ": " + judged.unjudged_because + " and " + pattern +
-             ", yet this inertia is " + Format("%.3g%%", 100 * share) +
-             " of its welded group's (trace " + Num(own) + " of " + Num(total) +
-             " kg·m² about the group's center of mass; radius of gyration " + Num(k) +
+         judged.who + ": " + judged.unjudged_because + " and " + pattern + ", yet this inertia" +
+             (others ? " with that of " + std::to_string(others) + " other such link" +
+                           (others == 1 ? "" : "s") + " of its welded group"
+                     : std::string()) +
+             " is " + Format("%.3g%%", 100 * share) + " of the group's (trace " + Num(made_up) +
+             " of " + Num(total) +
+             " kg·m² about the group's center of mass; this link's radius "
+             "of gyration " +
+             Num(k) +
              " m): typed-in numbers that no body backs change the group's dynamics; give the "
              "link the inertia of its part (or zero, if it is only a frame)",
-         {{"radius_of_gyration", k}, {"mass", m}, {"trace", own}, {"group_share", share}});
+         {{"radius_of_gyration", k},
+          {"mass", m},
+          {"trace", own},
+          {"group_share", share},
+          {"other_links", others}});
     return true;
   }
 
@@ -1085,6 +1135,13 @@ class Checker {
 
   // inertial-missing: links with collision geometry and no <inertial>.
   void CheckInertialMissing(const WeldedGroup& group) {
+    // An SDF model none of whose links has an <inertial> is a kinematic or visual description
+    // (sdformat's and gz-sim's frame and pose test models): one note for the model, not a warning
+    // per link.
+    if (sdf_without_inertials_) {
+      NoteModelWithoutInertials(group);
+      return;
+    }
     double group_mass = 0;
     for (int i : group.links) {
       const Link& link = model_.links[i];
@@ -1117,6 +1174,26 @@ class Checker {
                     ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
                     : "URDF makes it massless)"),
            {{"collisions", collisions}});
+    }
+  }
+
+  // model-without-inertials, once per model, on the first link with collision geometry.
+  void NoteModelWithoutInertials(const WeldedGroup& group) {
+    if (model_note_given_) return;
+    for (int i : group.links) {
+      const Link& link = model_.links[i];
+      bool collision = false;
+      for (const Geometry& g : link.geometries) collision = collision || g.is_collision;
+      if (!collision) continue;
+      model_note_given_ = true;
+      const double links = static_cast<double>(model_.links.size());
+      Emit(kModelWithoutInertials, link, link.location,
+           "no link of model '" + model_.name + "' has an <inertial>: SDFormat gives each of its " +
+               std::to_string(model_.links.size()) +
+               " link(s) the default mass 1 kg and inertia diag(1, 1, 1) kg·m²; fine for a "
+               "kinematic or visual model, wrong for a robot that is simulated",
+           {{"links", links}});
+      return;
     }
   }
 
@@ -1167,6 +1244,8 @@ class Checker {
   std::vector<std::vector<std::pair<int, int>>> children_;  // see BuildJointTree
   double total_mass_ = 0;
   bool kinematic_only_ = false;
+  bool sdf_without_inertials_ = false;  // an SDF model none of whose links has an <inertial>
+  bool model_note_given_ = false;       // model-without-inertials said
   std::vector<Finding> findings_;
 };
 
@@ -1210,6 +1289,9 @@ const std::vector<RuleInfo>& AllRules() {
        "A revolute/continuous joint's child group has zero moment of inertia about the axis."},
       {kInertialMissing, Severity::kWarning, true,
        "A link has collision geometry but no <inertial>."},
+      {kModelWithoutInertials, Severity::kNote, true,
+       "No link of an SDF model has an <inertial> (a kinematic or visual model): said once, "
+       "instead of inertial-missing on every link."},
       {kProductsSignSuspect, Severity::kWarning, true,
        "The products of inertia have the wrong sign: the inertia is invalid as written but valid "
        "with them negated, or the geometry's products have the opposite sign."},
