@@ -445,11 +445,8 @@ TEST(CliTest, MergeFixedTakesGazeboAndRefusesMujocoAndDrake) {
 // Hand-derived (libsdformat's lumping rules, gazebosim/sdformat parser_urdf.cc): the bodies are
 // base (1 kg) and a + b: m = 5 kg, c = (3·1)/5 = 0.6 m along x, about c Ixx = 0.2 and
 // Iyy = Izz = 0.2 + 2·0.6² + 3·0.4² = 1.4 kg·m².
-TEST(CliTest, JsonReportListsTheTargetBodiesWithoutTheWorld) {
-  namespace fs = std::filesystem;
-  const fs::path dir =
-      fs::path(::testing::TempDir()) / ("massprops_cli_bodies_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+// Writes that chain as `path`.
+void WriteGazeboChain(const std::filesystem::path& path) {
   auto link = [](const std::string& name, const std::string& mass) {
     return "<link name=\"" + name + "\"><inertial><mass value=\"" + mass +
            "\"/><inertia ixx=\"0.1\" iyy=\"0.1\" izz=\"0.1\" ixy=\"0\" ixz=\"0\" "
@@ -459,12 +456,19 @@ TEST(CliTest, JsonReportListsTheTargetBodiesWithoutTheWorld) {
     return "<joint name=\"" + name + "\" type=\"fixed\"><parent link=\"" + parent +
            "\"/><child link=\"" + child + "\"/><origin xyz=\"1 0 0\"/></joint>";
   };
-  std::ofstream(dir / "chain.urdf")
-      << "<robot name=\"chain\"><link name=\"world\"/>" << link("base", "1") << link("a", "2")
-      << link("b", "3") << joint("to_world", "world", "base") << joint("keep", "base", "a")
-      << joint("weld", "a", "b")
-      << "<gazebo reference=\"keep\"><preserveFixedJoint>true</preserveFixedJoint></gazebo>"
-         "</robot>\n";
+  std::ofstream(path) << "<robot name=\"chain\"><link name=\"world\"/>" << link("base", "1")
+                      << link("a", "2") << link("b", "3") << joint("to_world", "world", "base")
+                      << joint("keep", "base", "a") << joint("weld", "a", "b")
+                      << "<gazebo reference=\"keep\"><preserveFixedJoint>true</preserveFixedJoint>"
+                         "</gazebo></robot>\n";
+}
+
+TEST(CliTest, JsonReportListsTheTargetBodiesWithoutTheWorld) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("massprops_cli_bodies_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  WriteGazeboChain(dir / "chain.urdf");
   const RunResult run =
       RunTool("report --format json --target gazebo " + Quote((dir / "chain.urdf").string()));
   EXPECT_EQ(run.exit_code, 0) << run.err;
@@ -487,6 +491,104 @@ TEST(CliTest, JsonReportListsTheTargetBodiesWithoutTheWorld) {
   const RunResult plain = RunTool("report --format json " + Quote((dir / "chain.urdf").string()));
   EXPECT_FALSE(json::parse(plain.out).at("models").at(0).contains("target_bodies"));
   fs::remove_all(dir);
+}
+
+// The CSV report's columns, per row.
+std::vector<std::vector<std::string>> CsvRows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        cells.push_back(cell);
+        cell.clear();
+      } else {
+        cell += c;
+      }
+    }
+    cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// `report --format csv --target gazebo`: the same bodies as the JSON test above, as rows of kind
+// target_body (hand-derived there: a + b is 5 kg at x = 0.6 with Ixx = 0.2, Iyy = Izz = 1.4; its
+// principal moments, ascending, are then 0.2, 1.4, 1.4), the target in the column "target".
+TEST(CliTest, CsvReportListsTheTargetBodiesAsRowsWithTheTargetColumns) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("massprops_cli_csv_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  WriteGazeboChain(dir / "chain.urdf");
+  const RunResult run =
+      RunTool("report --format csv --target gazebo " + Quote((dir / "chain.urdf").string()));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  const std::vector<std::vector<std::string>> rows = CsvRows(run.out);
+  ASSERT_FALSE(rows.empty());
+  const std::vector<std::string>& header = rows[0];
+  ASSERT_EQ(header.size(), 35u);  // 32 columns of the report, then target, target_moving, _message
+  EXPECT_EQ(header[32], "target");
+  EXPECT_EQ(header[33], "target_moving");
+  EXPECT_EQ(header[34], "target_message");
+  std::vector<std::vector<std::string>> bodies;
+  for (const auto& row : rows) {
+    EXPECT_EQ(row.size(), header.size());
+    if (row.size() == header.size() && row[2] == "target_body") bodies.push_back(row);
+    if (row.size() == header.size() && row[2] != "target_body" && &row != &rows[0]) {
+      EXPECT_EQ(row[32], "");  // The report's own rows have no target.
+    }
+  }
+  ASSERT_EQ(bodies.size(), 2u);
+  EXPECT_EQ(bodies[0][3], "base");
+  EXPECT_EQ(bodies[1][3], "a");
+  EXPECT_EQ(bodies[1][4], "a");     // frame
+  EXPECT_EQ(bodies[1][31], "a;b");  // links
+  EXPECT_EQ(bodies[1][32], "gazebo");
+  EXPECT_EQ(std::stod(bodies[1][5]), 5);              // mass
+  EXPECT_NEAR(std::stod(bodies[1][6]), 0.6, 1e-15);   // com_x
+  EXPECT_NEAR(std::stod(bodies[1][9]), 0.2, 1e-15);   // ixx
+  EXPECT_NEAR(std::stod(bodies[1][10]), 1.4, 1e-14);  // iyy
+  EXPECT_NEAR(std::stod(bodies[1][15]), 0.2, 1e-15);  // principal_moment_1
+  EXPECT_NEAR(std::stod(bodies[1][17]), 1.4, 1e-14);  // principal_moment_3
+  // Without a target the header is the report's own.
+  const RunResult plain = RunTool("report --format csv " + Quote((dir / "chain.urdf").string()));
+  EXPECT_EQ(CsvRows(plain.out)[0].size(), 32u);
+  fs::remove_all(dir);
+}
+
+// `report --format csv --target mujoco` on the example arm: MuJoCo's bodies (static or moving,
+// principal moments as its eigen-solver gives them) and its refusal as a row of kind
+// target_refusal naming the body and quoting MuJoCo (README.md: the forearm's principal moments
+// 0.00427333, 0.00427333, 0.009 fail A + B >= C).
+TEST(CliTest, CsvReportGivesMujocosRefusalAsARow) {
+  const RunResult run = RunTool("report --format csv --target mujoco " +
+                                Quote(std::string(MASSPROPS_EXAMPLES_DIR) + "/two_link_arm.urdf"));
+  const std::vector<std::vector<std::string>> rows = CsvRows(run.out);
+  ASSERT_FALSE(rows.empty());
+  int bodies = 0, refusals = 0;
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 35u);
+    if (row[2] == "target_body") {
+      ++bodies;
+      EXPECT_EQ(row[32], "mujoco");
+      EXPECT_TRUE(row[33] == "true" || row[33] == "false") << row[33];
+      EXPECT_EQ(row[6], "");  // MuJoCo's bodies have no center of mass in the report
+    }
+    if (row[2] == "target_refusal") {
+      ++refusals;
+      EXPECT_EQ(row[3], "forearm");
+      EXPECT_NE(row[34].find("inertia must satisfy A + B >= C"), std::string::npos) << row[34];
+    }
+  }
+  EXPECT_GT(bodies, 0);
+  EXPECT_EQ(refusals, 1);
 }
 
 }  // namespace

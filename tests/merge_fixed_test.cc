@@ -3,8 +3,10 @@
 #include "massprops/output/merge_fixed.h"
 
 #include <gtest/gtest.h>
+#include <tinyxml2.h>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "massprops/analysis/welded_groups.h"
@@ -117,11 +119,211 @@ TEST(MergeFixedTest, AModelWithoutFixedJointsKeepsItsLinksAndInertials) {
   EXPECT_EQ(read.models[0].links[1].inertial->ixx, 1e-11);
 }
 
-TEST(MergeFixedTest, SdfInputIsAClearNotSupportedError) {
-  const MergeFixedResult merged = MergeFixedJoints(ReadText(FixturePath("box.sdf")), "box.sdf");
-  ASSERT_EQ(merged.errors.size(), 1u);
-  EXPECT_NE(merged.errors[0].message.find("does not support SDF"), std::string::npos);
+// SDF: testdata/merge_sdf/*.sdf, with hand-computed expectations (libsdformat's view of the
+// same files is compared in tests/merge_fixed_sdf_sdformat_test.cc).
+MergeFixedResult MergeSdfFixture(const std::string& name, Target target = Target::kGeneric) {
+  const std::string path = std::string(MASSPROPS_TESTDATA_DIR) + "/merge_sdf/" + name;
+  return MergeFixedJoints(ReadText(path), name, target);
+}
+
+// The element <TAG name="NAME"> anywhere below `e` (depth first), or null.
+const tinyxml2::XMLElement* FindNamed(const tinyxml2::XMLElement* e, const std::string& tag,
+                                      const std::string& name) {
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c != nullptr;
+       c = c->NextSiblingElement()) {
+    if (tag == c->Name() && c->Attribute("name") != nullptr && name == c->Attribute("name")) {
+      return c;
+    }
+    if (const tinyxml2::XMLElement* found = FindNamed(c, tag, name)) return found;
+  }
+  return nullptr;
+}
+
+std::string PoseText(const tinyxml2::XMLElement* e) {
+  const tinyxml2::XMLElement* pose = e == nullptr ? nullptr : e->FirstChildElement("pose");
+  return pose == nullptr || pose->GetText() == nullptr ? "" : pose->GetText();
+}
+
+TEST(MergeFixedTest, SdfTwoWeldedBoxesBecomeOneLinkWithTheHandComputedComposite) {
+  const MergeFixedResult merged = MergeSdfFixture("two_boxes.sdf");
+  ASSERT_TRUE(merged.errors.empty()) << merged.errors.front().ToString();
+  EXPECT_EQ(merged.merged_links, 1);
+  EXPECT_EQ(merged.groups_merged, 1);
+  const ReadResult read = ReadModelString(merged.text, "merged.sdf");
+  ASSERT_TRUE(read.ok()) << merged.text;
+  const Model& model = read.models.front();
+  ASSERT_EQ(model.links.size(), 3u);  // a, c, d: b is merged into a
+  EXPECT_EQ(model.FindLink("b"), -1);
+  const Inertial& in = *model.links[model.FindLink("a")].inertial;
+  // By hand: two 2 kg bodies with unit central inertia at x = 0 and x = 2: m = 4, center of mass
+  // x = 1; about it each adds 2·(|d|²·1 − d·dᵀ) with d = (±1, 0, 0) = diag(0, 2, 2), so
+  // I = 2·diag(1, 1, 1) + 2·diag(0, 2, 2) = diag(2, 6, 6).
+  EXPECT_EQ(in.mass, 4);
+  EXPECT_EQ(in.X_BBi.p_AB, Eigen::Vector3d(1, 0, 0));
+  EXPECT_TRUE(in.X_BBi.R_AB.isIdentity(0));
+  EXPECT_EQ(Eigen::Vector3d(in.ixx, in.iyy, in.izz), Eigen::Vector3d(2, 6, 6));
+  EXPECT_EQ(Eigen::Vector3d(in.ixy, in.ixz, in.iyz), Eigen::Vector3d::Zero());
+  // The revolute joint left b: now from a, its frame where it was (at c, in the model frame).
+  const Joint& hinge = model.joints[model.FindParentJoint("c")];
+  EXPECT_EQ(hinge.parent, "a");
+  EXPECT_EQ(hinge.X_PC.p_AB, Eigen::Vector3d(2, 0, 2));
+  ASSERT_EQ(model.FindParentJoint("b"), -1);
+
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(merged.text.c_str()), tinyxml2::XML_SUCCESS);
+  const tinyxml2::XMLElement* a = FindNamed(doc.RootElement(), "link", "a");
+  ASSERT_NE(a, nullptr);
+  // b's visual "v" (pose 0 0 1 in b, b at 2 0 0) clashes with a's "v": renamed, pose composed;
+  // its collision had no pose: now b's pose in a.
+  EXPECT_NE(FindNamed(a, "visual", "v"), nullptr);
+  EXPECT_EQ(PoseText(FindNamed(a, "visual", "b__v")), "2 0 1 0 0 0");
+  EXPECT_EQ(PoseText(FindNamed(a, "collision", "c")), "2 0 0 0 0 0");
+  // The frame attached to b: attached to a, its pose (0 0 0.5 in b) composed.
+  const tinyxml2::XMLElement* tip = FindNamed(doc.RootElement(), "frame", "tip");
+  ASSERT_NE(tip, nullptr);
+  EXPECT_STREQ(tip->Attribute("attached_to"), "a");
+  EXPECT_EQ(PoseText(tip), "2 0 0.5 0 0 0");
+  // d's pose relative_to b (0 1 0): relative to a (2 1 0); the axis expressed in b: in a.
+  const tinyxml2::XMLElement* d = FindNamed(doc.RootElement(), "link", "d");
+  ASSERT_NE(d, nullptr);
+  EXPECT_STREQ(d->FirstChildElement("pose")->Attribute("relative_to"), "a");
+  EXPECT_EQ(PoseText(d), "2 1 0 0 0 0");
+  EXPECT_EQ(model.links[model.FindLink("d")].inertial->mass, 1);
+  const tinyxml2::XMLElement* xyz = FindNamed(doc.RootElement(), "joint", "slider")
+                                        ->FirstChildElement("axis")
+                                        ->FirstChildElement("xyz");
+  EXPECT_STREQ(xyz->Attribute("expressed_in"), "a");
+  EXPECT_STREQ(xyz->GetText(), "1 0 0");
+  // Comments are kept; the fixed joint is gone, but a frame names it: it becomes a frame where the
+  // joint frame was (the joint had no pose: at its child b, 2 0 0 in a), attached to a.
+  EXPECT_NE(merged.text.find("b sits 2 m along x"), std::string::npos);
+  EXPECT_EQ(FindNamed(doc.RootElement(), "joint", "weld"), nullptr);
+  const tinyxml2::XMLElement* weld = FindNamed(doc.RootElement(), "frame", "weld");
+  ASSERT_NE(weld, nullptr);
+  EXPECT_STREQ(weld->Attribute("attached_to"), "a");
+  EXPECT_EQ(PoseText(weld), "2 0 0 0 0 0");
+  EXPECT_STREQ(FindNamed(doc.RootElement(), "frame", "at_weld")->Attribute("attached_to"), "weld");
+}
+
+TEST(MergeFixedTest, SdfRotatedMemberAndAJointWhoseChildIsMerged) {
+  const MergeFixedResult merged = MergeSdfFixture("rotated.sdf");
+  ASSERT_TRUE(merged.errors.empty()) << merged.errors.front().ToString();
+  const ReadResult read = ReadModelString(merged.text, "merged.sdf");
+  ASSERT_TRUE(read.ok()) << merged.text;
+  const Model& model = read.models.front();
+  ASSERT_EQ(model.links.size(), 2u);
+  const Inertial& in = *model.links[model.FindLink("a")].inertial;
+  // By hand: b (1 kg) at (1, 0, 0) turned +90° about z, its center of mass 0.5 along its x:
+  // (1, 0.5, 0) in a, its inertia Rz·diag(1, 2, 3)·Rzᵀ = diag(2, 1, 3); a (1 kg) at the origin
+  // with diag(1, 1, 1). m = 2, c = (0.5, 0.25, 0); d = ±(0.5, 0.25, 0), |d|² = 0.3125, each
+  // |d|²·1 − d·dᵀ = [[0.0625, −0.125, 0], [−0.125, 0.25, 0], [0, 0, 0.3125]]; the sum:
+  // [[3.125, −0.25, 0], [−0.25, 2.5, 0], [0, 0, 4.625]].
+  EXPECT_EQ(in.mass, 2);
+  ExpectNear(in.X_BBi.p_AB, Eigen::Vector3d(0.5, 0.25, 0), 1e-15);
+  Eigen::Matrix3d I;
+  I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  Eigen::Matrix3d expected;
+  expected << 3.125, -0.25, 0, -0.25, 2.5, 0, 0, 0, 4.625;
+  ExpectNear(I, expected, 1e-15);
+  // The ball joint whose child was b (pose 0 0 0.1 in b): child a, pose composed, so its frame
+  // stays at (1, 0, 0.1) turned +90° about z.
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(merged.text.c_str()), tinyxml2::XML_SUCCESS);
+  const tinyxml2::XMLElement* loop = FindNamed(doc.RootElement(), "joint", "loop");
+  ASSERT_NE(loop, nullptr);
+  EXPECT_STREQ(loop->FirstChildElement("child")->GetText(), "a");
+  std::istringstream pose(PoseText(loop));
+  Eigen::Matrix<double, 6, 1> v;
+  for (int k = 0; k < 6; ++k) pose >> v(k);
+  ExpectNear(v, (Eigen::Matrix<double, 6, 1>() << 1, 0, 0.1, 0, 0, kPi / 2).finished(), 1e-15);
+  // The sensor (0 0.5 0 in b) moved into a: (1, 0, 0) + Rz·(0, 0.5, 0) = (0.5, 0, 0).
+  std::istringstream sensor(PoseText(FindNamed(doc.RootElement(), "sensor", "imu")));
+  for (int k = 0; k < 6; ++k) sensor >> v(k);
+  ExpectNear(v, (Eigen::Matrix<double, 6, 1>() << 0.5, 0, 0, 0, 0, kPi / 2).finished(), 1e-15);
+}
+
+TEST(MergeFixedTest, SdfGroupInsideANestedModelIsMergedThere) {
+  const MergeFixedResult merged = MergeSdfFixture("nested.sdf");
+  ASSERT_TRUE(merged.errors.empty()) << merged.errors.front().ToString();
+  EXPECT_EQ(merged.merged_links, 1);
+  const ReadResult read = ReadModelString(merged.text, "merged.sdf");
+  ASSERT_TRUE(read.ok()) << merged.text;
+  const Model& model = read.models.front();
+  ASSERT_EQ(model.links.size(), 2u);  // base, inner::x
+  const Inertial& in = *model.links[model.FindLink("inner::x")].inertial;
+  // By hand: two 1 kg links with SDF's default inertia diag(1, 1, 1), 1 m apart along x: m = 2,
+  // center of mass x = 0.5; each adds 1·(0.25·1 − d·dᵀ) = diag(0, 0.25, 0.25) about it, so
+  // I = diag(2, 2.5, 2.5).
+  EXPECT_EQ(in.mass, 2);
+  EXPECT_EQ(in.X_BBi.p_AB, Eigen::Vector3d(0.5, 0, 0));
+  EXPECT_EQ(Eigen::Vector3d(in.ixx, in.iyy, in.izz), Eigen::Vector3d(2, 2.5, 2.5));
+  // The outer joint naming the nested root is kept; y's visual is in x at y's place.
+  EXPECT_EQ(model.joints.size(), 1u);
+  EXPECT_EQ(model.joints[0].child, "inner::x");
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(merged.text.c_str()), tinyxml2::XML_SUCCESS);
+  EXPECT_EQ(PoseText(FindNamed(FindNamed(doc.RootElement(), "link", "x"), "visual", "v")),
+            "1 0 0 0 0 0");
+}
+
+TEST(MergeFixedTest, SdfOneSixPoseFrameAttributeIsRewrittenToTheRoot) {
+  const MergeFixedResult merged = MergeSdfFixture("old_frame.sdf");
+  ASSERT_TRUE(merged.errors.empty()) << merged.errors.front().ToString();
+  const ReadResult read = ReadModelString(merged.text, "merged.sdf");
+  ASSERT_TRUE(read.ok()) << merged.text;
+  const Model& model = read.models.front();
+  ASSERT_EQ(model.links.size(), 2u);
+  // By hand: 1 kg at the origin and 3 kg at z = 1, both with SDF's default inertia diag(1, 1, 1):
+  // m = 4, center of mass z = 0.75; about it 1·0.75² + 3·0.25² = 0.75 is added to ixx and iyy.
+  const Inertial& in = *model.links[model.FindLink("a")].inertial;
+  EXPECT_EQ(in.mass, 4);
+  EXPECT_EQ(in.X_BBi.p_AB, Eigen::Vector3d(0, 0, 0.75));
+  EXPECT_EQ(Eigen::Vector3d(in.ixx, in.iyy, in.izz), Eigen::Vector3d(2.75, 2.75, 2));
+  // c's pose, 1 0 0 in b's frame, is now 1 0 1 in a's, with the same attribute.
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(merged.text.c_str()), tinyxml2::XML_SUCCESS);
+  const tinyxml2::XMLElement* c = FindNamed(doc.RootElement(), "link", "c");
+  EXPECT_STREQ(c->FirstChildElement("pose")->Attribute("frame"), "a");
+  EXPECT_EQ(c->FirstChildElement("pose")->Attribute("relative_to"), nullptr);
+  EXPECT_EQ(PoseText(c), "1 0 1 0 0 0");
+  const Joint& hinge = model.joints[model.FindParentJoint("c")];
+  EXPECT_EQ(hinge.parent, "a");
+  EXPECT_EQ(hinge.X_PC.p_AB, Eigen::Vector3d(1, 0, 1));
+}
+
+TEST(MergeFixedTest, SdfWeldAcrossModelScopesIsANotSupportedErrorAtItsLine) {
+  const MergeFixedResult merged = MergeSdfFixture("cross_scope.sdf");
+  ASSERT_FALSE(merged.errors.empty());
   EXPECT_TRUE(merged.text.empty());
+  EXPECT_EQ(merged.errors[0].location.file, "cross_scope.sdf");
+  EXPECT_EQ(merged.errors[0].location.line, 8);  // <link name="x"> of the nested model
+  EXPECT_EQ(merged.errors[0].element, "<link> 'inner::x'");
+  EXPECT_NE(merged.errors[0].message.find("does not support"), std::string::npos);
+}
+
+// tinyxml2 accepts text after the root element but re-prints it as a file it refuses (found by
+// tools/fuzz.sh sdf): merge-fixed then writes nothing and says why, never a broken file.
+TEST(MergeFixedTest, AMergedTextThatWouldNotReadBackIsAnError) {
+  const std::string path = std::string(MASSPROPS_TESTDATA_DIR) +
+                           "/fuzz/regressions/sdf/merge_text_after_the_root_element.sdf";
+  ASSERT_TRUE(ReadModelString(ReadText(path), "in.sdf").ok());  // The input itself reads.
+  const MergeFixedResult merged = MergeFixedJoints(ReadText(path), "in.sdf");
+  ASSERT_EQ(merged.errors.size(), 1u);
+  EXPECT_TRUE(merged.text.empty());
+  EXPECT_NE(merged.errors[0].message.find("cannot write this file: the merged model does not "
+                                          "read back with 2 links (the merged text, line 64"),
+            std::string::npos)
+      << merged.errors[0].message;
+}
+
+TEST(MergeFixedTest, SdfGazeboTargetWritesTheFileUnchangedAndSaysWhy) {
+  const std::string path = std::string(MASSPROPS_TESTDATA_DIR) + "/merge_sdf/two_boxes.sdf";
+  const MergeFixedResult merged = MergeSdfFixture("two_boxes.sdf", Target::kGazebo);
+  ASSERT_TRUE(merged.errors.empty());
+  EXPECT_EQ(merged.text, ReadText(path));
+  EXPECT_EQ(merged.merged_links, 0);
+  ASSERT_EQ(merged.notes.size(), 1u);
+  EXPECT_NE(merged.notes[0].find("does not lump"), std::string::npos);
 }
 
 TEST(MergeFixedTest, RollPitchYawRoundTripsThroughTheUrdfConvention) {

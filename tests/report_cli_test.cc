@@ -124,10 +124,56 @@ TEST(ReportCliTest, MergeFixedWritesAModelWithOneLinkPerWeldedGroup) {
   EXPECT_NEAR(total["com"][2].get<double>(), -3.0 / 32, 1e-14);
 }
 
-TEST(ReportCliTest, MergeFixedRefusesSdfWithExitTwo) {
-  const ToolRun run = RunTool("merge-fixed " + Fixture("box.sdf") + " -o -", true);
+std::string SdfFixture(const std::string& name) {
+  return "'" + std::string(MASSPROPS_TESTDATA_DIR) + "/merge_sdf/" + name + "'";
+}
+
+// SDF: the merged file's whole-model composite equals the original's (merging moves no mass), and
+// the welded pair is one link (testdata/merge_sdf/two_boxes.sdf, hand-computed in
+// merge_fixed_test.cc).
+TEST(ReportCliTest, MergeFixedMergesSdfAndKeepsTheWholeModelComposite) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() /
+                                    ("massprops_merge_" + std::to_string(getpid()) + ".sdf");
+  const ToolRun run =
+      RunTool("merge-fixed " + SdfFixture("two_boxes.sdf") + " -o '" + out.string() + "'", true);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("merged 1 link(s) into 1 welded group root(s)"), std::string::npos);
+  const ToolRun merged = RunTool("report --format json '" + out.string() + "'");
+  const ToolRun original = RunTool("report --format json " + SdfFixture("two_boxes.sdf"));
+  std::filesystem::remove(out);
+  ASSERT_EQ(merged.exit_code, 0);
+  const nlohmann::json a = nlohmann::json::parse(original.output)["models"][0];
+  const nlohmann::json b = nlohmann::json::parse(merged.output)["models"][0];
+  EXPECT_EQ(a["links"].size(), 4u);
+  EXPECT_EQ(b["links"].size(), 3u);
+  // By hand: 2 + 2 + 1 + 1 kg.
+  EXPECT_EQ(a["total"]["mass"].get<double>(), 6);
+  EXPECT_EQ(b["total"]["mass"].get<double>(), 6);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(b["total"]["com"][i].get<double>(), a["total"]["com"][i].get<double>(), 1e-14);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(b["total"]["inertia_about_com"][i][k].get<double>(),
+                  a["total"]["inertia_about_com"][i][k].get<double>(), 1e-13);
+    }
+  }
+}
+
+TEST(ReportCliTest, MergeFixedRefusesWhatItCannotEditInSdfWithExitTwoAndTheLine) {
+  const ToolRun run = RunTool("merge-fixed " + SdfFixture("cross_scope.sdf") + " -o -", true);
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.output.find("does not support SDF"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("cross_scope.sdf:8: <link> 'inner::x': merge-fixed does not support"),
+            std::string::npos)
+      << run.output;
+}
+
+TEST(ReportCliTest, MergeFixedForGazeboWritesAnSdfUnchangedWithANote) {
+  const ToolRun run =
+      RunTool("merge-fixed --target gazebo " + SdfFixture("two_boxes.sdf") + " -o -", true);
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.output.find("<joint name=\"weld\" type=\"fixed\">"), std::string::npos);
+  EXPECT_NE(run.output.find("note: Gazebo does not lump the fixed joints of an SDF model"),
+            std::string::npos)
+      << run.output;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "massprops/analysis/target_profile.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/io/model_reader.h"
+#include "merge_fixed_sdf.h"
 
 namespace massprops {
 namespace {
@@ -246,27 +247,12 @@ Eigen::Vector3d RotationToRollPitchYaw(const Eigen::Matrix3d& R) {
   return {std::atan2(R(2, 1), R(2, 2)), pitch, std::atan2(R(1, 0), R(0, 0))};
 }
 
-MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name,
-                                  Target target) {
+namespace {
+
+// The URDF edit (see merge_fixed.h).
+MergeFixedResult MergeUrdf(const std::string& xml, const std::string& file_name, const Model& model,
+                           Target target) {
   MergeFixedResult result;
-  if (const char* why = UnsupportedTarget(target)) {
-    result.errors.push_back(MakeError(file_name, 0, why));
-    return result;
-  }
-  ReadResult read = ReadModelString(xml, file_name);
-  if (!read.ok() || read.models.empty()) {
-    result.errors = read.errors;
-    if (result.errors.empty()) {
-      result.errors.push_back(MakeError(file_name, 0, "the file holds no model"));
-    }
-    return result;
-  }
-  const Model& model = read.models.front();
-  if (model.format != Model::Format::kUrdf) {
-    result.errors.push_back(
-        {model.location, "<sdf>", "merge-fixed does not support SDF yet (URDF only)"});
-    return result;
-  }
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
     result.errors.push_back(MakeError(file_name, doc.ErrorLineNum(), doc.ErrorStr()));
@@ -290,6 +276,66 @@ MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& fil
   tinyxml2::XMLPrinter printer;
   doc.Print(&printer);
   result.text = printer.CStr();
+  return result;
+}
+
+std::size_t CountLinks(const ReadResult& read) {
+  std::size_t links = 0;
+  for (const Model& model : read.models) links += model.links.size();
+  return links;
+}
+
+// The merged text must read again with the merged links gone, or nothing is written: tinyxml2
+// re-prints some malformed input it accepted (text after the root element) as text it refuses.
+void CheckReadsBack(const ReadResult& read, const std::string& file_name,
+                    MergeFixedResult* result) {
+  const ReadResult again = ReadModelString(result->text, file_name);
+  if (again.ok() &&
+      CountLinks(again) + static_cast<std::size_t>(result->merged_links) == CountLinks(read)) {
+    return;
+  }
+  std::string why =
+      "merge-fixed cannot write this file: the merged model does not read back with " +
+      std::to_string(CountLinks(read) - static_cast<std::size_t>(result->merged_links)) + " links";
+  if (!again.errors.empty()) {
+    const ReadError& e = again.errors.front();
+    why += " (the merged text, line " + std::to_string(e.location.line) + ": " +
+           (e.element.empty() ? "" : e.element + ": ") + e.message + ")";
+  }
+  result->text.clear();
+  result->errors.push_back(MakeError(file_name, 0, why));
+}
+
+}  // namespace
+
+MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& file_name,
+                                  Target target) {
+  MergeFixedResult result;
+  if (const char* why = UnsupportedTarget(target)) {
+    result.errors.push_back(MakeError(file_name, 0, why));
+    return result;
+  }
+  ReadResult read = ReadModelString(xml, file_name);
+  if (!read.ok() || read.models.empty()) {
+    result.errors = read.errors;
+    if (result.errors.empty()) {
+      result.errors.push_back(MakeError(file_name, 0, "the file holds no model"));
+    }
+    return result;
+  }
+  const Model& model = read.models.front();
+  if (model.format == Model::Format::kSdf && target == Target::kGazebo) {
+    // gz-sim builds every SDF link as a body of its own and a fixed joint as a weld
+    // (docs/targets.md): nothing is lumped.
+    result.text = xml;
+    result.notes.push_back(
+        "Gazebo does not lump the fixed joints of an SDF model (each link stays a body, a fixed "
+        "joint is a weld): written unchanged");
+    return result;
+  }
+  result = model.format == Model::Format::kSdf ? internal::MergeFixedSdf(xml, file_name, read)
+                                               : MergeUrdf(xml, file_name, model, target);
+  if (result.errors.empty()) CheckReadsBack(read, file_name, &result);
   return result;
 }
 

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/analysis/welded_groups.h"
 #include "massprops/output/reporters.h"
 
 namespace massprops {
@@ -35,11 +36,42 @@ void AddBody(const BodyMassProperties& body, nlohmann::json* out) {
   j["digits_lost"] = body.digits_lost;
 }
 
+// A model's target part (docs/report.md): "target", "target_bodies" and MuJoCo's verdict.
+void AddTargetJson(const ModelTargetReport& target, nlohmann::json* model) {
+  nlohmann::json& j = *model;
+  j["target"] = ToString(target.target);
+  j["target_bodies"] = nlohmann::json::array();
+  for (const TargetBody& b : target.bodies) {
+    if (b.properties) {
+      j["target_bodies"].push_back({{"name", b.name},
+                                    {"links", b.links},
+                                    {"frame", b.properties->frame},
+                                    {"mass", b.properties->mass},
+                                    {"com", Vec(b.properties->com)},
+                                    {"inertia_about_com", Mat(b.properties->inertia_about_com)}});
+    } else {
+      j["target_bodies"].push_back({{"name", b.name},
+                                    {"links", b.links},
+                                    {"moving", b.moving},
+                                    {"mass", b.mass},
+                                    {"principal_moments", b.mujoco_moments}});
+    }
+  }
+  if (target.target != Target::kMujoco) return;
+  j["target_accepted"] = target.accepted;
+  j["target_refusal"] = target.accepted ? nlohmann::json()
+                                        : nlohmann::json{{"message", target.refusal_message},
+                                                         {"body", target.refusal_body}};
+  j["target_not_predicted"] = target.not_predicted;
+}
+
 void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
-               const std::vector<MassReportError>& errors) {
+               const std::vector<MassReportError>& errors,
+               const std::vector<ModelTargetReport>& targets) {
   nlohmann::json root;
   root["models"] = nlohmann::json::array();
-  for (const ModelMassReport& report : reports) {
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const ModelMassReport& report = reports[i];
     nlohmann::json model;
     model["name"] = report.name;
     model["file"] = report.file;
@@ -100,6 +132,9 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
     } else {
       model["total"] = nullptr;
     }
+    if (i < targets.size() && targets[i].target != Target::kGeneric) {
+      AddTargetJson(targets[i], &model);
+    }
     root["models"].push_back(std::move(model));
   }
   root["errors"] = nlohmann::json::array();
@@ -127,82 +162,167 @@ std::string Number(double value, int digits) {
   return buffer;
 }
 
-void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports) {
-  out << "file,model,kind,name,frame,mass,com_x,com_y,com_z,ixx,iyy,izz,ixy,ixz,iyz,"
-         "principal_moment_1,principal_moment_2,principal_moment_3,"
-         "axis_1_x,axis_1_y,axis_1_z,axis_2_x,axis_2_y,axis_2_z,axis_3_x,axis_3_y,axis_3_z,"
-         "box_1,box_2,box_3,digits_lost,links";
+constexpr int kCsvDigits = std::numeric_limits<double>::max_digits10;
+
+// The CSV rows of the report: the columns every row has, then the optional geometry columns
+// (--geometry) and target columns (--target).
+class CsvWriter {
+ public:
+  CsvWriter(std::ostream& out, bool geometry, bool target)
+      : out_(out), geometry_(geometry), target_(target) {}
+
+  void Header() const {
+    out_ << "file,model,kind,name,frame,mass,com_x,com_y,com_z,ixx,iyy,izz,ixy,ixz,iyz,"
+            "principal_moment_1,principal_moment_2,principal_moment_3,"
+            "axis_1_x,axis_1_y,axis_1_z,axis_2_x,axis_2_y,axis_2_z,axis_3_x,axis_3_y,axis_3_z,"
+            "box_1,box_2,box_3,digits_lost,links";
+    if (geometry_) {
+      out_ << ",geometry_source,geometry_com_x,geometry_com_y,geometry_com_z,geometry_ixx,"
+              "geometry_iyy,geometry_izz,geometry_ixy,geometry_ixz,geometry_iyz,"
+              "geometry_principal_moment_1,geometry_principal_moment_2,"
+              "geometry_principal_moment_3,geometry_rel_diff_1,geometry_rel_diff_2,"
+              "geometry_rel_diff_3,geometry_axis_angle_deg,geometry_error";
+    }
+    if (target_) out_ << ",target,target_moving,target_message";
+    out_ << '\n';
+  }
+
+  // A row of a body with all its numbers; `target` "" for the report's own rows.
+  void BodyRow(const ModelMassReport& report, const char* kind, const std::string& name,
+               const BodyMassProperties& b, const std::vector<std::string>& members,
+               const LinkGeometryComparison* comparison, const std::string& target) const {
+    Start(report, kind, name, b.frame);
+    out_ << ',' << Number(b.mass, kCsvDigits);
+    for (int i = 0; i < 3; ++i) out_ << ',' << Number(b.com(i), kCsvDigits);
+    const Eigen::Matrix3d& I = b.inertia_about_com;
+    for (double v : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) {
+      out_ << ',' << Number(v, kCsvDigits);
+    }
+    for (int i = 0; i < 3; ++i) out_ << ',' << Number(b.principal_moments(i), kCsvDigits);
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 3; ++i) out_ << ',' << Number(b.principal_axes(i, k), kCsvDigits);
+    }
+    for (int k = 0; k < 3; ++k) {
+      out_ << ',';
+      if (b.equivalent_box) out_ << Number((*b.equivalent_box)(k), kCsvDigits);
+    }
+    out_ << ',' << Number(b.digits_lost, 4) << ',' << Joined(members);
+    GeometryFields(comparison);
+    TargetFields(target, "", "");
+    out_ << '\n';
+  }
+
+  // A MuJoCo body: its mass and principal moments; the other numbers are empty.
+  void MujocoRow(const ModelMassReport& report, const TargetBody& b) const {
+    Start(report, "target_body", b.name, "");
+    out_ << ',' << Number(b.mass, kCsvDigits) << ",,,,,,,,,";
+    for (double m : b.mujoco_moments) out_ << ',' << Number(m, kCsvDigits);
+    out_ << ",,,,,,,,,,,,,," << Joined(b.links);
+    GeometryFields(nullptr);
+    TargetFields("mujoco", b.moving ? "true" : "false", "");
+    out_ << '\n';
+  }
+
+  // A row without numbers: MuJoCo's refusal or a reason it is not predicted.
+  void MessageRow(const ModelMassReport& report, const char* kind, const std::string& name,
+                  const std::string& message) const {
+    Start(report, kind, name, "");
+    out_ << ",,,,,,,,,,,,,,,,,,,,,,,,,,,";
+    GeometryFields(nullptr);
+    TargetFields("mujoco", "", message);
+    out_ << '\n';
+  }
+
+ private:
+  void Start(const ModelMassReport& report, const char* kind, const std::string& name,
+             const std::string& frame) const {
+    out_ << CsvField(report.file) << ',' << CsvField(report.name) << ',' << kind << ','
+         << CsvField(name) << ',' << CsvField(frame);
+  }
+  static std::string Joined(const std::vector<std::string>& members) {
+    std::string joined;
+    for (std::size_t i = 0; i < members.size(); ++i) joined += (i ? ";" : "") + members[i];
+    return CsvField(joined);
+  }
+  void GeometryFields(const LinkGeometryComparison* c) const {
+    if (!geometry_) return;
+    if (c == nullptr || !c->error.empty()) {
+      for (int i = 0; i < 17; ++i) out_ << ',';
+      out_ << ',' << (c == nullptr ? std::string() : CsvField(c->error));
+      return;
+    }
+    out_ << ',' << (c->from_collision ? "collision" : "visual");
+    for (int i = 0; i < 3; ++i) out_ << ',' << Number(c->geometry.com(i), kCsvDigits);
+    const Eigen::Matrix3d& G = c->geometry.inertia_about_com;
+    for (double v : {G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2), G(1, 2)}) {
+      out_ << ',' << Number(v, kCsvDigits);
+    }
+    for (int k = 0; k < 3; ++k) {
+      out_ << ',' << Number(c->geometry.principal_moments(k), kCsvDigits);
+    }
+    for (int k = 0; k < 3; ++k) {
+      out_ << ',';
+      if (std::isfinite(c->moment_rel_diff(k))) out_ << Number(c->moment_rel_diff(k), kCsvDigits);
+    }
+    out_ << ',';
+    if (c->axis_angle_deg) out_ << Number(*c->axis_angle_deg, kCsvDigits);
+    out_ << ',';
+  }
+  void TargetFields(const std::string& target, const char* moving,
+                    const std::string& message) const {
+    if (target_) out_ << ',' << target << ',' << moving << ',' << CsvField(message);
+  }
+
+  std::ostream& out_;
+  bool geometry_;
+  bool target_;
+};
+
+// The target part of one model's CSV rows (after its own rows).
+void WriteCsvTarget(const CsvWriter& csv, const ModelMassReport& report,
+                    const ModelTargetReport& target) {
+  for (const TargetBody& b : target.bodies) {
+    if (b.properties) {
+      csv.BodyRow(report, "target_body", b.name, *b.properties, b.links, nullptr,
+                  ToString(target.target));
+    } else {
+      csv.MujocoRow(report, b);
+    }
+  }
+  if (target.target != Target::kMujoco) return;
+  if (!target.accepted) {
+    csv.MessageRow(report, "target_refusal", target.refusal_body, target.refusal_message);
+  }
+  for (const std::string& why : target.not_predicted) {
+    csv.MessageRow(report, "target_not_predicted", "", why);
+  }
+}
+
+void WriteCsv(std::ostream& out, const std::vector<ModelMassReport>& reports,
+              const std::vector<ModelTargetReport>& targets) {
   // With --geometry, every row gets the geometry comparison's columns too (empty for groups,
-  // totals and links without one), so that the header does not change otherwise.
+  // totals and links without one), so that the header does not change otherwise; the same for
+  // the target columns with --target.
   bool geometry = false;
   for (const ModelMassReport& report : reports) {
     for (const LinkMassReport& link : report.links) geometry = geometry || link.geometry;
   }
-  if (geometry) {
-    out << ",geometry_source,geometry_com_x,geometry_com_y,geometry_com_z,geometry_ixx,"
-           "geometry_iyy,geometry_izz,geometry_ixy,geometry_ixz,geometry_iyz,"
-           "geometry_principal_moment_1,geometry_principal_moment_2,geometry_principal_moment_3,"
-           "geometry_rel_diff_1,geometry_rel_diff_2,geometry_rel_diff_3,geometry_axis_angle_deg,"
-           "geometry_error";
-  }
-  out << '\n';
-  constexpr int kDigits = std::numeric_limits<double>::max_digits10;
-  auto geometry_fields = [&](const LinkGeometryComparison* c) {
-    if (!geometry) return;
-    if (c == nullptr || !c->error.empty()) {
-      for (int i = 0; i < 17; ++i) out << ',';
-      out << ',' << (c == nullptr ? std::string() : CsvField(c->error));
-      return;
-    }
-    out << ',' << (c->from_collision ? "collision" : "visual");
-    for (int i = 0; i < 3; ++i) out << ',' << Number(c->geometry.com(i), kDigits);
-    const Eigen::Matrix3d& G = c->geometry.inertia_about_com;
-    for (double v : {G(0, 0), G(1, 1), G(2, 2), G(0, 1), G(0, 2), G(1, 2)}) {
-      out << ',' << Number(v, kDigits);
-    }
-    for (int k = 0; k < 3; ++k) out << ',' << Number(c->geometry.principal_moments(k), kDigits);
-    for (int k = 0; k < 3; ++k) {
-      out << ',';
-      if (std::isfinite(c->moment_rel_diff(k))) out << Number(c->moment_rel_diff(k), kDigits);
-    }
-    out << ',';
-    if (c->axis_angle_deg) out << Number(*c->axis_angle_deg, kDigits);
-    out << ',';
-  };
-  auto row = [&](const ModelMassReport& report, const char* kind, const std::string& name,
-                 const BodyMassProperties& b, const std::vector<std::string>& members,
-                 const LinkGeometryComparison* comparison) {
-    out << CsvField(report.file) << ',' << CsvField(report.name) << ',' << kind << ','
-        << CsvField(name) << ',' << CsvField(b.frame) << ',' << Number(b.mass, kDigits);
-    for (int i = 0; i < 3; ++i) out << ',' << Number(b.com(i), kDigits);
-    const Eigen::Matrix3d& I = b.inertia_about_com;
-    for (double v : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) {
-      out << ',' << Number(v, kDigits);
-    }
-    for (int i = 0; i < 3; ++i) out << ',' << Number(b.principal_moments(i), kDigits);
-    for (int k = 0; k < 3; ++k) {
-      for (int i = 0; i < 3; ++i) out << ',' << Number(b.principal_axes(i, k), kDigits);
-    }
-    for (int k = 0; k < 3; ++k) {
-      out << ',';
-      if (b.equivalent_box) out << Number((*b.equivalent_box)(k), kDigits);
-    }
-    out << ',' << Number(b.digits_lost, 4) << ',';
-    std::string joined;
-    for (std::size_t i = 0; i < members.size(); ++i) joined += (i ? ";" : "") + members[i];
-    out << CsvField(joined);
-    geometry_fields(comparison);
-    out << '\n';
-  };
-  for (const ModelMassReport& report : reports) {
+  bool target = false;
+  for (const ModelTargetReport& t : targets) target = target || t.target != Target::kGeneric;
+  const CsvWriter csv(out, geometry, target);
+  csv.Header();
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const ModelMassReport& report = reports[i];
     for (const LinkMassReport& link : report.links) {
-      row(report, "link", link.name, link.properties, {link.name},
-          link.geometry ? &*link.geometry : nullptr);
+      csv.BodyRow(report, "link", link.name, link.properties, {link.name},
+                  link.geometry ? &*link.geometry : nullptr, "");
     }
     for (const GroupMassReport& group : report.welded_groups) {
-      row(report, "welded_group", group.root_link, group.properties, group.links, nullptr);
+      csv.BodyRow(report, "welded_group", group.root_link, group.properties, group.links, nullptr,
+                  "");
     }
-    if (report.total) row(report, "total", report.name, *report.total, {}, nullptr);
+    if (report.total) csv.BodyRow(report, "total", report.name, *report.total, {}, nullptr, "");
+    if (i < targets.size()) WriteCsvTarget(csv, report, targets[i]);
   }
 }
 
@@ -336,15 +456,65 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
 
 }  // namespace
 
+ModelTargetReport MakeTargetReport(const Model& model, Target target, const std::string& text) {
+  ModelTargetReport out;
+  out.target = target;
+  auto names = [&](const std::vector<int>& links) {
+    std::vector<std::string> v;
+    for (int l : links) v.push_back(model.links[l].name);
+    return v;
+  };
+  if (target == Target::kMujoco) {
+    const MujocoPrediction p = PredictMujoco(model, ReadMujocoCompilerOptions(text));
+    for (const MujocoBody& b : p.bodies) {
+      TargetBody body;
+      body.name = b.name;
+      body.links = names(b.fused_links);
+      body.links.insert(body.links.begin(), b.name);
+      body.moving = b.moving;
+      body.mass = b.mass;
+      body.mujoco_moments = b.inertia;
+      out.bodies.push_back(std::move(body));
+    }
+    out.accepted = p.accepted();
+    if (!p.accepted()) {
+      out.refusal_message = p.errors.front().message;
+      out.refusal_body = p.errors.front().body;
+    }
+    out.not_predicted = p.unsupported;
+  } else if (target == Target::kGazebo) {
+    for (const GazeboBody& b : GazeboBodies(model, text)) {
+      const std::string& frame = model.links[b.links.front()].name;
+      out.bodies.push_back(
+          {frame, names(b.links),
+           MakeBodyMassProperties(frame, b.inertia.mass, b.inertia.p_RoScm_R, b.inertia.I_SScm_R)});
+    }
+  } else if (target == Target::kDrake) {
+    for (std::size_t l = 0; l < model.links.size(); ++l) {
+      const Link& link = model.links[l];
+      if (model.format == Model::Format::kUrdf && link.name == "world" &&
+          model.root_link == "world") {
+        continue;
+      }
+      const MassProperties m = LinkMassProperties(link, model.format);
+      out.bodies.push_back({link.name,
+                            {link.name},
+                            MakeBodyMassProperties(link.name, m.mass, m.p_FoScm_F, m.I_SScm_F)});
+    }
+  }
+  return out;
+}
+
 void WriteMassReport(std::ostream& out, MassReportFormat format,
                      const std::vector<ModelMassReport>& reports,
-                     const std::vector<MassReportError>& errors, double digits_lost_threshold) {
+                     const std::vector<MassReportError>& errors, double digits_lost_threshold,
+                     const std::vector<ModelTargetReport>& targets) {
   switch (format) {
     case MassReportFormat::kJson:
-      WriteJson(out, reports, errors);
+      WriteJson(out, reports, errors, targets);
       break;
     case MassReportFormat::kCsv:
-      WriteCsv(out, reports);
+      WriteCsv(out, reports, targets);
       break;
     case MassReportFormat::kText:
       WriteText(out, reports, digits_lost_threshold);

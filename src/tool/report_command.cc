@@ -9,8 +9,6 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -95,84 +93,6 @@ void WriteTargetBodies(std::ostream& out, const Model& model, Target target,
   }
 }
 
-using nlohmann::json;
-
-json Vec(const Eigen::Vector3d& v) { return {v(0), v(1), v(2)}; }
-
-// One body of `report --target` in JSON: its name, its links, mass, center of mass and inertia
-// about it, in the frame of its first link (the JSON report's conventions, docs/report.md).
-json BodyJson(const Model& model, const std::vector<int>& links, double mass,
-              const Eigen::Vector3d& com, const Eigen::Matrix3d& I) {
-  json names = json::array();
-  for (int l : links) names.push_back(model.links[l].name);
-  return {{"name", model.links[links.front()].name},
-          {"links", std::move(names)},
-          {"frame", model.links[links.front()].name},
-          {"mass", mass},
-          {"com", Vec(com)},
-          {"inertia_about_com",
-           {Vec(I.row(0).transpose()), Vec(I.row(1).transpose()), Vec(I.row(2).transpose())}}};
-}
-
-// MuJoCo's bodies after fusestatic (principal moments as its eigen-solver gives them) and its
-// verdict, as `report --target mujoco` writes them in text.
-void AddMujocoJson(const Model& model, const std::string& text, json* out) {
-  const MujocoPrediction p = PredictMujoco(model, ReadMujocoCompilerOptions(text));
-  for (const MujocoBody& b : p.bodies) {
-    json links = json::array({b.name});
-    for (int l : b.fused_links) links.push_back(model.links[l].name);
-    (*out)["target_bodies"].push_back({{"name", b.name},
-                                       {"links", std::move(links)},
-                                       {"moving", b.moving},
-                                       {"mass", b.mass},
-                                       {"principal_moments", b.inertia}});
-  }
-  (*out)["target_accepted"] = p.accepted();
-  (*out)["target_refusal"] =
-      p.accepted() ? json()
-                   : json{{"message", p.errors.front().message}, {"body", p.errors.front().body}};
-  (*out)["target_not_predicted"] = p.unsupported;
-}
-
-// What `report --target` adds to a model of the JSON report: "target", "target_bodies" (Gazebo:
-// lumped bodies; Drake: every link; MuJoCo: fused bodies and its verdict). A URDF root link named
-// "world" is the world for Gazebo and Drake, not a body.
-json TargetJson(const Model& model, Target target, const std::string& text) {
-  json out = {{"target", ToString(target)}, {"target_bodies", json::array()}};
-  if (target == Target::kMujoco) {
-    AddMujocoJson(model, text, &out);
-  } else if (target == Target::kGazebo) {
-    for (const GazeboBody& b : GazeboBodies(model, text)) {
-      out["target_bodies"].push_back(
-          BodyJson(model, b.links, b.inertia.mass, b.inertia.p_RoScm_R, b.inertia.I_SScm_R));
-    }
-  } else if (target == Target::kDrake) {
-    for (std::size_t l = 0; l < model.links.size(); ++l) {
-      const Link& link = model.links[l];
-      if (model.format == Model::Format::kUrdf && link.name == "world" &&
-          model.root_link == "world") {
-        continue;
-      }
-      const MassProperties m = LinkMassProperties(link, model.format);
-      out["target_bodies"].push_back(
-          BodyJson(model, {static_cast<int>(l)}, m.mass, m.p_FoScm_F, m.I_SScm_F));
-    }
-  }
-  return out;
-}
-
-// Re-writes the JSON report `text` with each model's target part added (`targets` parallel to
-// its "models"; null entries add nothing), printed as WriteMassReport prints it.
-void WriteJsonWithTargets(std::ostream& out, const std::string& text,
-                          const std::vector<json>& targets) {
-  json root = json::parse(text);
-  json& models = root["models"];
-  for (std::size_t i = 0; i < targets.size() && i < models.size(); ++i) {
-    if (!targets[i].is_null()) models[i].update(targets[i]);
-  }
-  out << root.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
-}
-
 struct MergeArgs {
   std::string input;
   std::string output;
@@ -216,11 +136,12 @@ bool ReadReportOptions(const ReportArgs& args, MassReportOptions* options) {
 // Reads one file and appends the report of each of its models to *reports, and what went wrong
 // to *errors; the reader's findings and warnings go to standard error, as `check` says them (the
 // numbers leave out what the reader skipped).
-// With `target_json` (JSON with a target): also each report's target part, parallel to *reports.
+// With `targets` (JSON or CSV with a target): also each report's target part, parallel to
+// *reports.
 void ReportFile(const std::string& file, const ReportArgs& args, const ReadOptions& read_options,
                 MassReportOptions options, MeshCache* mesh_cache,
                 std::vector<ModelMassReport>* reports, std::vector<MassReportError>* errors,
-                Target target, std::vector<json>* target_json) {
+                Target target, std::vector<ModelTargetReport>* targets) {
   const ReadResult read = ReadModelFile(file, read_options);
   PrintReaderFindings(read, CheckOptions{});
   for (const ReadError& e : read.errors) {
@@ -236,10 +157,10 @@ void ReportFile(const std::string& file, const ReportArgs& args, const ReadOptio
     std::string error;
     if (ComputeMassReport(model, options, &report, &error)) {
       reports->push_back(std::move(report));
-      if (target_json != nullptr) {
-        target_json->push_back(target == Target::kGeneric
-                                   ? json()
-                                   : TargetJson(model, target, ReadTextForTarget(file)));
+      if (targets != nullptr) {
+        targets->push_back(target == Target::kGeneric
+                               ? ModelTargetReport()
+                               : MakeTargetReport(model, target, ReadTextForTarget(file)));
       }
     } else {
       errors->push_back({file == "-" ? "<stdin>" : file, 0, error});
@@ -271,13 +192,14 @@ int RunReport(const ReportArgs& args) {
   std::vector<ModelMassReport> reports;
   std::vector<MassReportError> errors;
   MeshCache mesh_cache;
-  const bool json_targets =
-      format == MassReportFormat::kJson &&
+  // JSON and CSV carry the target part (report_format.h); the text format adds it below.
+  const bool with_targets =
+      format != MassReportFormat::kText &&
       std::any_of(targets.begin(), targets.end(), [](Target t) { return t != Target::kGeneric; });
-  std::vector<json> target_json;
+  std::vector<ModelTargetReport> target_reports;
   for (std::size_t i = 0; i < args.files.size(); ++i) {
     ReportFile(args.files[i], args, read_options, options, &mesh_cache, &reports, &errors,
-               targets[i], json_targets ? &target_json : nullptr);
+               targets[i], with_targets ? &target_reports : nullptr);
   }
   if (format != MassReportFormat::kJson) {
     for (const MassReportError& e : errors) {
@@ -285,13 +207,8 @@ int RunReport(const ReportArgs& args) {
                 << ": error: " << e.message << "\n";
     }
   }
-  if (json_targets) {
-    std::ostringstream text;
-    WriteMassReport(text, format, reports, errors, options.digits_lost_threshold);
-    WriteJsonWithTargets(std::cout, text.str(), target_json);
-  } else {
-    WriteMassReport(std::cout, format, reports, errors, options.digits_lost_threshold);
-  }
+  WriteMassReport(std::cout, format, reports, errors, options.digits_lost_threshold,
+                  target_reports);
   for (std::size_t i = 0; i < args.files.size() && format == MassReportFormat::kText; ++i) {
     if (targets[i] == Target::kGeneric) continue;
     const std::string text = ReadTextForTarget(args.files[i]);
@@ -333,6 +250,7 @@ int RunMerge(const MergeArgs& args) {
     }
     for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
+  for (const std::string& note : merged.notes) std::cerr << "massprops: note: " << note << "\n";
   std::cerr << "massprops: merged " << merged.merged_links << " link(s) into "
             << merged.groups_merged << " welded group root(s)\n";
   return kExitOk;
@@ -383,15 +301,19 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
   CLI::App* merge = app.add_subcommand(
       "merge-fixed",
       "Write the model with every welded group (links joined by fixed joints) merged into one "
-      "link carrying the composite inertial (URDF); with --target gazebo, as Gazebo lumps it.");
-  merge->add_option("IN", merge_args->input, "URDF file, or '-' for standard input")->required();
+      "link carrying the composite inertial (URDF or SDF); with --target gazebo, as Gazebo lumps "
+      "it.");
+  merge->add_option("IN", merge_args->input, "URDF or SDF file, or '-' for standard input")
+      ->required();
   merge->add_option("-o,--output", merge_args->output, "Output file, or '-' for standard output")
       ->required();
   merge
-      ->add_option("--target", merge_args->target,
-                   "Merge as this simulator does (docs/targets.md): generic (every fixed joint), "
-                   "gazebo (as libsdformat lumps: <preserveFixedJoint>/<disableFixedJointLumping> "
-                   "and joints from a root link named world kept); mujoco and drake are refused")
+      ->add_option(
+          "--target", merge_args->target,
+          "Merge as this simulator does (docs/targets.md): generic (every fixed joint), "
+          "gazebo (as libsdformat lumps: <preserveFixedJoint>/<disableFixedJointLumping> "
+          "and joints from a root link named world kept; SDF is not lumped: written unchanged); "
+          "mujoco and drake are refused")
       ->check(CLI::IsMember({"generic", "mujoco", "drake", "gazebo"}))
       ->capture_default_str();
   merge->callback([run, merge_args] { *run = [merge_args] { return RunMerge(*merge_args); }; });

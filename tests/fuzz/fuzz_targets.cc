@@ -14,6 +14,7 @@
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/urdf_reader.h"
+#include "massprops/output/merge_fixed.h"
 #include "massprops/output/xml_patch.h"
 
 namespace massprops::fuzz {
@@ -71,12 +72,33 @@ std::string FuzzUrdf(const std::uint8_t* data, std::size_t size) {
   return "";
 }
 
+// merge-fixed of an SDF text: when it merges, the result must read again with the merged links
+// gone.
+std::string CheckMergeFixed(const std::string& text, const ReadResult& read) {
+  const MergeFixedResult merged = MergeFixedJoints(text, "fuzz.sdf");
+  if (!merged.errors.empty() || merged.merged_links == 0) return "";
+  const ReadResult reread = ReadModelString(merged.text, "fuzz.sdf");
+  std::size_t before = 0, after = 0;
+  for (const Model& model : read.models) before += model.links.size();
+  for (const Model& model : reread.models) after += model.links.size();
+  if (!reread.ok() || after + merged.merged_links != before) {
+    std::string why = "the merged text does not read back with " +
+                      std::to_string(before - merged.merged_links) + " links (" +
+                      std::to_string(after) + ")";
+    for (const ReadError& e : reread.errors) why += "; " + e.ToString();
+    return why;
+  }
+  return "";
+}
+
 std::string FuzzSdf(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   SdfReadOptions options;
   options.use_environment = false;
-  CheckEverything(ReadSdfString(text, "fuzz.sdf", options));
-  return "";
+  const ReadResult read = ReadSdfString(text, "fuzz.sdf", options);
+  CheckEverything(read);
+  if (!read.ok() || read.models.empty()) return "";
+  return CheckMergeFixed(text, read);
 }
 
 std::string FuzzFix(const std::uint8_t* data, std::size_t size) {

@@ -15,7 +15,8 @@ namespace massprops::fuzz {
 /// URDF text → ReadUrdfString → ReaderFindings + CheckModel (every rule enabled) + the fix planner.
 std::string FuzzUrdf(const std::uint8_t* data, std::size_t size);
 
-/// SDF text (includes are not looked up) → ReadSdfString → every check, as FuzzUrdf.
+/// SDF text (includes are not looked up) → ReadSdfString → every check, as FuzzUrdf; then
+/// merge-fixed, whose result (when it merges) must read again with the merged links gone.
 std::string FuzzSdf(const std::uint8_t* data, std::size_t size);
 
 /// Model text (URDF or SDF, detected by content) → checks → PlanRepairs → PatchModelText. The
