@@ -279,8 +279,14 @@ TEST(MeshAwareChecksTest, FromGeometryUsesAMeshWithTheLinksMass) {
   EXPECT_NE(r.why.find("collision mesh"), std::string::npos) << r.why;
 }
 
-TEST(MeshAwareChecksTest, CheckCommandJudgesMeshLinksOnlyWithGeometry) {
-  const ToolRun without = RunTool("check '" + kDefects + "'", true);
+TEST(MeshAwareChecksTest, CheckCommandJudgesMeshProductsOnlyWithGeometry) {
+  // Without --geometry only the meshes' bounding boxes are read: the sign of the products needs
+  // the solid's inertia, so products_flipped is not flagged (the size rules are: see
+  // mesh_bounds_cli_test.cc); --no-geometry reads no mesh at all.
+  const ToolRun boxes = RunTool("check '" + kDefects + "'", true);
+  EXPECT_EQ(boxes.exit_code, 0);
+  EXPECT_EQ(boxes.output.find("[products-sign-suspect]"), std::string::npos) << boxes.output;
+  const ToolRun without = RunTool("check --no-geometry '" + kDefects + "'", true);
   EXPECT_EQ(without.exit_code, 0);
   EXPECT_NE(without.output.find("0 warnings"), std::string::npos) << without.output;
   const ToolRun with = RunTool("check --geometry --fail-on warning '" + kDefects + "'", true);

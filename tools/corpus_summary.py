@@ -22,6 +22,8 @@ model_paths = ["gazebo_models", "sdformat/test/integration/model", "gz-sim/test/
 cmd = [tool, "check", "--format", "json", "--fail-on", "error"]
 for p in model_paths:
     cmd += ["--model-path", p]
+# package://example-robot-data/... resolves to the corpus folder of that name (corpus README).
+cmd += ["--package-path", "."]
 start = time.monotonic()
 out = subprocess.run(cmd + files, cwd=corpus, capture_output=True, text=True)
 elapsed = time.monotonic() - start
@@ -41,7 +43,7 @@ for entry in report["files"]:
         rules[finding["rule"]] += 1
 
 columns = [r for r, _ in rules.most_common()]
-print(f"`{' '.join(['massprops', 'check', '--format', 'json'] + [a for p in model_paths for a in ('--model-path', p)])} <{len(files)} files>`"
+print(f"`{' '.join(['massprops', 'check', '--format', 'json'] + [a for p in model_paths for a in ('--model-path', p)] + ['--package-path', '.'])} <{len(files)} files>`"
       f" (run from ../shared/corpus): {elapsed:.2f} s wall for {len(files)} files in one process, exit code {out.returncode}.\n")
 print("| source | files | " + " | ".join(columns) + " |")
 print("|---|---:|" + "---:|" * len(columns))

@@ -361,6 +361,8 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
     resolve.model_file = model.file;
     resolve.cache = &cache;
     if (geometry) model_options.shape = MakeLinkShapeFunction(resolve);
+    // As `massprops check` by default: the meshes' bounding boxes give mesh-only links a size.
+    model_options.box = MakeLinkBoxFunction(resolve);
     std::vector<Finding> found = CheckModel(model, model_options);
     if (geometry) {
       GeometryCheckOptions geometry_options;
@@ -559,6 +561,8 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
     options.shape = MakeLinkShapeFunction(resolve);
     if (geometry) check_options.shape = options.shape;
   }
+  options.box = MakeLinkBoxFunction(resolve);  // as `massprops fix` by default
+  check_options.box = options.box;
 
   const std::vector<std::string> known_links =
       PlanFixRepairs(models, apply, check_options, options, &result);

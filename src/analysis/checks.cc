@@ -672,7 +672,7 @@ class Checker {
     const Eigen::Vector3d& c = judged.props.p_FoScm_F;
     judged.shape = CalcLinkShape(link, options_.shape);
     std::optional<GeometryBounds>& bounds = judged.bounds;
-    bounds = CalcLinkGeometryBounds(link, judged.shape);
+    bounds = CalcLinkGeometryBounds(link, judged.shape, options_.box);
     // Placeholder geometry and dummy masses: nothing to judge by (see kPlaceholderHalfDiagonal).
     judged.unjudged_because = UnjudgedBecause(link, bounds);
     if (!judged.unjudged_because.empty()) bounds.reset();
@@ -938,7 +938,7 @@ class Checker {
       if (j == link_index) continue;
       const Link& member = model_.links[j];
       if (member.geometries.empty()) continue;
-      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      const std::optional<GeometryBounds>& b = BoundsOfLink(j);
       if (!b) {
         result.partial = true;
         continue;
@@ -952,6 +952,15 @@ class Checker {
       }
     }
     return result;
+  }
+
+  // The known extent of link `link_index`'s geometry (primitives, and mesh boxes through
+  // options_.box), computed once per link: a link is looked at by each member of its group.
+  const std::optional<GeometryBounds>& BoundsOfLink(int link_index) const {
+    if (bounds_of_link_.empty()) bounds_of_link_.resize(model_.links.size());
+    std::optional<std::optional<GeometryBounds>>& memo = bounds_of_link_[link_index];
+    if (!memo) memo = CalcLinkGeometryBounds(model_.links[link_index], std::nullopt, options_.box);
+    return *memo;
   }
 
   // Whether `box` (in the frame of link `link_index`) lies, or may lie, inside the geometry of
@@ -968,7 +977,7 @@ class Checker {
       if (group.links[k] == link_index || !member.inertial || !(member.inertial->mass > 0)) {
         continue;
       }
-      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(member);
+      const std::optional<GeometryBounds>& b = BoundsOfLink(group.links[k]);
       // A neighbour with geometry of unknown size (a mesh not read) may hold the box: cannot
       // tell, say nothing.
       if (!member.geometries.empty() && (!b || b->partial)) return true;
@@ -1156,7 +1165,7 @@ class Checker {
       for (const Geometry& g : link.geometries) collisions += g.is_collision ? 1 : 0;
       if (collisions == 0) continue;
       // Zero-size or 1 mm placeholder collisions on a frame link: nothing to give a mass to.
-      const std::optional<GeometryBounds> b = CalcLinkGeometryBounds(link);
+      const std::optional<GeometryBounds>& b = BoundsOfLink(i);
       if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
         continue;
       }
@@ -1247,6 +1256,7 @@ class Checker {
   bool sdf_without_inertials_ = false;  // an SDF model none of whose links has an <inertial>
   bool model_note_given_ = false;       // model-without-inertials said
   std::vector<Finding> findings_;
+  mutable std::vector<std::optional<std::optional<GeometryBounds>>> bounds_of_link_;
 };
 
 }  // namespace
@@ -1460,6 +1470,27 @@ std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
   GeometryBounds from_shape{shape->box_B, shape->from_collision, 1, shape->kind == "mesh", false};
   if (bounds) from_shape.box_B.extend(bounds->box_B);
   return from_shape;
+}
+
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
+                                                     const std::optional<LinkShape>& shape,
+                                                     const LinkBoxFunction& box) {
+  std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, shape);
+  if ((bounds && !bounds->partial) || !box) return bounds;
+  std::optional<LinkGeometryBox> read;
+  try {
+    read = box(link);
+  } catch (const std::exception&) {
+    return bounds;
+  }
+  if (!read || read->known == 0 || read->box_B.isEmpty()) return bounds;
+  GeometryBounds result;
+  result.box_B = read->box_B;
+  result.from_collision = read->from_collision;
+  result.count = read->known;
+  result.from_mesh = read->meshes > 0;
+  result.partial = read->unknown > 0;
+  return result;
 }
 
 }  // namespace massprops

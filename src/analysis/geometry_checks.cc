@@ -53,6 +53,30 @@ LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve) {
   };
 }
 
+LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve) {
+  return [resolve](const Link& link) -> std::optional<LinkGeometryBox> {
+    if (link.geometries.empty()) return std::nullopt;
+    LinkGeometryBox result;
+    for (const Geometry& geometry : link.geometries) {
+      std::string error;
+      const std::optional<Eigen::AlignedBox3d> box = CalcGeometryBounds(geometry, resolve, &error);
+      if (!box || box->isEmpty()) {
+        ++result.unknown;
+        if (geometry.type == Geometry::Type::kMesh && result.unresolved_uri.empty()) {
+          result.unresolved_uri = geometry.uri.empty() ? "(empty filename)" : geometry.uri;
+          result.unresolved_reason = error;
+        }
+        continue;
+      }
+      result.box_B.extend(*box);
+      ++result.known;
+      if (geometry.type == Geometry::Type::kMesh) ++result.meshes;
+      if (geometry.is_collision) result.from_collision = true;
+    }
+    return result;
+  };
+}
+
 const std::vector<RuleInfo>& GeometryRules() {
   static const std::vector<RuleInfo> rules = {
       {kInertiaDisagreesWithGeometryRule, Severity::kWarning, false,

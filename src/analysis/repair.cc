@@ -450,7 +450,8 @@ class Planner {
     const Eigen::Matrix3d I = WrittenMatrix(w);
     const double trace = I.trace();
     if (!(w.mass > 0) || !(trace > 0)) return;
-    const std::optional<GeometryBounds> bounds = CalcLinkGeometryBounds(link, ShapeOf(link));
+    const std::optional<GeometryBounds> bounds =
+        CalcLinkGeometryBounds(link, ShapeOf(link), options_.box);
     const bool mesh = bounds && bounds->from_mesh;
     const double extent = bounds ? 0.5 * bounds->box_B.diagonal().norm() : 0;
     struct Candidate {
@@ -728,6 +729,7 @@ class RepairJudge {
   RepairJudge(const Model& model, const RepairOptions& options) : model_(model) {
     check_options_.tolerance = options.tolerance;
     check_options_.shape = options.shape;
+    check_options_.box = options.box;
     for (const Finding& f : CheckModel(model, check_options_)) {
       before_.insert({f.link, f.rule});
       // Mass given to a body outboard of a massless moving group turns the group's error into

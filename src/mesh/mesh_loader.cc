@@ -277,9 +277,60 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
   }
 }
 
+std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, std::string* error) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto found = bounds_.find(path);
+  if (found == bounds_.end()) {
+    BoundsEntry entry;
+    const auto loaded = meshes_.find(path);
+    if (loaded != meshes_.end()) {  // the full mesh is at hand: its box, no second read
+      if (loaded->second.mesh) {
+        Eigen::AlignedBox3d box;
+        for (const Eigen::Vector3d& v : loaded->second.mesh->vertices) box.extend(v);
+        entry.box = box;
+      } else {
+        entry.error = loaded->second.error;
+      }
+    } else {
+      Eigen::AlignedBox3d box;
+      if (LoadMeshBounds(path, &box, nullptr, &entry.error)) entry.box = box;
+      ++files_bounded_;
+    }
+    found = bounds_.emplace(path, std::move(entry)).first;
+  }
+  if (!found->second.box && error) *error = found->second.error;
+  return found->second.box;
+}
+
+std::optional<std::string> MeshCache::Resolve(const std::string& uri,
+                                              const MeshResolveOptions& options,
+                                              std::string* error) {
+  // package:// and model:// URIs do not depend on the model's folder: one lookup per run.
+  const bool searched = StartsWith(uri, "package://") || StartsWith(uri, "model://");
+  std::string key = uri + '\n' + (searched ? std::string() : BaseFolder(options).string()) + '\n' +
+                    (options.use_environment ? "env" : "") + '\n';
+  for (const auto& p : options.package_paths) key += p + '\n';
+  key += '\n';
+  for (const auto& p : options.model_paths) key += p + '\n';
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto found = resolved_.find(key);
+  if (found == resolved_.end()) {
+    std::string reason;
+    std::optional<std::string> path = ResolveMeshUri(uri, options, &reason);
+    found = resolved_.emplace(key, std::make_pair(std::move(path), std::move(reason))).first;
+  }
+  if (!found->second.first && error) *error = found->second.second;
+  return found->second.first;
+}
+
 int MeshCache::files_loaded() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return files_loaded_;
+}
+
+int MeshCache::files_bounded() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return files_bounded_;
 }
 
 // ------------------------------------------------------------------------------- geometry
@@ -345,6 +396,7 @@ std::optional<std::string> ResolveGeometryMesh(const Geometry& geometry,
   if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
     where.model_file = holder;
   }
+  if (where.cache != nullptr) return where.cache->Resolve(geometry.uri, where, reason);
   return ResolveMeshUri(geometry.uri, where, reason);
 }
 
@@ -452,6 +504,58 @@ std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry&
   result.p_BoGcm_B = geometry.X_BG.p_AB + geometry.X_BG.R_AB * p_GoGcm_G;
   result.I_GGcm_B = I_GGcm_G.ReExpress(geometry.X_BG.R_AB);
   return result;
+}
+
+std::optional<Eigen::AlignedBox3d> CalcGeometryBounds(const Geometry& geometry,
+                                                      const MeshResolveOptions& options,
+                                                      std::string* error) {
+  if (geometry.type != Geometry::Type::kMesh) {
+    if (geometry.type == Geometry::Type::kOther) {
+      if (error) *error = Describe(geometry) + ": this geometry type has no known extent";
+      return std::nullopt;
+    }
+    std::optional<Eigen::AlignedBox3d> box = CalcPrimitiveBounds(geometry);
+    if (!box && error) *error = Describe(geometry) + ": its pose or a dimension is not finite";
+    return box;
+  }
+  try {
+    std::string reason;
+    const std::optional<std::string> path = ResolveGeometryMesh(geometry, options, &reason);
+    if (!path) {
+      if (error) *error = Describe(geometry) + ": " + reason;
+      return std::nullopt;
+    }
+    const Eigen::Vector3d& s = geometry.scale;
+    const Pose& X_BG = geometry.X_BG;
+    if (!s.allFinite() || !X_BG.p_AB.allFinite() || !X_BG.R_AB.allFinite()) {
+      if (error) *error = Describe(geometry) + ": the scale or the pose is not finite";
+      return std::nullopt;
+    }
+    std::optional<Eigen::AlignedBox3d> file_box;
+    if (options.cache != nullptr) {
+      file_box = options.cache->Bounds(*path, &reason);
+    } else {
+      Eigen::AlignedBox3d box;
+      if (LoadMeshBounds(*path, &box, nullptr, &reason)) file_box = box;
+    }
+    if (!file_box) {
+      if (error) *error = Describe(geometry) + ": " + reason;
+      return std::nullopt;
+    }
+    // Scaled componentwise (a negative factor swaps that side's ends), then the 8 corners posed
+    // (an upper bound of the posed vertices' box: see the header).
+    const Eigen::Vector3d a = file_box->min().cwiseProduct(s), b = file_box->max().cwiseProduct(s);
+    const Eigen::AlignedBox3d scaled(a.cwiseMin(b), a.cwiseMax(b));
+    Eigen::AlignedBox3d box_B;
+    for (int corner = 0; corner < 8; ++corner) {
+      box_B.extend(X_BG.p_AB +
+                   X_BG.R_AB * scaled.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
+    }
+    return box_B;
+  } catch (const std::exception& e) {
+    if (error) *error = Describe(geometry) + ": " + e.what();
+    return std::nullopt;
+  }
 }
 
 std::optional<LinkGeometryInertia> CalcLinkGeometryInertia(const Link& link, double mass,

@@ -178,9 +178,32 @@ ReportSummary Summarize(const std::vector<FileResult>& results) {
       }
     }
     summary.read_errors += static_cast<int>(result.errors.size());
+    summary.mesh_links += result.mesh_links;
+    summary.mesh_links_unresolved += result.mesh_links_unresolved;
+    if (summary.first_unresolved_mesh.empty()) {
+      summary.first_unresolved_mesh = result.first_unresolved_mesh;
+    }
   }
   return summary;
 }
+
+namespace {
+
+// The summary's line on meshes that did not resolve; empty when there are none.
+std::string UnresolvedMeshesLine(const ReportSummary& s) {
+  if (s.mesh_links_unresolved == 0) return "";
+  const std::string& uri = s.first_unresolved_mesh;
+  const bool package = uri.rfind("package://", 0) == 0, model = uri.rfind("model://", 0) == 0;
+  const std::string hint = package ? "use --package-path DIR; "
+                           : model ? "use --model-path DIR; "
+                                   : "";
+  return "massprops: " + std::to_string(s.mesh_links_unresolved) +
+         (s.mesh_links_unresolved == 1 ? " link's mesh" : " links' meshes") +
+         " did not resolve or could not be read: their size is unknown to the geometry rules (" +
+         hint + "first: '" + ShortenLongWords(uri) + "')\n";
+}
+
+}  // namespace
 
 std::string RenderText(const std::vector<FileResult>& results, const ReportOptions& options) {
   const bool color = options.color;
@@ -219,6 +242,7 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
       out += "; " + Plural(options.skipped_files, "other file") + " in the folders skipped";
     }
     out += "\n";
+    out += UnresolvedMeshesLine(s);
   }
   return out;
 }
@@ -255,15 +279,20 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                      {"errors", errors}});
   }
   const ReportSummary s = Summarize(results);
-  const json document = {{"version", options.tool_version},
-                         {"files", files},
-                         {"summary",
-                          {{"files", s.files},
-                           {"errors", s.errors},
-                           {"warnings", s.warnings},
-                           {"notes", s.notes},
-                           {"read_errors", s.read_errors},
-                           {"skipped_files", options.skipped_files}}}};
+  const json document = {
+      {"version", options.tool_version},
+      {"files", files},
+      {"summary",
+       {{"files", s.files},
+        {"errors", s.errors},
+        {"warnings", s.warnings},
+        {"notes", s.notes},
+        {"read_errors", s.read_errors},
+        {"skipped_files", options.skipped_files},
+        {"mesh_links", s.mesh_links},
+        {"mesh_links_unresolved", s.mesh_links_unresolved},
+        {"first_unresolved_mesh",
+         s.first_unresolved_mesh.empty() ? json(nullptr) : json(s.first_unresolved_mesh)}}}};
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
@@ -331,10 +360,18 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
   json driver = {{"name", "massprops"}, {"version", options.tool_version}};
   if (!options.information_uri.empty()) driver["informationUri"] = options.information_uri;
   driver["rules"] = rules;
-  const json log = {
-      {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
-      {"version", "2.1.0"},
-      {"runs", json::array({{{"tool", {{"driver", driver}}}, {"results", sarif_results}}})}};
+  json run = {{"tool", {{"driver", driver}}}, {"results", sarif_results}};
+  const ReportSummary s = Summarize(results);
+  if (s.mesh_links > 0) {
+    run["properties"] = {
+        {"mesh_links", s.mesh_links},
+        {"mesh_links_unresolved", s.mesh_links_unresolved},
+        {"first_unresolved_mesh",
+         s.first_unresolved_mesh.empty() ? json(nullptr) : json(s.first_unresolved_mesh)}};
+  }
+  const json log = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
+                    {"version", "2.1.0"},
+                    {"runs", json::array({run})}};
   return log.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 

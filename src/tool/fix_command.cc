@@ -59,6 +59,7 @@ struct FixArgs {
   double tolerance = 1e-6;
   std::vector<std::string> model_paths;
   bool geometry = false;
+  bool no_geometry = false;  // --no-geometry: not even the meshes' bounding boxes
   std::vector<std::string> package_paths;
   std::string target;  // --target ("" = generic)
   bool include_files = false;
@@ -174,13 +175,20 @@ bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup)
   ApplyTargetProfile(setup->target, &setup->check);
   setup->check.tolerance = args.tolerance;
   setup->mujoco = ReadMujocoCompilerOptions(text);
-  // Meshes are read only when asked: --geometry (the checks and repairs use them) or
-  // --from-geometry (the inertials it replaces may come from meshes). Each file is read once.
+  // Meshes' mass properties are read only when asked: --geometry (the checks and repairs use
+  // them) or --from-geometry (the inertials it replaces may come from meshes). Each file is read
+  // once.
   setup->resolve =
       MakeResolveOptions(args.package_paths, args.model_paths, args.file, &setup->mesh_cache);
   if (args.geometry || args.from_geometry) {
     options.shape = MakeLinkShapeFunction(setup->resolve);
     if (args.geometry) setup->check.shape = options.shape;
+  }
+  // By default the meshes' bounding boxes (cheap: no mass properties) give mesh-only links an
+  // extent, for the checks that plan the repairs and for the re-check of each, as in `check`.
+  if (!args.no_geometry) {
+    options.box = MakeLinkBoxFunction(setup->resolve);
+    setup->check.box = options.box;
   }
   return true;
 }
@@ -590,9 +598,14 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
                   "mass; put FILE first or write --from-geometry=LINK")
       ->type_name("LINK")
       ->expected(0, -1);
-  fix->add_flag("--geometry", args->geometry,
-                "Judge and repair units, product signs and inertias about the origin against "
-                "mesh geometry too (as check --geometry); meshes are read");
+  CLI::Option* geometry =
+      fix->add_flag("--geometry", args->geometry,
+                    "Judge and repair units, product signs and inertias about the origin against "
+                    "mesh geometry too (as check --geometry); meshes are read");
+  fix->add_flag("--no-geometry", args->no_geometry,
+                "Do not read the meshes' bounding boxes (read by default so that mesh-only links "
+                "are judged against their size, as check does)")
+      ->excludes(geometry);
   AddPackagePathOption(fix, &args->package_paths);
   AddTargetOption(fix, &args->target);
   fix->add_option("--tolerance", args->tolerance,

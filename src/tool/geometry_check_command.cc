@@ -7,12 +7,14 @@
 #include "geometry_cli.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "massprops/output/reporters.h"
 
 namespace massprops::cli {
 namespace {
 
 struct GeometryArgs {
-  bool enabled = false;
+  bool enabled = false;      // --geometry
+  bool no_geometry = false;  // --no-geometry
   double factor = 2;
   std::vector<std::string> package_paths;
   MeshCache cache;  // One per run: each mesh file is read once.
@@ -47,9 +49,15 @@ MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_pa
 
 void AddGeometryCheckOptions(CLI::App* check) {
   GeometryArgs& args = Args();
-  check->add_flag("--geometry", args.enabled,
-                  "Read link geometry (meshes too): rules inertia-disagrees-with-geometry and "
-                  "mesh-unreadable");
+  CLI::Option* geometry =
+      check->add_flag("--geometry", args.enabled,
+                      "Read the meshes' mass properties: rules inertia-disagrees-with-geometry "
+                      "and mesh-unreadable, and mesh solids for products-sign-suspect");
+  check
+      ->add_flag("--no-geometry", args.no_geometry,
+                 "Do not read meshes at all (by default their bounding boxes are read, so that "
+                 "mesh-only links are judged against their size)")
+      ->excludes(geometry);
   check
       ->add_option("--geometry-factor", args.factor,
                    "inertia-disagrees-with-geometry: principal moments differing by more than "
@@ -62,9 +70,31 @@ void AddGeometryCheckOptions(CLI::App* check) {
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
                        CheckOptions* options) {
   GeometryArgs& args = Args();
-  if (!args.enabled) return;
-  options->shape = MakeLinkShapeFunction(
+  if (args.no_geometry) return;
+  const MeshResolveOptions resolve =
+      MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache);
+  if (args.enabled) options->shape = MakeLinkShapeFunction(resolve);
+  options->box = MakeLinkBoxFunction(resolve);
+}
+
+void CountMeshLinks(const Model& model, const std::vector<std::string>& model_paths,
+                    FileResult* result) {
+  GeometryArgs& args = Args();
+  if (args.no_geometry || args.enabled) return;
+  const LinkBoxFunction box = MakeLinkBoxFunction(
       MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache));
+  for (const Link& link : model.links) {
+    const bool has_mesh =
+        std::any_of(link.geometries.begin(), link.geometries.end(),
+                    [](const Geometry& g) { return g.type == Geometry::Type::kMesh; });
+    if (!has_mesh) continue;
+    ++result->mesh_links;
+    const std::optional<LinkGeometryBox> found = box(link);
+    if (!found || found->unresolved_uri.empty()) continue;
+    ++result->mesh_links_unresolved;
+    if (result->first_unresolved_mesh.empty())
+      result->first_unresolved_mesh = found->unresolved_uri;
+  }
 }
 
 void AddGeometryFindings(const Model& model, const CheckOptions& options,

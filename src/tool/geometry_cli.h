@@ -9,6 +9,7 @@
 #include "massprops/analysis/checks.h"
 #include "massprops/mesh/mesh_loader.h"
 #include "massprops/model/model.h"
+#include "massprops/output/reporters.h"
 
 namespace massprops::cli {
 
@@ -21,14 +22,23 @@ MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_pa
                                       const std::vector<std::string>& model_paths,
                                       const std::string& model_file, MeshCache* cache);
 
-/// Adds --geometry, --geometry-factor X and --package-path DIR to the check subcommand.
+/// Adds --geometry, --no-geometry, --geometry-factor X and --package-path DIR to the check
+/// subcommand.
 void AddGeometryCheckOptions(CLI::App* check);
 
-/// With --geometry: sets options->shape to a mesh-reading LinkShapeFunction for `model` (the
-/// run's mesh cache), so that CheckModel judges mesh-only links against their meshes too.
-/// Without it, leaves `options` unchanged.
+/// By default sets options->box to the meshes' bounding boxes (MakeLinkBoxFunction, the run's
+/// mesh cache), so that CheckModel judges mesh-only links against their size; with --geometry
+/// also options->shape to a mesh-reading LinkShapeFunction (the meshes' mass properties). With
+/// --no-geometry leaves `options` unchanged.
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
                        CheckOptions* options);
+
+/// In the default mode (neither --geometry, whose mesh-unreadable findings name each mesh, nor
+/// --no-geometry): counts into *result the links of `model` whose geometry includes a mesh, and
+/// those with a mesh that does not resolve or cannot be read (with the first such URI), for the
+/// one summary line that replaces a finding per link. Each mesh file is read once per run.
+void CountMeshLinks(const Model& model, const std::vector<std::string>& model_paths,
+                    FileResult* result);
 
 /// Appends the geometry findings of `model` when --geometry was given (one mesh cache per run),
 /// honouring `options.overrides` for the geometry rules. `model_paths` are searched for

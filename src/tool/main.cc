@@ -410,6 +410,7 @@ FileResult CheckFile(const std::string& file, const Settings& settings) {
     massprops::cli::UseGeometryShapes(model, settings.model_paths, &check_options);
     std::vector<Finding> findings = massprops::CheckModel(model, check_options);
     massprops::cli::AddGeometryFindings(model, settings.options, settings.model_paths, &findings);
+    massprops::cli::CountMeshLinks(model, settings.model_paths, &result);
     if (settings.target != massprops::Target::kGeneric) {
       const std::string text = massprops::cli::ReadTextForTarget(file);
       massprops::AddTargetFindings(model, settings.target, check_options,

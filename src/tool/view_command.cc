@@ -31,6 +31,7 @@
 #include "geometry_cli.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
+#include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/mass_report.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/analysis/welded_groups.h"
@@ -334,24 +335,35 @@ Settings SettingsFor(const ViewArgs& args, const std::string& file) {
   return settings;
 }
 
+// Appends to *findings those `massprops check` gives (`options`), and returns the repairs
+// `massprops fix` plans with its default options. Both read the meshes' bounding boxes, as the
+// tool does by default.
+std::vector<Repair> CheckAndPlan(const Model& model, const CheckOptions& options,
+                                 const MeshResolveOptions& resolve,
+                                 std::vector<Finding>* findings) {
+  CheckOptions check_options = options;
+  check_options.box = MakeLinkBoxFunction(resolve);
+  const std::vector<Finding> checked = CheckModel(model, check_options);
+  findings->insert(findings->end(), checked.begin(), checked.end());
+  RepairOptions repair_options;
+  repair_options.box = check_options.box;
+  CheckOptions fix_check;  // fix's checks: the default options, and the boxes
+  fix_check.box = check_options.box;
+  return PlanRepairs(model, CheckModel(model, fix_check), repair_options);
+}
+
 json ModelJson(const Model& model, const std::vector<Finding>& reader_findings,
                const Settings& settings, const ViewArgs& args, MeshTable* meshes) {
-  // Findings as `massprops check` gives them; repairs as `massprops fix` plans them (its default
-  // options: the repairs of its findings at the default tolerance).
+  const MeshResolveOptions resolve =
+      MakeResolveOptions(args.package_paths, settings.model_paths, model.file, meshes->cache());
   std::vector<Finding> findings = reader_findings;
-  {
-    std::vector<Finding> checked = CheckModel(model, settings.options);
-    findings.insert(findings.end(), checked.begin(), checked.end());
-  }
-  const std::vector<Repair> repairs = PlanRepairs(model, CheckModel(model), RepairOptions{});
+  const std::vector<Repair> repairs = CheckAndPlan(model, settings.options, resolve, &findings);
   AttachRepairs(repairs, findings);
   std::map<std::string, const Repair*> repair_of_link;
   for (const Repair& repair : repairs) repair_of_link.emplace(repair.link, &repair);
 
   std::vector<bool> reachable;
   const std::vector<Pose> X_WB = CalcLinkPosesInRootFrame(model, &reachable);
-  const MeshResolveOptions resolve =
-      MakeResolveOptions(args.package_paths, settings.model_paths, model.file, meshes->cache());
 
   json links = json::array();
   std::map<std::string, std::size_t> link_index;

@@ -62,6 +62,13 @@ struct CheckOptions {
   /// com-outside-geometry. Empty (the default): those links are judged without geometry, and
   /// CheckModel reads no file. `massprops check --geometry` sets MakeLinkShapeFunction.
   LinkShapeFunction shape;
+  /// The bounding box of links whose geometry includes meshes (read cheaply, no mass
+  /// properties: link_shape.h), for units-suspect, inertia-about-origin-suspect,
+  /// inertia-exceeds-geometry, com-outside-geometry and the welded-group geometry of these and of
+  /// inertial-missing; never for products-sign-suspect. Used where primitives (and `shape`) leave
+  /// a link's extent unknown. Empty: such links are judged without it. `massprops check` and
+  /// `fix` set MakeLinkBoxFunction by default (`--no-geometry` leaves it empty).
+  LinkBoxFunction box;
 };
 
 /// Runs every enabled rule on the model. Findings are ordered by location (line), then rule id.
@@ -123,5 +130,14 @@ std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link);
 /// a mesh-reading fallback), marked from_mesh when the shape came from meshes.
 std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
                                                      const std::optional<LinkShape>& shape);
+
+/// The same, and when that leaves some of the link's geometry of unknown extent (meshes not
+/// read), the union `box` gives of every geometry of the link (collision and visual): marked
+/// from_mesh when it holds a mesh, partial when some geometry is still unknown. Returns the
+/// primitives' (or shape's) answer when `box` is empty, gives nothing, or knows no geometry.
+/// Never throws.
+std::optional<GeometryBounds> CalcLinkGeometryBounds(const Link& link,
+                                                     const std::optional<LinkShape>& shape,
+                                                     const LinkBoxFunction& box);
 
 }  // namespace massprops

@@ -41,6 +41,13 @@ struct GeometryCheckOptions {
 /// The returned function holds a copy of `resolve` (the cache by pointer: it must outlive it).
 LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve);
 
+/// The LinkBoxFunction that reads only the meshes' bounding boxes (CalcGeometryBounds: STL and
+/// OBJ without assimp, other formats through it), each file once per `resolve.cache`, which should
+/// be set and outlive the function. `resolve.model_file` is the model's file (relative URIs); a
+/// geometry from an included SDF file is resolved relative to that file. For every geometry of
+/// the link, collision and visual. Never throws.
+LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve);
+
 /// The two rules above, as RuleInfo (both warnings, both off by default).
 const std::vector<RuleInfo>& GeometryRules();
 

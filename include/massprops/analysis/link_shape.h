@@ -4,7 +4,8 @@
 /// that compare it with the declared inertial. CheckModel and PlanRepairs never read files:
 /// the primitives (box, cylinder, ...) they measure themselves; for everything else (meshes) the
 /// caller may give a LinkShapeFunction, such as MakeLinkShapeFunction in geometry_checks.h,
-/// which reads the meshes.
+/// which reads the meshes' mass properties, and a LinkBoxFunction (MakeLinkBoxFunction), which
+/// reads only their bounding boxes.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -32,5 +33,30 @@ struct LinkShape {
 /// The shape of a link, or nullopt when it is not known (no geometry, a mesh that cannot be read).
 /// Must not throw.
 using LinkShapeFunction = std::function<std::optional<LinkShape>(const Link&)>;
+
+/// The extent of a link's geometry without its mass properties: the union of the bounding boxes
+/// of all its geometries, collision and visual, meshes included (a mesh's box is read from its
+/// vertices alone, which is cheap: MakeLinkBoxFunction in geometry_checks.h). This is what
+/// `massprops check` uses by default for links whose geometry includes meshes, so that the rules
+/// that compare an inertia or a center of mass with the size of the body (units-suspect,
+/// inertia-exceeds-geometry, inertia-about-origin-suspect, com-outside-geometry, and the
+/// welded-group union of inertial-missing) see those links. It says nothing of how the mass is
+/// spread inside the box, so it never feeds a rule that needs the solid's inertia or volume
+/// (products-sign-suspect, the repairs from geometry): those need a LinkShape (`--geometry`).
+struct LinkGeometryBox {
+  Eigen::AlignedBox3d box_B;  ///< In the link frame B (metres); empty when known == 0.
+  int known = 0;              ///< Geometries in the box.
+  int meshes = 0;             ///< Of which meshes.
+  /// Geometries whose extent could not be told (a mesh that does not resolve or cannot be read,
+  /// an unknown geometry type): the body may reach beyond the box.
+  int unknown = 0;
+  bool from_collision = false;  ///< Some collision geometry is in the box.
+  /// The first mesh that could not be used (its URI) and why; empty when none.
+  std::string unresolved_uri;
+  std::string unresolved_reason;
+};
+
+/// The LinkGeometryBox of a link, or nullopt when it has no geometry. Must not throw.
+using LinkBoxFunction = std::function<std::optional<LinkGeometryBox>(const Link&)>;
 
 }  // namespace massprops

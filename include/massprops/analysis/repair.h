@@ -67,6 +67,10 @@ struct RepairOptions {
   /// are (from-geometry, units, products sign) when set; see CheckOptions::shape. `massprops fix`
   /// sets MakeLinkShapeFunction with --geometry or --from-geometry.
   LinkShapeFunction shape;
+  /// The bounding box of links with meshes (CheckOptions::box): the extent the units repair and
+  /// the re-check of every repair judge by, as `check` does. `massprops fix` sets
+  /// MakeLinkBoxFunction unless --no-geometry.
+  LinkBoxFunction box;
 };
 
 /// One number (or a run of numbers) of the file that a repair changes.

@@ -71,6 +71,18 @@ std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshReso
 /// when the file cannot be read or parsed, or holds no triangle.
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error);
 
+/// The axis-aligned bounding box of the mesh file at `path`: of the vertices LoadMeshFile would
+/// give (same frame, unit and float rounding), without loading or integrating the triangles
+/// where that can be avoided. STL (binary or ascii) and OBJ (vertices used by a face, line or
+/// point element; `v x y z [w]` divided by w, as assimp does) are read directly, without assimp;
+/// every other format (DAE: its <unit> and node transforms), and a file these direct readers do
+/// not understand, goes through LoadMeshFile, so the box is always that of the full loader's mesh.
+/// *direct (if not null) tells whether the direct reader was used. Returns false and sets *error
+/// when LoadMeshFile would fail (no such file, cannot be parsed, no triangle, a vertex not
+/// finite). Never throws. Cost: one pass over the file's bytes (direct), else LoadMeshFile's.
+bool LoadMeshBounds(const std::string& path, Eigen::AlignedBox3d* box, bool* direct,
+                    std::string* error);
+
 /// Mesh files loaded once per run, and their mass properties per (file, scale). Thread-safe.
 class MeshCache {
  public:
@@ -86,8 +98,21 @@ class MeshCache {
                                                    const MeshInertiaOptions& options,
                                                    std::string* error);
 
+  /// The bounding box of the mesh at `path` (LoadMeshBounds), read on first use; from the
+  /// loaded mesh when Load already has it. Failures are remembered too. Returns nullopt and
+  /// sets *error on failure.
+  std::optional<Eigen::AlignedBox3d> Bounds(const std::string& path, std::string* error);
+
+  /// ResolveMeshUri(uri, options, error), remembered per (uri, the folder relative URIs start
+  /// from, the search paths, use_environment): a model references the same mesh from many links
+  /// and a package lookup lists folders and reads package.xml files.
+  std::optional<std::string> Resolve(const std::string& uri, const MeshResolveOptions& options,
+                                     std::string* error);
+
   /// How many times a file was actually read (for tests and statistics).
   int files_loaded() const;
+  /// How many files LoadMeshBounds read (Bounds calls that found nothing cached).
+  int files_bounded() const;
 
  private:
   struct Entry {
@@ -101,6 +126,13 @@ class MeshCache {
   std::map<std::tuple<std::string, double, double, double, int, double, double>, MeshMassProperties>
       properties_;
   int files_loaded_ = 0;
+  struct BoundsEntry {
+    std::optional<Eigen::AlignedBox3d> box;
+    std::string error;
+  };
+  std::map<std::string, BoundsEntry> bounds_;
+  std::map<std::string, std::pair<std::optional<std::string>, std::string>> resolved_;
+  int files_bounded_ = 0;
 };
 
 /// The mesh scaled by diag(scale): every vertex multiplied componentwise. A scale with an odd
@@ -131,6 +163,22 @@ struct GeometryMassProperties {
 std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry& geometry,
                                                                  const MeshResolveOptions& options,
                                                                  std::string* error);
+
+/// The axis-aligned bounding box, in the link frame B, of one geometry: CalcPrimitiveBounds for a
+/// primitive; for a mesh, the box of its file (LoadMeshBounds, through options.cache when set)
+/// scaled by the geometry's scale and posed by X_BG. The 8 corners of the scaled box are posed,
+/// not the vertices (the file's box is all that is kept per file): under a rotation that is not
+/// a multiple of 90° about the axes this box is larger than that of the posed vertices (up to
+/// √3 times in each direction, for a long thin mesh turned 45° about two axes); it is always an
+/// upper bound, which is what the checks' "inertia too large for the geometry" verdicts need,
+/// and their "too small" verdicts (a factor 30) are far above that slack.
+/// CalcGeometryMassProperties gives the exact box of the posed vertices. Returns nullopt and sets
+/// *error (if not null) for a mesh that cannot be resolved or read, a non-finite scale or pose, or
+/// a geometry of type kOther. Never throws. Cost: primitives a few flops; a mesh one read of its
+/// file per cache.
+std::optional<Eigen::AlignedBox3d> CalcGeometryBounds(const Geometry& geometry,
+                                                      const MeshResolveOptions& options,
+                                                      std::string* error);
 
 /// The inertia a link's geometry implies for a given mass.
 struct LinkGeometryInertia {

@@ -22,6 +22,13 @@ struct FileResult {
   std::vector<std::string> models;  ///< Names of the models read from the file.
   std::vector<Finding> findings;    ///< In the order CheckModel returned them.
   std::vector<ReadError> errors;    ///< Why the file (or part of it) could not be read.
+  /// Links whose geometry includes a mesh, when `check` read the meshes' bounding boxes (its
+  /// default; 0 with --no-geometry or --geometry) ...
+  int mesh_links = 0;
+  /// ... of which those with a mesh that did not resolve or could not be read (their extent is
+  /// unknown: said once in the summary, not per link), and the first such mesh's URI.
+  int mesh_links_unresolved = 0;
+  std::string first_unresolved_mesh;
 };
 
 /// Counts over a list of results. `errors`, `warnings` and `notes` count findings by severity;
@@ -32,6 +39,9 @@ struct ReportSummary {
   int warnings = 0;
   int notes = 0;
   int read_errors = 0;
+  int mesh_links = 0;                 ///< Sum of FileResult::mesh_links.
+  int mesh_links_unresolved = 0;      ///< Sum of FileResult::mesh_links_unresolved.
+  std::string first_unresolved_mesh;  ///< The first file's first_unresolved_mesh that is set.
 };
 
 enum class ReportFormat { kText, kJson, kSarif, kGithub };
@@ -65,7 +75,10 @@ ReportSummary Summarize(const std::vector<FileResult>& results);
 
 /// One line per finding, `file:line:col: severity: message [rule-id]` (`:col` left out when the
 /// column is unknown, `:line` too when the line is), one line per ReadError,
-/// `file:line:col: error: element: message [read-error]`, then (unless quiet) a summary line.
+/// `file:line:col: error: element: message [read-error]`, then (unless quiet) a summary line,
+/// and when some links' meshes did not resolve, one more line that says how many (and the first
+/// URI), e.g. `massprops: 12 links' meshes did not resolve or could not be read: their size is
+/// unknown to the geometry rules (use --package-path DIR; first: 'package://x/y.stl')`.
 /// The file named is the finding's own location file when it has one (an SDF <include> may point
 /// into another file), else the FileResult's path.
 std::string RenderText(const std::vector<FileResult>& results, const ReportOptions& options = {});
@@ -74,14 +87,17 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
 /// {"version", "files": [{"path", "format", "models", "findings": [{"rule", "severity", "model",
 /// "link", "file", "line", "column", "message", "values": {name: number}}], "errors": [{"file",
 /// "line", "column", "element", "message"}]}], "summary": {"files", "errors", "warnings", "notes",
-/// "read_errors"}}. Non-finite values are written as null. Indented by two spaces.
+/// "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
+/// "first_unresolved_mesh" (a string, or null when none)}}. Non-finite values are written as null.
+/// Indented by two spaces.
 std::string RenderJson(const std::vector<FileResult>& results, const ReportOptions& options = {});
 
 /// A SARIF 2.1.0 log with one run: the driver lists every rule of AllRules(), "read-error" and
 /// "read-warning";
 /// each finding and ReadError is a result with ruleId, ruleIndex, level, message and a physical
 /// location (artifact URI relative to the working directory when the path is relative, a
-/// file:// URI when absolute; region only when the line is known).
+/// file:// URI when absolute; region only when the line is known). When meshes were read, the
+/// run's "properties" hold "mesh_links", "mesh_links_unresolved" and "first_unresolved_mesh".
 std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options = {});
 
 /// One GitHub Actions workflow command per finding and ReadError:
