@@ -14,6 +14,7 @@
 #include <sys/resource.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -21,6 +22,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -491,6 +493,142 @@ TEST(UrdfReaderTest, ReadsFromSeveralThreadsAtOnce) {
   for (std::size_t t = 0; t < masses.size(); ++t) {
     EXPECT_EQ(masses[t], t % 2 == 0 ? 3.0 : 1.0) << "thread " << t;
   }
+}
+
+// A file urdfdom refuses, with a reason that names `tag` (unique per read), and the finding
+// massprops must make of it. Odd: urdfdom's initTree (urdf_model/model.h 1.0.5) throws "child link
+// [ghost_TAG] of joint [j_TAG] not found", which parseURDF (urdfdom 3.0.1, model.cpp) logs as
+// "Failed to build tree: %s". Even: Vector3::init (urdf_model/pose.h) throws "Parser found 4
+// elements but 3 expected while parsing vector [0 0 0 TAG]", parsePose logs it, then parseJoint
+// logs "Malformed parent origin element for joint [j_TAG]" (joint.cpp) and parseURDF "joint xml is
+// not initialized correctly" (a wrap-up massprops leaves out); ReportNotLoadable joins a
+// "Malformed ..." message with the one before it.
+// 40 more links after the joint make each read last longer, so that reads overlap in time.
+struct Refused {
+  std::string xml;
+  std::string message;
+};
+Refused RefusedNaming(int tag) {
+  const std::string t = std::to_string(tag);
+  std::string padding;
+  for (int k = 0; k < 40; ++k) padding += "<link name=\"pad" + std::to_string(k) + "\"/>";
+  const std::string prefix = "ROS's URDF parser will not load this file: ";
+  const std::string suffix = "; massprops checks its mass properties from a lenient reading";
+  if (tag % 2 == 1) {
+    return {"<robot name=\"r\"><link name=\"a\"/>\n<joint name=\"j_" + t +
+                "\" type=\"fixed\"><parent link=\"a\"/><child link=\"ghost_" + t + "\"/></joint>" +
+                padding + "</robot>",
+            prefix + "Failed to build tree: child link [ghost_" + t + "] of joint [j_" + t +
+                "] not found" + suffix};
+  }
+  return {"<robot name=\"r\"><link name=\"a\"/><link name=\"b\"/>\n<joint name=\"j_" + t +
+              "\" type=\"fixed\"><origin rpy=\"0 0 0 " + t +
+              "\"/><parent link=\"a\"/><child link=\"b\"/></joint>" + padding + "</robot>",
+          prefix + "Malformed parent origin element for joint [j_" + t +
+              "]: Parser found 4 elements but 3 expected while parsing vector [0 0 0 " + t + "]" +
+              suffix};
+}
+
+// A handler that several threads may call (console_bridge calls it under its own mutex; the
+// lock here also covers the test's reads).
+class SharedRecorder : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text, console_bridge::LogLevel, const char*, int) override {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    messages_.push_back(text);
+  }
+  std::vector<std::string> messages() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return messages_;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> messages_;
+};
+
+// Six threads read 100 files each at once, half of them refused for a reason that names the read,
+// while a seventh thread logs 200 messages of its own through console_bridge. Each read must get
+// exactly its own urdfdom messages (the finding is built from the last one or two of them, in
+// order: a message of another read, or a missing one, changes it), and the caller's handler must
+// get exactly the other thread's messages, none of urdfdom's.
+void ReadConcurrentlyWhileAnotherThreadLogs(SharedRecorder* recorder) {
+  constexpr int kThreads = 6;
+  constexpr int kReads = 100;
+  constexpr int kLogged = 200;
+  std::vector<std::string> failures(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&failures, t] {
+      for (int k = 0; k < kReads; ++k) {
+        const int tag = 1000 * t + k;
+        if (k % 4 == 3) {  // one read in four: a file urdfdom loads
+          const ReadResult r = Read("<robot name=\"r\"><link name=\"a\"/></robot>");
+          if (!r.findings.empty() || r.models.size() != 1) failures[t] += "clean read failed\n";
+          continue;
+        }
+        const Refused refused = RefusedNaming(tag);
+        const ReadResult r = Read(refused.xml);
+        const std::vector<ReadFinding> f = FindingsOf(r, "urdf-not-loadable");
+        if (f.size() != 1 || f[0].message != refused.message || f[0].location.line != 2) {
+          failures[t] += "read " + std::to_string(tag) + ": " +
+                         (f.empty() ? std::string("no finding") : f[0].message) + "\n";
+        }
+      }
+    });
+  }
+  std::thread logger([] {
+    for (int k = 0; k < kLogged; ++k) CONSOLE_BRIDGE_logError("application message %d", k);
+  });
+  for (std::thread& thread : threads) thread.join();
+  logger.join();
+  for (int t = 0; t < kThreads; ++t) EXPECT_EQ(failures[t], "") << "thread " << t;
+  std::vector<std::string> expected;
+  for (int k = 0; k < kLogged; ++k) expected.push_back("application message " + std::to_string(k));
+  EXPECT_EQ(recorder->messages(), expected);
+}
+
+TEST(UrdfReaderTest, ConcurrentReadsEachGetExactlyTheirOwnUrdfdomMessages) {
+  // The caller's handler is in place before any read (the usual order: massprops then puts its
+  // handler in front and reads in parallel) or was installed after one (massprops then puts its
+  // handler in front for each read alone); both are run.
+  SharedRecorder recorder;
+  console_bridge::useOutputHandler(&recorder);
+  ReadConcurrentlyWhileAnotherThreadLogs(&recorder);
+  SharedRecorder later;
+  console_bridge::useOutputHandler(&later);
+  ReadConcurrentlyWhileAnotherThreadLogs(&later);
+  EXPECT_EQ(console_bridge::getOutputHandler(), &later) << "the caller's handler stays in place";
+  EXPECT_EQ(console_bridge::getLogLevel(), console_bridge::CONSOLE_BRIDGE_LOG_WARN);
+  console_bridge::noOutputHandler();
+}
+
+TEST(UrdfReaderTest, ALogLevelOfNoneStillGivesUrdfdomsReasonsAndPrintsNothingElse) {
+  // console_bridge drops every message below the level, so at CONSOLE_BRIDGE_LOG_NONE urdfdom's
+  // errors would not reach massprops: a read lowers the level to ERROR for its own duration and
+  // drops what other code logs meanwhile.
+  SharedRecorder recorder;
+  console_bridge::useOutputHandler(&recorder);
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_NONE);
+  std::atomic<bool> done{false};
+  std::thread logger([&done] {
+    while (!done) {
+      CONSOLE_BRIDGE_logError("must not appear");
+      std::this_thread::yield();
+    }
+  });
+  for (int tag = 1; tag <= 20; ++tag) {
+    const Refused refused = RefusedNaming(tag);
+    const std::vector<ReadFinding> f = FindingsOf(Read(refused.xml), "urdf-not-loadable");
+    ASSERT_EQ(f.size(), 1u) << tag;
+    EXPECT_EQ(f[0].message, refused.message);
+  }
+  done = true;
+  logger.join();
+  EXPECT_EQ(console_bridge::getLogLevel(), console_bridge::CONSOLE_BRIDGE_LOG_NONE);
+  EXPECT_EQ(recorder.messages(), std::vector<std::string>{});
+  console_bridge::setLogLevel(console_bridge::CONSOLE_BRIDGE_LOG_WARN);
+  console_bridge::noOutputHandler();
 }
 
 // ---------------------------------------------------------------- files urdfdom refuses

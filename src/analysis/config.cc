@@ -1,12 +1,19 @@
 #include "massprops/analysis/config.h"
 
+// toml++ compiled into this file (header-only) with hidden visibility: no libtomlplusplus.so
+// for the dynamic loader to map and relocate at every start of the tool.
+#define TOML_HEADER_ONLY 1
+#pragma GCC visibility push(hidden)
 #include <toml++/toml.h>
+#pragma GCC visibility pop
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 namespace massprops {
 namespace {
@@ -156,25 +163,55 @@ Config LoadConfig(const std::string& path) {
   return config;
 }
 
-std::optional<std::string> FindConfigUpward(const std::string& dir) {
+namespace {
+
+// `dir` made absolute and normalized, then each parent up to the root; empty when the working
+// directory cannot be known.
+std::vector<fs::path> FoldersUpward(const std::string& dir) {
+  std::vector<fs::path> folders;
   std::error_code ec;
   fs::path current = fs::absolute(fs::path(dir.empty() ? "." : dir), ec);
-  if (ec) return std::nullopt;
+  if (ec) return folders;
   current = current.lexically_normal();
+  // "/a/b/" (from ".") names the folder "/a/b": without this, "/a/b" would be looked in twice.
+  if (!current.has_filename() && current.has_relative_path()) current = current.parent_path();
   while (true) {
-    const fs::path candidate = current / kConfigFileName;
-    if (fs::is_regular_file(candidate, ec)) return candidate.string();
+    folders.push_back(current);
     const fs::path parent = current.parent_path();
-    if (parent == current || parent.empty()) return std::nullopt;
+    if (parent == current || parent.empty()) return folders;
     current = parent;
   }
 }
 
+// The first of `folders` that holds a configuration file, as "folder/.massprops.toml".
+std::optional<std::string> FirstConfigIn(const std::vector<fs::path>& folders) {
+  for (const fs::path& folder : folders) {
+    std::error_code ec;
+    const fs::path candidate = folder / kConfigFileName;
+    if (fs::is_regular_file(candidate, ec)) return candidate.string();
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> FindConfigUpward(const std::string& dir) {
+  return FirstConfigIn(FoldersUpward(dir));
+}
+
 std::optional<std::string> FindConfigFor(const std::string& model_file) {
   const fs::path dir = model_file == "-" ? fs::path(".") : fs::path(model_file).parent_path();
-  std::optional<std::string> path = FindConfigUpward(dir.empty() ? "." : dir.string());
-  if (!path) path = FindConfigUpward(".");
-  return path;
+  const std::vector<fs::path> from_file = FoldersUpward(dir.empty() ? "." : dir.string());
+  std::optional<std::string> path = FirstConfigIn(from_file);
+  if (path) return path;
+  // Upward from the working directory, up to the first folder the search above already looked
+  // in: every folder above that one was looked in too (a model below the working directory, the
+  // usual case, then costs no second look at any folder).
+  std::vector<fs::path> from_cwd = FoldersUpward(".");
+  from_cwd.erase(
+      std::find_first_of(from_cwd.begin(), from_cwd.end(), from_file.begin(), from_file.end()),
+      from_cwd.end());
+  return FirstConfigIn(from_cwd);
 }
 
 void ApplyConfig(const Config& config, CheckOptions& options) {

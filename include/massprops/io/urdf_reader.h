@@ -21,8 +21,13 @@
 /// read warnings. Only an unreadable input (missing file, too large, NUL bytes, malformed XML, no
 /// <robot>) is a ReadError.
 ///
-/// urdfdom logs through one process-wide console_bridge handler: reads are serialized around
-/// `urdf::parseURDF` (a mutex), so reading from several threads is safe.
+/// urdfdom logs through console_bridge, whose output handler and log level are process-wide. The
+/// first read puts one massprops handler in front of the current one, for good: it keeps what a
+/// thread logs inside its own `urdf::parseURDF` call and forwards every other message to the
+/// handler it found, so reads on several threads run at once and the caller's logging still
+/// arrives. A read that finds another handler in front, or the level at
+/// CONSOLE_BRIDGE_LOG_NONE, runs alone with massprops' handler and the ERROR level, and puts both
+/// back (docs/urdf.md, "console_bridge").
 
 #include <cstddef>
 #include <string>
