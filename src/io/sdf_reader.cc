@@ -138,14 +138,6 @@ bool ParseVersion(const std::string& text, Version* v) {
   return r.ec == std::errc() && r.ptr == end;
 }
 
-Eigen::Matrix3d RotationFromRpy(double roll, double pitch, double yaw) {
-  // R = Rz(yaw) * Ry(pitch) * Rx(roll) (SDFormat's fixed-axis roll, pitch, yaw).
-  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
-
 /// State of one read: the pose graph, the errors, the include stack.
 class Reader {
  public:
@@ -311,7 +303,7 @@ class Reader {
         return X;
       }
       const double k = degrees ? kPi / 180.0 : 1.0;
-      X.R_AB = RotationFromRpy(v[3] * k, v[4] * k, v[5] * k);
+      X.R_AB = RotationFromRollPitchYaw(v[3] * k, v[4] * k, v[5] * k);
     }
     X.p_AB = Eigen::Vector3d(v[0], v[1], v[2]);
     return X;

@@ -888,13 +888,6 @@ std::optional<Eigen::Vector3d> LenientVector(std::string_view text) {
   return v;
 }
 
-Eigen::Matrix3d RotationFromRpy(const Eigen::Vector3d& rpy) {
-  return (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
-
 // The reading of only what carries mass properties, for files urdfdom refuses.
 class LenientReader {
  public:
@@ -979,7 +972,7 @@ class LenientReader {
       if (attribute[0] == 'x') {
         X.p_AB = *v;
       } else {
-        X.R_AB = RotationFromRpy(*v);
+        X.R_AB = RotationFromRollPitchYaw(v->x(), v->y(), v->z());
       }
     }
     return X;

@@ -70,4 +70,11 @@ std::string ReadError::ToString() const {
   return text;
 }
 
+Eigen::Matrix3d RotationFromRollPitchYaw(double roll, double pitch, double yaw) {
+  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
 }  // namespace massprops

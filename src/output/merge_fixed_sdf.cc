@@ -74,13 +74,6 @@ std::vector<double> Numbers(const std::string& text) {
   return values;
 }
 
-Eigen::Matrix3d RotationFromRpy(double roll, double pitch, double yaw) {
-  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
-
 // What the SDF version of the file changes here: SDF >= 1.7 names a pose's frame with
 // relative_to (before: the attribute frame), SDF >= 1.9 reads rotation_format and degrees.
 struct SdfVersion {
@@ -109,7 +102,7 @@ Pose PoseValue(const XMLElement* pose, const SdfVersion& version) {
   } else {
     const std::string degrees = version.v19 ? Attr(pose, "degrees") : "";
     const double k = degrees == "true" || degrees == "1" ? kPi / 180.0 : 1.0;
-    X.R_AB = RotationFromRpy(v[3] * k, v[4] * k, v[5] * k);
+    X.R_AB = RotationFromRollPitchYaw(v[3] * k, v[4] * k, v[5] * k);
   }
   return X;
 }

@@ -34,6 +34,10 @@ struct Pose {
   bool IsIdentity() const { return p_AB.isZero(0) && R_AB.isIdentity(0); }
 };
 
+/// The rotation of fixed-axis roll, pitch, yaw angles (radians), as URDF's rpy and SDFormat's pose
+/// write them: R = Rz(yaw)·Ry(pitch)·Rx(roll).
+Eigen::Matrix3d RotationFromRollPitchYaw(double roll, double pitch, double yaw);
+
 /// An <inertial>: mass, the pose of the inertial frame Bi in the link frame B, and the six
 /// numbers of the inertia about Bcm (the origin of Bi) expressed in Bi, exactly as written.
 /// Products use the negated convention of URDF and SDF (ixy = -∫xy dm).
@@ -113,13 +117,13 @@ struct Model {
   enum class Format { kUrdf, kSdf };
   std::string name;
   Format format = Format::kUrdf;
-  std::string file;           ///< The path as given.
-  std::vector<Link> links;    ///< In file order.
+  std::string file;         ///< The path as given.
+  std::vector<Link> links;  ///< In file order.
   /// In file order, except that a URDF link that is the child of several joints has the joint
   /// urdfdom hangs it from first among them (the others close loops and are left out of the tree).
   std::vector<Joint> joints;
-  std::string root_link;      ///< The link that is no joint's child (URDF: urdfdom's root).
-  SourceLocation location;    ///< The <robot>/<model> element.
+  std::string root_link;    ///< The link that is no joint's child (URDF: urdfdom's root).
+  SourceLocation location;  ///< The <robot>/<model> element.
   /// SDF <static>true</static> (of the top-level model or its <include>): the model never moves,
   /// so its links need no mass properties. Always false for URDF.
   bool is_static = false;
