@@ -6,6 +6,10 @@
 
 #ifndef MASSPROPS_MESH_BACKEND_STATIC
 #include <dlfcn.h>
+#include <link.h>
+#include <unistd.h>
+
+#include <vector>
 #endif
 
 namespace massprops::internal {
@@ -20,16 +24,42 @@ namespace {
 
 constexpr const char* kBackendFile = "libmassprops_meshlibs.so";
 
-// The folder of the shared object that holds this function (libmassprops.so), with a trailing
-// '/'; empty when it cannot be told.
-std::string ThisLibraryFolder() {
-  Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&GetMeshBackend), &info) == 0 || info.dli_fname == nullptr) {
-    return {};
-  }
-  const std::string path = info.dli_fname;
+#ifndef MASSPROPS_BIN_TO_LIB
+#define MASSPROPS_BIN_TO_LIB "../lib"
+#endif
+
+std::string FolderOf(const std::string& path) {
   const std::size_t slash = path.rfind('/');
   return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+// Where to look for the module, best first: beside the shared object that holds this function
+// (libmassprops.so: the build tree, an install prefix's lib folder); when this code is linked into
+// the executable instead (the `massprops` tool), beside the executable (the build tree) and in
+// its prefix's lib folder (installed); then the loader's search path (LD_LIBRARY_PATH, the cache).
+std::vector<std::string> Candidates() {
+  std::vector<std::string> candidates;
+  Dl_info info{};
+  link_map* map = nullptr;
+  if (dladdr1(reinterpret_cast<void*>(&GetMeshBackend), &info, reinterpret_cast<void**>(&map),
+              RTLD_DL_LINKMAP) != 0) {
+    if (map != nullptr && map->l_name != nullptr && map->l_name[0] != '\0') {
+      candidates.push_back(FolderOf(map->l_name) + kBackendFile);
+    } else {  // The main program: glibc gives it no name in its link map.
+      std::string exe(4096, '\0');
+      const ssize_t length = readlink("/proc/self/exe", exe.data(), exe.size());
+      if (length > 0 && static_cast<std::size_t>(length) < exe.size()) {
+        exe.resize(static_cast<std::size_t>(length));
+        const std::string folder = FolderOf(exe);
+        if (!folder.empty()) {
+          candidates.push_back(folder + kBackendFile);
+          candidates.push_back(folder + MASSPROPS_BIN_TO_LIB + "/" + kBackendFile);
+        }
+      }
+    }
+  }
+  candidates.emplace_back(kBackendFile);
+  return candidates;
 }
 
 struct Loaded {
@@ -39,12 +69,9 @@ struct Loaded {
 
 Loaded Load() {
   Loaded loaded;
-  // Beside libmassprops.so first (the build tree, an install prefix), then the loader's search
-  // path (LD_LIBRARY_PATH, the cache).
   std::string tried;
   void* handle = nullptr;
-  for (const std::string& candidate :
-       {ThisLibraryFolder() + kBackendFile, std::string(kBackendFile)}) {
+  for (const std::string& candidate : Candidates()) {
     handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (handle != nullptr) break;
     const char* why = dlerror();
