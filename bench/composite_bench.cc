@@ -6,13 +6,16 @@
 // link and the minor page faults per link and iteration (getrusage); Google Benchmark's O(N) fit
 // is printed too.
 //
-// What it measured (docs/benchmarks.md, section 2: the same run before and after issue #17's
-// fixes, load average 2.2-3.8 on 2 shared cores): CPU time per link after, at 10^3 / 10^4 /
-// 10^5 / 10^6 links, 109 / 117 / 317 / 443 ns for groups + composites (before: 163 / 167 / 513 /
-// 899) and 285 / 319 / 766 / 928 ns for the report (before: 361 / 440 / 1 238 / 1 431). The
-// instructions per link are flat (callgrind: 2 235-2 328 and 3 990-4 059 at 10^3-10^5), so the
-// work is linear; the step between 10^4 and 10^5 is memory: the model (448 bytes per link, 296 per
-// joint) leaves the 32 MB L3 and the simulated last-level misses per link go from 3 to 26. Command:
+// What it measured (docs/benchmarks.md, section 2, "Each link read once": before and after, built
+// from the same tree, run alternately on 2 shared cores at a load average of 3.1-5.1): CPU time per
+// link at 10^3 / 10^4 / 10^5 / 10^6 links, full report 271 / 277 / 711 / 724 ns (before: 292 /
+// 321 / 787 / 1 362: each link's inertial read five times, 712-byte entries), groups + composites
+// 110 / 116 / 244 / 432 ns (unchanged code). The work is linear (callgrind: flat instructions per
+// link, 2 235-2 328 and 3 990-4 059 at 10^3-10^5 in the first round); the time per link still
+// grows 2.7x (report) and 3.9x (groups + composites) from 10^3 to 10^6, nearly all between 10^4 and
+// 10^5 links, where the model (448 bytes per link, 296 per joint: 74 MB at 10^5) leaves the 32 MB
+// L3 and each pass over it reads from memory (simulated last-level misses per link 3 -> 26).
+// Command:
 //   build/bench/composite_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //     --benchmark_filter='BM_(WeldedGroupsAndComposites|FullReport)/(1000|10000|100000)$'
 // and for 10^6 links --benchmark_filter='BM_(WeldedGroupsAndComposites|FullReport)/1000000$'

@@ -109,6 +109,49 @@ TEST(MassReportTest, WeldedBoxCylinderSphereGroupMatchesHandComputedComposite) {
   ExpectNear(base->properties.inertia_about_com, HandBaseGroupInertia(), 1e-12);
 }
 
+// Exactly equal (==, not near): the full report keeps each link's mass properties and composes
+// the groups and the total from them; it must give the very numbers of the paths that read the
+// Links again.
+void ExpectSameBody(const BodyMassProperties& actual, const BodyMassProperties& expected) {
+  EXPECT_EQ(actual.mass, expected.mass);
+  EXPECT_EQ(actual.com, expected.com);
+  EXPECT_EQ(actual.inertia_about_com, expected.inertia_about_com);
+  EXPECT_EQ(actual.principal_moments, expected.principal_moments);
+}
+
+// The full report's links, groups and total against independent computations of the same numbers:
+// links and groups against the public LinkMassProperties and CalcCompositeInertia(model, group)
+// (which read each Link's <inertial>), the total against the --subtree report of the root link
+// (which computes each link's mass properties on demand, not from the full report's table).
+TEST(MassReportTest, FullReportIsBitForBitTheSameAsThePathsThatReadTheLinksAgain) {
+  for (const char* name : {"welded.urdf", "arm.urdf", "box.sdf", "far_tiny.urdf"}) {
+    SCOPED_TRACE(name);
+    const Model model = ReadFixture(name);
+    MassReportOptions options;
+    if (std::string(name) == "arm.urdf") options.joint_values = {{"joint1", 0.7}, {"slide", 0.2}};
+    const ModelMassReport report = Report(model, options);
+    ASSERT_EQ(report.links.size(), model.links.size());
+    for (std::size_t i = 0; i < model.links.size(); ++i) {
+      const MassProperties props = LinkMassProperties(model.links[i], model.format);
+      ExpectSameBody(
+          report.links[i].properties,
+          MakeBodyMassProperties(model.links[i].name, props.mass, props.p_FoScm_F, props.I_SScm_F));
+    }
+    const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
+    ASSERT_EQ(report.welded_groups.size(), groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const CompositeInertia c = CalcCompositeInertia(model, groups[g]);
+      ExpectSameBody(report.welded_groups[g].properties,
+                     MakeBodyMassProperties(groups[g].root_link, c.mass, c.p_RoScm_R, c.I_SScm_R));
+    }
+    options.subtree = model.root_link;
+    const ModelMassReport subtree = Report(model, options);
+    ASSERT_TRUE(report.total && subtree.total);
+    ASSERT_TRUE(report.unreachable_links.empty());
+    ExpectSameBody(*report.total, *subtree.total);
+  }
+}
+
 TEST(MassReportTest, GroupWithBoxTurnedThirtyDegreesMatchesHandComputedComposite) {
   const ModelMassReport report = Report(ReadFixture("welded.urdf"));
   const GroupMassReport* arm = FindGroup(report, "arm");

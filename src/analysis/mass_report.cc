@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -362,6 +363,42 @@ class FrameExpresser {
   std::optional<Pose> X_WF_;
 };
 
+// Each link's mass properties in its own frame, as LinkMassProperties gives them. In a full report
+// (every link, in file order) each link's are computed once, while its entry is made, and kept
+// (104 bytes a link, read back in order) for its group's composite and for the total: the report
+// reads each Link's <inertial> once instead of four times, which at 10^5-10^6 links is a read of
+// the 448-byte Link from memory each time (docs/benchmarks.md, section 2). With --only or
+// --subtree they are computed on demand (the work stays proportional to what is asked).
+class LinkPropsTable {
+ public:
+  LinkPropsTable(const Model& model, bool keep) : model_(model), keep_(keep) {
+    if (keep_) props_.reserve(model.links.size());
+  }
+
+  // The link's, computed; when kept, links must come in order 0, 1, 2, ...
+  const MassProperties& Add(int link) {
+    if (!keep_) return Get(link);
+    return props_.emplace_back(LinkMassProperties(model_.links[link], model_.format));
+  }
+  // The link's (when not kept: valid until the next call).
+  const MassProperties& Get(int link) {
+    if (keep_) return props_[link];
+    scratch_ = LinkMassProperties(model_.links[link], model_.format);
+    return scratch_;
+  }
+  // The group's composite, as CalcCompositeInertia(model, group) (bit for bit).
+  CompositeInertia Composite(const WeldedGroup& group) const {
+    return keep_ ? internal::CalcCompositeInertia(group, props_)
+                 : CalcCompositeInertia(model_, group);
+  }
+
+ private:
+  const Model& model_;
+  bool keep_;
+  std::vector<MassProperties> props_;  // per link, when kept
+  MassProperties scratch_;
+};
+
 // The top of the welded group holding `link`: up the tree through fixed joints.
 int GroupTop(const Model& model, const ModelIndex& index, int link) {
   int top = link;
@@ -410,14 +447,13 @@ void SelectLinksAndGroups(const Model& model, const ModelIndex& index, const Nam
 // cannot be expressed in the --frame link's frame.
 bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
                           const std::vector<int>& links, const std::vector<WeldedGroup>& groups,
-                          FrameExpresser* frame, ModelMassReport* report) {
-  // Reserved: LinkMassReport is large (it may hold a geometry comparison) and its implicit move
-  // may copy, so growing the vector re-copied every entry so far at each reallocation: with the
-  // page faults of the new blocks, the superlinear step of the report (docs/benchmarks.md).
+                          LinkPropsTable* table, FrameExpresser* frame, ModelMassReport* report) {
+  // Reserved: growing the vector re-copied every entry so far at each reallocation, with the page
+  // faults of the new blocks (docs/benchmarks.md, section 2).
   report->links.reserve(links.size());
   report->welded_groups.reserve(groups.size());
   for (int link : links) {
-    const MassProperties props = LinkMassProperties(model.links[link], model.format);
+    const MassProperties& props = table->Add(link);
     const BodyMassProperties body =
         MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
     if (!frame->CanExpress(link)) return false;
@@ -425,12 +461,12 @@ bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
     entry.name = model.links[link].name;
     entry.properties = frame->InFrame(body, link);
     if (options.geometry != nullptr) {
-      entry.geometry = CompareLinkWithGeometry(model.links[link], *options.geometry);
+      entry.geometry = std::make_shared<const LinkGeometryComparison>(
+          CompareLinkWithGeometry(model.links[link], *options.geometry));
     }
   }
   for (const WeldedGroup& group : groups) {
-    const BodyMassProperties body =
-        FromComposite(group.root_link, CalcCompositeInertia(model, group));
+    const BodyMassProperties body = FromComposite(group.root_link, table->Composite(group));
     if (!frame->CanExpress(group.links.front())) return false;
     GroupMassReport& entry = report->welded_groups.emplace_back();
     entry.root_link = group.root_link;
@@ -446,7 +482,8 @@ bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
 // error) when the total cannot be expressed in the --frame link's frame.
 bool ReportTotal(const Model& model, const ModelIndex& index,
                  const std::unordered_map<int, double>& joint_values, int anchor,
-                 const std::vector<int>& links, FrameExpresser* frame, ModelMassReport* report) {
+                 const std::vector<int>& links, LinkPropsTable* table, FrameExpresser* frame,
+                 ModelMassReport* report) {
   PoseSolver anchor_poses(model, index, joint_values, anchor);
   for (int link : links) {
     if (!anchor_poses.Get(link)) report->unreachable_links.push_back(model.links[link].name);
@@ -458,15 +495,16 @@ bool ReportTotal(const Model& model, const ModelIndex& index,
       [&](std::size_t k, double* mass, Eigen::Vector3d* p_AoLcm_A) {
         const std::optional<Pose> X_AL = anchor_poses.Get(links[k]);
         if (!X_AL) return false;
-        Eigen::Vector3d p_LoLcm_L;
-        *mass = internal::LinkMassAndCom(model.links[links[k]], model.format, &p_LoLcm_L);
-        *p_AoLcm_A = X_AL->p_AB + X_AL->R_AB * p_LoLcm_L;
+        // LinkMassAndCom's mass and center of mass, which are LinkMassProperties'.
+        const MassProperties& props_L = table->Get(links[k]);
+        *mass = props_L.mass;
+        *p_AoLcm_A = X_AL->p_AB + X_AL->R_AB * props_L.p_FoScm_F;
         return true;
       },
       [&](std::size_t k, MassProperties* props_A) {
         const std::optional<Pose> X_AL = anchor_poses.Get(links[k]);
         if (!X_AL) return false;
-        *props_A = InFrameA(LinkMassProperties(model.links[links[k]], model.format), *X_AL);
+        *props_A = InFrameA(table->Get(links[k]), *X_AL);
         return true;
       });
   const std::string anchor_name = anchor >= 0 ? model.links[anchor].name : model.root_link;
@@ -498,13 +536,16 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
   std::vector<int> links;
   std::vector<WeldedGroup> groups;
   SelectLinksAndGroups(model, index, named, &links, &groups);
-  if (!ReportLinksAndGroups(model, options, links, groups, &frame, report)) return false;
+  // A full report (every link in file order) keeps each link's mass properties for the groups
+  // and the total.
+  LinkPropsTable table(model, named.only.empty() && named.subtree < 0);
+  if (!ReportLinksAndGroups(model, options, links, groups, &table, &frame, report)) return false;
   if (!named.only.empty()) return true;
 
   // The total: every link of the model (or subtree) at its pose in the anchor's frame.
   const int root = index.FindLink(model.root_link);
   const int anchor = named.subtree >= 0 ? named.subtree : root;
-  return ReportTotal(model, index, joint_values, anchor, links, &frame, report);
+  return ReportTotal(model, index, joint_values, anchor, links, &table, &frame, report);
 }
 
 // ------------------------------------------------------------------------------ geometry

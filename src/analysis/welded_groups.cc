@@ -172,15 +172,19 @@ void FillGroupPoses(const Model& model, const TreeView& tree, const std::vector<
   }
 }
 
-// A link's mass properties in its frame L re-expressed in frame R (X_RL given); false for a link
-// with neither mass nor inertia, which composition leaves out.
-bool LinkPartInR(const Link& link, Model::Format format, const Pose& X_RL, MassProperties* part_R) {
-  const MassProperties props_L = LinkMassProperties(link, format);
+// A link's mass properties in its frame L (props_L) re-expressed in frame R (X_RL given); false
+// for a link with neither mass nor inertia, which composition leaves out.
+bool PartInR(const MassProperties& props_L, const Pose& X_RL, MassProperties* part_R) {
   if (props_L.mass == 0 && props_L.I_SScm_F.isZero(0)) return false;
   part_R->mass = props_L.mass;
   part_R->p_FoScm_F = X_RL.p_AB + X_RL.R_AB * props_L.p_FoScm_F;
   part_R->I_SScm_F = X_RL.R_AB * props_L.I_SScm_F * X_RL.R_AB.transpose();
   return true;
+}
+
+// The same, from the link's <inertial>.
+bool LinkPartInR(const Link& link, Model::Format format, const Pose& X_RL, MassProperties* part_R) {
+  return PartInR(LinkMassProperties(link, format), X_RL, part_R);
 }
 
 // The link's center of mass in frame R (X_RL given) and its mass, as LinkPartInR computes them.
@@ -288,6 +292,22 @@ CompositeInertia CalcCompositeInertia(const Model& model, const WeldedGroup& gro
       },
       [&](std::size_t k, MassProperties* part_R) {
         return LinkPartInR(model.links[group.links[k]], model.format, group.X_RL[k], part_R);
+      });
+}
+
+CompositeInertia internal::CalcCompositeInertia(const WeldedGroup& group,
+                                                const std::vector<MassProperties>& props_by_link) {
+  return internal::ComposeMassPropertiesOnDemand(
+      group.links.size(),
+      [&](std::size_t k, double* mass, Eigen::Vector3d* p_RoLcm_R) {
+        // LinkMassAndComInR's arithmetic: LinkMassAndCom gives these same mass and center of mass.
+        const MassProperties& props_L = props_by_link[group.links[k]];
+        *mass = props_L.mass;
+        *p_RoLcm_R = group.X_RL[k].p_AB + group.X_RL[k].R_AB * props_L.p_FoScm_F;
+        return true;
+      },
+      [&](std::size_t k, MassProperties* part_R) {
+        return PartInR(props_by_link[group.links[k]], group.X_RL[k], part_R);
       });
 }
 

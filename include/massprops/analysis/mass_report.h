@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -117,8 +118,10 @@ LinkGeometryComparison CompareLinkWithGeometry(const Link& link, const MeshResol
 struct LinkMassReport {
   std::string name;
   BodyMassProperties properties;
-  /// With MassReportOptions::geometry only.
-  std::optional<LinkGeometryComparison> geometry;
+  /// With MassReportOptions::geometry only (else null). Held apart, not in the entry: as an
+  /// optional member the 400-byte comparison made every entry 712 bytes instead of 320 (g++ 12,
+  /// x86-64), written for every link of every report (docs/benchmarks.md, section 2).
+  std::shared_ptr<const LinkGeometryComparison> geometry;
 };
 
 /// One welded group's entry.

@@ -164,6 +164,13 @@ double LinkMassAndCom(const Link& link, Model::Format format, Eigen::Vector3d* p
 std::vector<WeldedGroup> FindWeldedGroups(const Model& model, const std::vector<int>& parent_joint,
                                           const std::vector<int>& parent_link);
 
+// CalcCompositeInertia(model, group) from the members' mass properties already computed:
+// props_by_link[i] = LinkMassProperties(model.links[i], model.format) for every member i. The same
+// arithmetic on the same numbers, so bit for bit the same result; the report (mass_report.cc)
+// computes each link's once instead of reading the Link again for its group.
+CompositeInertia CalcCompositeInertia(const WeldedGroup& group,
+                                      const std::vector<MassProperties>& props_by_link);
+
 }  // namespace internal
 
 /// The pose X_WL of every link L in the root link frame W at the zero configuration, indexed like
