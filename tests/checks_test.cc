@@ -184,8 +184,8 @@ TEST(ChecksTest, UnitsSuspectNamesTheUnitMistakeThatFits) {
 // 0.025·sqrt(3) = 0.0433013 m, k/e = 89.4427; kg·cm² (×1e-4 on I, /100 on k) gives 0.894427, in
 // range, and equal diagonal values are a placeholder's mark: both fit, so neither is asserted.
 TEST(ChecksTest, UnitsSuspectSaysWhenTheNumbersCannotTellTwoCausesApart) {
-  const auto selected =
-      Select(CheckModel(ReadFixture("units-suspect-placeholder")), "units-suspect");
+  const std::vector<Finding> findings = CheckModel(ReadFixture("units-suspect-placeholder"));
+  const auto selected = Select(findings, "units-suspect");
   ASSERT_EQ(selected.size(), 1u);
   const std::string& m = selected[0]->message;
   EXPECT_NE(m.find("multiply it by 1e-4, which gives 0.894427 times the half-diagonal, in the "
@@ -205,7 +205,8 @@ TEST(ChecksTest, UnitsSuspectSaysWhenTheNumbersCannotTellTwoCausesApart) {
 // = 200; (k/(e/2))² = 1.6e5 is nearest kg·mm² (1e6), which gives 200/1000 = 0.2, out of range;
 // the values are not round: no cause is pointed to.
 TEST(ChecksTest, UnitsSuspectPointsToNoCauseWhenNoneHasEvidence) {
-  const auto selected = Select(CheckModel(ReadFixture("units-suspect-no-cause")), "units-suspect");
+  const std::vector<Finding> findings = CheckModel(ReadFixture("units-suspect-no-cause"));
+  const auto selected = Select(findings, "units-suspect");
   ASSERT_EQ(selected.size(), 1u);
   const std::string& m = selected[0]->message;
   EXPECT_NE(m.find("that gives 0.2 times the half-diagonal, still out of range: no unit slip fits"),
@@ -221,7 +222,8 @@ TEST(ChecksTest, UnitsSuspectPointsToNoCauseWhenNoneHasEvidence) {
 // 0.003) sits at the palm's center of mass, so the group's central trace is 0.005499999 and the
 // share 0.003/0.0055 = 54.5%; k = sqrt(0.003/(2·0.001)) = 1.22474 m.
 TEST(ChecksTest, MadeUpInertiaOnALinkWithNothingToJudgeItByIsReportedWhenItMatters) {
-  const auto made_up = Select(CheckModel(ReadFixture("units-suspect-made-up")), "units-suspect");
+  const std::vector<Finding> findings = CheckModel(ReadFixture("units-suspect-made-up"));
+  const auto made_up = Select(findings, "units-suspect");
   ASSERT_EQ(made_up.size(), 1u);
   EXPECT_EQ(made_up[0]->link, "accelerometer");
   const std::string& m = made_up[0]->message;
@@ -250,7 +252,8 @@ TEST(ChecksTest, HeuristicsSayNothingAboutAStaticModel) {
     ASSERT_TRUE(read.ok()) << path;
     ASSERT_EQ(read.models.size(), 1u);
     EXPECT_EQ(read.models[0].is_static, is_static);
-    const auto found = Select(CheckModel(read.models[0]), "units-suspect");
+    const std::vector<Finding> findings = CheckModel(read.models[0]);
+    const auto found = Select(findings, "units-suspect");
     EXPECT_EQ(found.size(), is_static ? 0u : 1u) << path;
     if (!found.empty()) {
       EXPECT_NE(
@@ -307,7 +310,8 @@ TEST(ChecksTest, AnSdfModelWithoutAnyInertialGetsOneNote) {
 // 0.5 kg palm's center of mass (trace 0.0025): each alone is 1.2e-4/0.00274 = 4.4% (< 5%), both
 // 2.4e-4/0.00274 = 8.76% of the group's central trace, so both are reported.
 TEST(ChecksTest, MadeUpInertiasOfAWeldedGroupAreJudgedTogether) {
-  const auto found = Select(CheckModel(ReadFixture("units-suspect-made-up-two")), "units-suspect");
+  const std::vector<Finding> findings = CheckModel(ReadFixture("units-suspect-made-up-two"));
+  const auto found = Select(findings, "units-suspect");
   ASSERT_EQ(found.size(), 2u);
   for (const Finding* f : found) {
     EXPECT_NE(f->message.find("with that of 1 other such link of its welded group is 8.76% of the "
@@ -324,8 +328,9 @@ TEST(ChecksTest, AVisualMarkerDoesNotBoundTheBody) {
   EXPECT_TRUE(Select(CheckModel(ReadFixture("inertia-exceeds-geometry-marker-visual")),
                      "inertia-exceeds-geometry")
                   .empty());
-  const auto found = Select(CheckModel(ReadFixture("inertia-exceeds-geometry-marker-collision")),
-                            "inertia-exceeds-geometry");
+  const std::vector<Finding> findings =
+      CheckModel(ReadFixture("inertia-exceeds-geometry-marker-collision"));
+  const auto found = Select(findings, "inertia-exceeds-geometry");
   ASSERT_EQ(found.size(), 1u);
   EXPECT_NE(found[0]->message.find("0.000332378 kg·m² exceeds m·r² = 8.1684e-05"),
             std::string::npos)
