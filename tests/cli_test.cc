@@ -8,11 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "../src/tool/option_filter.h"
 #include "massprops/analysis/checks.h"
 
 namespace {
@@ -589,6 +592,86 @@ TEST(CliTest, CsvReportGivesMujocosRefusalAsARow) {
   }
   EXPECT_GT(bodies, 0);
   EXPECT_EQ(refusals, 1);
+}
+
+// `massprops check` builds only the options its command line names (src/tool/option_filter.h).
+TEST(CheckOptionFilterTest, OnlyTheOptionsTheCommandLineNamesAreBuilt) {
+  using massprops::cli::OptionFilter;
+  const auto filter = [](std::vector<const char*> argv) {
+    return OptionFilter::ForCheck(static_cast<int>(argv.size()), argv.data());
+  };
+  OptionFilter named = filter({"massprops", "check", "-q", "--format", "json", "a.urdf", "-"});
+  EXPECT_FALSE(named.all());
+  EXPECT_TRUE(named.Wants({"-q", "--quiet"}));
+  EXPECT_TRUE(named.Wants({"--format"}));
+  EXPECT_FALSE(named.Wants({"--fail-on"}));
+  EXPECT_FALSE(named.Wants({"-j", "--jobs"}));
+  named = filter({"massprops", "check", "--fail-on=warning", "--jobs", "2"});
+  EXPECT_TRUE(named.Wants({"--fail-on"}));
+  EXPECT_TRUE(named.Wants({"-j", "--jobs"}));
+  EXPECT_FALSE(named.Wants({"--format"}));
+  EXPECT_FALSE(filter({"massprops", "check"}).all());  // the bundled example: FILE only
+}
+
+TEST(CheckOptionFilterTest, EveryOptionIsBuiltWhenAWordIsNotCertainlyUnderstood) {
+  using massprops::cli::OptionFilter;
+  const auto all = [](std::vector<const char*> argv) {
+    return OptionFilter::ForCheck(static_cast<int>(argv.size()), argv.data()).all();
+  };
+  EXPECT_TRUE(all({"massprops"}));
+  EXPECT_TRUE(all({"massprops", "report", "a.urdf"}));  // not check
+  EXPECT_TRUE(all({"massprops", "--version"}));
+  EXPECT_TRUE(all({"massprops", "check", "--help"}));
+  EXPECT_TRUE(all({"massprops", "check", "-h"}));
+  EXPECT_TRUE(all({"massprops", "check", "-q", "--formt", "json"}));  // a typo: CLI11's message
+  EXPECT_TRUE(all({"massprops", "check", "-qj2", "a.urdf"}));         // a run of short options
+  EXPECT_TRUE(all({"massprops", "check", "-j4", "a.urdf"}));
+  EXPECT_TRUE(all({"massprops", "check", "--tolerance", "-1"}));
+  EXPECT_TRUE(all({"massprops", "check", "-q", "--", "-odd-name.urdf"}));
+  EXPECT_TRUE(OptionFilter().all());
+}
+
+// The filter's list of names is complete (so that every option takes the short way) and names
+// only real options: `check --help` lists exactly these, besides -h and --help.
+TEST(CheckOptionFilterTest, CheckOptionNamesAreThoseOfTheHelp) {
+  const RunResult run = RunTool("check --help");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::set<std::string> in_help;
+  const std::regex option_line(R"(^\s+(-[^ ]*(?:, ?-[^ ]*)*))");
+  std::istringstream lines(run.out);
+  for (std::string line; std::getline(lines, line);) {
+    std::smatch match;
+    if (!std::regex_search(line, match, option_line)) continue;
+    std::istringstream names(std::regex_replace(match[1].str(), std::regex(","), " "));
+    for (std::string name; names >> name;) in_help.insert(name.substr(0, name.find('=')));
+  }
+  std::set<std::string> known = {"-h", "--help"};
+  for (std::string_view name : massprops::cli::CheckOptionNames()) known.emplace(name);
+  EXPECT_EQ(in_help, known) << run.out;
+}
+
+// The same bytes, exit code and messages whether only the options named are built or all of them
+// (`--` before the files makes the tool build them all; after it every word is a FILE anyway).
+TEST(CheckOptionFilterTest, EachOptionGivesTheSameResultWhetherOnlyItOrEveryOptionIsBuilt) {
+  const std::string files = "not_physical.urdf missing_inertial.urdf clean.sdf";
+  for (const char* options :
+       {"", "-q", "--quiet", "--format json", "--format=sarif", "--format github", "--color always",
+        "--fail-on warning", "--fail-on=note", "--disable inertial-missing",
+        "--severity inertial-missing=error", "--tolerance 0.01", "--tolerance=0",
+        "--config disable_missing_inertial.toml", "--model-path tree", "--target mujoco",
+        "--target drake", "-j 2", "--jobs=1", "--list-rules", "--geometry", "--no-geometry",
+        "--geometry-factor 3", "--package-path tree",
+        "-q --format json --fail-on note --disable inertial-missing -j 1 --no-geometry",
+        // Usage errors: the same message either way.
+        "--geometry --no-geometry", "--format xml", "--tolerance 2", "--config no-such.toml",
+        "--target bullet", "--geometry-factor 1"}) {
+    const RunResult named = RunTool(std::string("check ") + options + " " + files);
+    const RunResult every = RunTool(std::string("check ") + options + " -- " + files);
+    EXPECT_EQ(named.exit_code, every.exit_code) << options;
+    EXPECT_EQ(named.out, every.out) << options;
+    EXPECT_EQ(named.err, every.err) << options;
+    EXPECT_NE(named.exit_code, -1) << options;
+  }
 }
 
 }  // namespace

@@ -47,24 +47,31 @@ MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_pa
   return resolve;
 }
 
-void AddGeometryCheckOptions(CLI::App* check) {
+void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted) {
   GeometryArgs& args = Args();
-  CLI::Option* geometry =
-      check->add_flag("--geometry", args.enabled,
-                      "Read the meshes' mass properties: rules inertia-disagrees-with-geometry "
-                      "and mesh-unreadable, and mesh solids for products-sign-suspect");
-  check
-      ->add_flag("--no-geometry", args.no_geometry,
-                 "Do not read meshes at all (by default their bounding boxes are read, so that "
-                 "mesh-only links are judged against their size)")
-      ->excludes(geometry);
-  check
-      ->add_option("--geometry-factor", args.factor,
-                   "inertia-disagrees-with-geometry: principal moments differing by more than "
-                   "this factor")
-      ->check(CLI::Range(1.0 + 1e-12, 1e300))
-      ->capture_default_str();
-  AddPackagePathOption(check, &args.package_paths);
+  CLI::Option* geometry = nullptr;
+  if (wanted.Wants({"--geometry"})) {
+    geometry = check->add_flag("--geometry", args.enabled,
+                               "Read the meshes' mass properties: rules "
+                               "inertia-disagrees-with-geometry and mesh-unreadable, and mesh "
+                               "solids for products-sign-suspect");
+  }
+  if (wanted.Wants({"--no-geometry"})) {
+    CLI::Option* no_geometry = check->add_flag(
+        "--no-geometry", args.no_geometry,
+        "Do not read meshes at all (by default their bounding boxes are read, so that mesh-only "
+        "links are judged against their size)");
+    if (geometry != nullptr) no_geometry->excludes(geometry);
+  }
+  if (wanted.Wants({"--geometry-factor"})) {
+    check
+        ->add_option("--geometry-factor", args.factor,
+                     "inertia-disagrees-with-geometry: principal moments differing by more than "
+                     "this factor")
+        ->check(CLI::Range(1.0 + 1e-12, 1e300))
+        ->capture_default_str();
+  }
+  if (wanted.Wants({"--package-path"})) AddPackagePathOption(check, &args.package_paths);
 }
 
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,

@@ -10,6 +10,7 @@
 #include "massprops/mesh/mesh_loader.h"
 #include "massprops/model/model.h"
 #include "massprops/output/reporters.h"
+#include "option_filter.h"
 
 namespace massprops::cli {
 
@@ -22,9 +23,9 @@ MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_pa
                                       const std::vector<std::string>& model_paths,
                                       const std::string& model_file, MeshCache* cache);
 
-/// Adds --geometry, --no-geometry, --geometry-factor X and --package-path DIR to the check
-/// subcommand.
-void AddGeometryCheckOptions(CLI::App* check);
+/// Adds those of --geometry, --no-geometry, --geometry-factor X and --package-path DIR that
+/// `wanted` asks for to the check subcommand.
+void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted);
 
 /// By default sets options->box to the meshes' bounding boxes (MakeLinkBoxFunction, the run's
 /// mesh cache), so that CheckModel judges mesh-only links against their size; with --geometry

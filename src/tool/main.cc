@@ -34,6 +34,7 @@
 #include "massprops/io/model_reader.h"
 #include "massprops/model/model.h"
 #include "massprops/output/reporters.h"
+#include "option_filter.h"
 #include "safe_write.h"
 #include "target_cli.h"
 
@@ -496,8 +497,10 @@ struct CheckOptionsGiven {
   CLI::Option* tolerance = nullptr;
 };
 
-// Adds the `check` subcommand and its options, which fill *args.
-CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args) {
+// Adds the `check` subcommand and those of its options that `wanted` asks for (all by default),
+// which fill *args.
+CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
+                                  const massprops::cli::OptionFilter& wanted = {}) {
   CheckOptionsGiven given;
   CLI::App* check = app.add_subcommand(
       "check",
@@ -507,51 +510,76 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args) {
                     "URDF or SDF files (detected by content), '-' for standard input, or folders "
                     "(searched recursively for *.urdf, *.sdf, and *.world/*.xml with a <robot> or "
                     "<sdf> root)");
-  check->add_option("--format", args->format, "Output format")
-      ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
-      ->capture_default_str();
-  check->add_option("--color", args->color, "Colour text output (auto: on a terminal, no NO_COLOR)")
-      ->check(CLI::IsMember({"auto", "always", "never"}))
-      ->capture_default_str();
-  given.fail_on = check
-                      ->add_option("--fail-on", args->fail_on,
-                                   "Exit with 1 when a finding is at least this severe (default: "
-                                   "error, or fail-on in the configuration file)")
-                      ->check(CLI::IsMember({"error", "warning", "note"}));
-  check->add_option("--disable", args->disable, "Disable a rule (repeatable)")
-      ->type_name("RULE")
-      ->allow_extra_args(false);
-  check
-      ->add_option("--severity", args->severity,
-                   "Change a rule's severity: RULE=off|note|warning|error (repeatable)")
-      ->type_name("RULE=LEVEL")
-      ->allow_extra_args(false);
-  given.tolerance = check
-                        ->add_option("--tolerance", args->tolerance,
-                                     "Tolerance of the physical-validity test, relative to the "
-                                     "trace of the inertia, at least 0 and less than 1 (default "
-                                     "1e-6)")
-                        ->check(ToleranceValidator());
-  check
-      ->add_option("--config", args->config,
-                   "Configuration file (default: .massprops.toml found upward from each file, "
-                   "then from the working directory)")
-      ->check(CLI::ExistingFile);
-  check
-      ->add_option("--model-path", args->model_paths,
-                   "Folder searched for SDF model:// URIs (repeatable)")
-      ->type_name("DIR")
-      ->allow_extra_args(false);
-  massprops::cli::AddTargetOption(check, &args->target);
-  check->add_flag("-q,--quiet", args->quiet, "Only the findings: no summary line, no notes");
-  check
-      ->add_option("-j,--jobs", args->jobs,
-                   "Check this many files at once (default 0: one per core); the output is the "
-                   "same, byte for byte, whatever the number")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  check->add_flag("--list-rules", args->list_rules, "List the rules and their default severities");
-  massprops::cli::AddGeometryCheckOptions(check);
+  if (wanted.Wants({"--format"})) {
+    check->add_option("--format", args->format, "Output format")
+        ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
+        ->capture_default_str();
+  }
+  if (wanted.Wants({"--color"})) {
+    check
+        ->add_option("--color", args->color,
+                     "Colour text output (auto: on a terminal, no NO_COLOR)")
+        ->check(CLI::IsMember({"auto", "always", "never"}))
+        ->capture_default_str();
+  }
+  if (wanted.Wants({"--fail-on"})) {
+    given.fail_on = check
+                        ->add_option("--fail-on", args->fail_on,
+                                     "Exit with 1 when a finding is at least this severe (default: "
+                                     "error, or fail-on in the configuration file)")
+                        ->check(CLI::IsMember({"error", "warning", "note"}));
+  }
+  if (wanted.Wants({"--disable"})) {
+    check->add_option("--disable", args->disable, "Disable a rule (repeatable)")
+        ->type_name("RULE")
+        ->allow_extra_args(false);
+  }
+  if (wanted.Wants({"--severity"})) {
+    check
+        ->add_option("--severity", args->severity,
+                     "Change a rule's severity: RULE=off|note|warning|error (repeatable)")
+        ->type_name("RULE=LEVEL")
+        ->allow_extra_args(false);
+  }
+  if (wanted.Wants({"--tolerance"})) {
+    given.tolerance = check
+                          ->add_option("--tolerance", args->tolerance,
+                                       "Tolerance of the physical-validity test, relative to the "
+                                       "trace of the inertia, at least 0 and less than 1 (default "
+                                       "1e-6)")
+                          ->check(ToleranceValidator());
+  }
+  if (wanted.Wants({"--config"})) {
+    check
+        ->add_option("--config", args->config,
+                     "Configuration file (default: .massprops.toml found upward from each file, "
+                     "then from the working directory)")
+        ->check(CLI::ExistingFile);
+  }
+  if (wanted.Wants({"--model-path"})) {
+    check
+        ->add_option("--model-path", args->model_paths,
+                     "Folder searched for SDF model:// URIs (repeatable)")
+        ->type_name("DIR")
+        ->allow_extra_args(false);
+  }
+  if (wanted.Wants({"--target"})) massprops::cli::AddTargetOption(check, &args->target);
+  if (wanted.Wants({"-q", "--quiet"})) {
+    check->add_flag("-q,--quiet", args->quiet, "Only the findings: no summary line, no notes");
+  }
+  if (wanted.Wants({"-j", "--jobs"})) {
+    check
+        ->add_option("-j,--jobs", args->jobs,
+                     "Check this many files at once (default 0: one per core); the output is the "
+                     "same, byte for byte, whatever the number")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+  }
+  if (wanted.Wants({"--list-rules"})) {
+    check->add_flag("--list-rules", args->list_rules,
+                    "List the rules and their default severities");
+  }
+  massprops::cli::AddGeometryCheckOptions(check, wanted);
   return given;
 }
 
@@ -588,7 +616,8 @@ int main(int argc, char** argv) {
       "2 a file could not be read or parsed, a bad configuration file, or a usage error.");
 
   CheckArgs args;
-  const CheckOptionsGiven given = AddCheckCommand(app, &args);
+  const CheckOptionsGiven given =
+      AddCheckCommand(app, &args, massprops::cli::OptionFilter::ForCheck(argc, argv));
 
   // Subcommands defined in other files (src/tool/commands.h) set `run` when chosen. After
   // `check`, CLI11 reads every word as check's (require_subcommand(1): a second subcommand name
@@ -609,7 +638,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(error);
     return code == 0 ? kExitClean : kExitError;
   }
-  if (given.fail_on->count() == 0) args.fail_on.clear();
-  args.tolerance_given = given.tolerance->count() > 0;
+  if (given.fail_on == nullptr || given.fail_on->count() == 0) args.fail_on.clear();
+  args.tolerance_given = given.tolerance != nullptr && given.tolerance->count() > 0;
   return RunCommand(run, args, argc > 0 ? argv[0] : nullptr);
 }
