@@ -6,16 +6,18 @@
 // link and the minor page faults per link and iteration (getrusage); Google Benchmark's O(N) fit
 // is printed too.
 //
-// What it measured (docs/benchmarks.md, section 2, "Each link read once": before and after, built
-// from the same tree, run alternately on 2 shared cores at a load average of 3.1-5.1): CPU time per
-// link at 10^3 / 10^4 / 10^5 / 10^6 links, full report 271 / 277 / 711 / 724 ns (before: 292 /
-// 321 / 787 / 1 362: each link's inertial read five times, 712-byte entries), groups + composites
-// 110 / 116 / 244 / 432 ns (unchanged code). The work is linear (callgrind: flat instructions per
-// link, 2 235-2 328 and 3 990-4 059 at 10^3-10^5 in the first round); the time per link still
-// grows 2.7x (report) and 3.9x (groups + composites) from 10^3 to 10^6, nearly all between 10^4 and
-// 10^5 links, where the model (448 bytes per link, 296 per joint: 74 MB at 10^5) leaves the 32 MB
-// L3 and each pass over it reads from memory (simulated last-level misses per link 3 -> 26).
-// Command:
+// What it measured (docs/benchmarks.md, section 2, "Less fresh memory per call": main's build of
+// cb995aa and this tree, run alternately on 2 shared cores at a load average of 0.5-0.9): CPU time
+// per link at 10^3 / 10^4 / 10^5 links, full report 259 / 262 / 355 ns (before: 268 / 281 / 688:
+// at 10^5 the heap, over glibc's trim threshold, was faulted in again on every call, 0.176 faults
+// per link, now 0.002), groups + composites 106 / 111 / 233 ns (before 108 / 110 / 274). At 10^6
+// one single iteration per repetition right after building the model varies 0.7-1.8 us per link
+// for the same binary (first-call page faults); over 6 calls in one process the report took
+// 584-588 ns per link (before 686-833); groups + composites, first two runs, 340 / 343 ns (before
+// 389 / 408). The work is linear (callgrind: flat instructions per link, first round); what still
+// grows is reading the model from memory (448 bytes per link, 296 per joint: 74 MB at 10^5, past
+// the 32 MB L3), 10-15 ns per element and pass, and at 10^6 the fresh pages of the report's
+// 320-byte entries. Command:
 //   build/bench/composite_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //     --benchmark_filter='BM_(WeldedGroupsAndComposites|FullReport)/(1000|10000|100000)$'
 // and for 10^6 links --benchmark_filter='BM_(WeldedGroupsAndComposites|FullReport)/1000000$'

@@ -11,8 +11,11 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/io/model_reader.h"
@@ -149,6 +152,92 @@ TEST(MassReportTest, FullReportIsBitForBitTheSameAsThePathsThatReadTheLinksAgain
     ASSERT_TRUE(report.total && subtree.total);
     ASSERT_TRUE(report.unreachable_links.empty());
     ExpectSameBody(*report.total, *subtree.total);
+  }
+}
+
+// The full report's total makes the poses in file order when every link comes after its parent
+// (keeping only those of links whose children are still to come), otherwise through a pose per
+// link; either way it must be bit for bit the composition, in file order, of every link posed by
+// the chain of CalcJointPose from the root (the arithmetic the report documents), on a branched
+// tree written parents first, with the root not first, and with children before their parents.
+TEST(MassReportTest, FullReportTotalIsBitForBitTheLinksPosedFromTheRootInAnyFileOrder) {
+  // root ─ a ─ (a1, a2), root ─ b ─ b1, root ─ c; "loose" is attached to nothing.
+  const std::vector<std::pair<std::string, std::string>> edges = {
+      {"root", "a"}, {"a", "a1"}, {"a", "a2"}, {"root", "b"}, {"b", "b1"}, {"root", "c"}};
+  for (const std::vector<std::string>& order :
+       {std::vector<std::string>{"root", "a", "a1", "a2", "b", "b1", "c", "loose"},
+        std::vector<std::string>{"loose", "root", "b", "a", "c", "b1", "a2", "a1"},
+        std::vector<std::string>{"a1", "root", "a", "b1", "a2", "b", "loose", "c"}}) {
+    SCOPED_TRACE(order[0] + ", " + order[1] + ", " + order[2] + ", ...");
+    Model model;
+    model.root_link = "root";
+    for (const std::string& name : order) {
+      Link link;
+      link.name = name;
+      Inertial inertial;
+      inertial.mass = 0.5 + 0.3 * static_cast<double>(name.size());
+      inertial.X_BBi.p_AB = Eigen::Vector3d(0.05, -0.02, 0.03);
+      inertial.X_BBi.R_AB =
+          Eigen::AngleAxisd(0.2 * static_cast<double>(name.size()), Eigen::Vector3d::UnitZ())
+              .toRotationMatrix();
+      inertial.ixx = 0.01;
+      inertial.iyy = 0.02;
+      inertial.izz = 0.025;
+      link.inertial = inertial;
+      model.links.push_back(link);
+    }
+    for (std::size_t j = 0; j < edges.size(); ++j) {
+      Joint joint;
+      joint.name = "j" + std::to_string(j);
+      joint.type = j % 2 == 0 ? Joint::Type::kFixed : Joint::Type::kRevolute;
+      joint.type_name = j % 2 == 0 ? "fixed" : "revolute";
+      joint.parent = edges[j].first;
+      joint.child = edges[j].second;
+      joint.X_PC.p_AB = Eigen::Vector3d(0.1 * static_cast<double>(j + 1), 0.07, -0.03);
+      joint.X_PC.R_AB =
+          Eigen::AngleAxisd(0.4 + 0.3 * static_cast<double>(j), Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitY());
+      joint.axis = Eigen::Vector3d::UnitZ();
+      model.joints.push_back(joint);
+    }
+    MassReportOptions options;
+    options.joint_values = {{"j3", 0.6}};  // root ─ b
+    const ModelMassReport report = Report(model, options);
+
+    // X_WL from the root down, each link's parent's pose times its joint's at its value.
+    auto link_index = [&model](const std::string& name) { return model.FindLink(name); };
+    std::vector<std::optional<Pose>> X_WL(model.links.size());
+    X_WL[link_index("root")] = Pose();
+    for (int pass = 0; pass < 3; ++pass) {  // depth 2: parents are posed before their children
+      for (std::size_t j = 0; j < edges.size(); ++j) {
+        const std::optional<Pose>& X_WP = X_WL[link_index(edges[j].first)];
+        if (X_WP) {
+          X_WL[link_index(edges[j].second)] =
+              *X_WP * CalcJointPose(model.joints[j], j == 3 ? 0.6 : 0.0);
+        }
+      }
+    }
+    std::vector<MassProperties> parts_W;
+    std::vector<std::string> unreachable;
+    for (std::size_t i = 0; i < model.links.size(); ++i) {
+      if (!X_WL[i]) {
+        unreachable.push_back(model.links[i].name);
+        continue;
+      }
+      const MassProperties props_L = LinkMassProperties(model.links[i]);
+      MassProperties part_W;
+      part_W.mass = props_L.mass;
+      part_W.p_FoScm_F = X_WL[i]->p_AB + X_WL[i]->R_AB * props_L.p_FoScm_F;
+      part_W.I_SScm_F = X_WL[i]->R_AB * props_L.I_SScm_F * X_WL[i]->R_AB.transpose();
+      part_W.I_SScm_F = (0.5 * (part_W.I_SScm_F + part_W.I_SScm_F.transpose())).eval();
+      parts_W.push_back(part_W);
+    }
+    const CompositeInertia expected = ComposeMassProperties(parts_W);
+    ASSERT_TRUE(report.total.has_value());
+    ExpectSameBody(*report.total, MakeBodyMassProperties("root", expected.mass, expected.p_RoScm_R,
+                                                         expected.I_SScm_R));
+    EXPECT_EQ(report.unreachable_links, unreachable);
+    EXPECT_EQ(unreachable, (std::vector<std::string>{"loose"}));
   }
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analysis/name_index.h"
+#include "analysis/poses_in_file_order.h"
 #include "massprops/core/principal_axes.h"
 
 namespace massprops {
@@ -386,10 +387,16 @@ class LinkPropsTable {
     scratch_ = LinkMassProperties(model_.links[link], model_.format);
     return scratch_;
   }
-  // The group's composite, as CalcCompositeInertia(model, group) (bit for bit).
-  CompositeInertia Composite(const WeldedGroup& group) const {
-    return keep_ ? internal::CalcCompositeInertia(group, props_)
-                 : CalcCompositeInertia(model_, group);
+  // The group's composite, as CalcCompositeInertia(model, group) (bit for bit). A group whose
+  // X_RL was not kept (internal::FindWeldedGroups without poses) has them made here, one group at
+  // a time in one reused vector, from the tree in `index`.
+  CompositeInertia Composite(const WeldedGroup& group, const ModelIndex& index) {
+    if (!keep_) return CalcCompositeInertia(model_, group);
+    if (group.X_RL.size() == group.links.size()) {
+      return internal::CalcCompositeInertia(group, group.X_RL, props_);
+    }
+    internal::CalcGroupPoses(model_, group, index.parent_joint, index.parent_link, &X_RL_);
+    return internal::CalcCompositeInertia(group, X_RL_, props_);
   }
 
  private:
@@ -397,6 +404,7 @@ class LinkPropsTable {
   bool keep_;
   std::vector<MassProperties> props_;  // per link, when kept
   MassProperties scratch_;
+  std::vector<Pose> X_RL_;  // of the group at hand (Composite)
 };
 
 // The top of the welded group holding `link`: up the tree through fixed joints.
@@ -439,15 +447,18 @@ void SelectLinksAndGroups(const Model& model, const ModelIndex& index, const Nam
   } else {
     links->resize(model.links.size());
     for (std::size_t i = 0; i < links->size(); ++i) (*links)[i] = static_cast<int>(i);
-    *groups = internal::FindWeldedGroups(model, index.parent_joint, index.parent_link);
+    // Without poses: each group's are made when its composite is (LinkPropsTable::Composite).
+    *groups = internal::FindWeldedGroups(model, index.parent_joint, index.parent_link,
+                                         /*with_poses=*/false);
   }
 }
 
 // Fills report->links and report->welded_groups; false (with the expresser's error) when one
 // cannot be expressed in the --frame link's frame.
-bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
-                          const std::vector<int>& links, const std::vector<WeldedGroup>& groups,
-                          LinkPropsTable* table, FrameExpresser* frame, ModelMassReport* report) {
+bool ReportLinksAndGroups(const Model& model, const ModelIndex& index,
+                          const MassReportOptions& options, const std::vector<int>& links,
+                          const std::vector<WeldedGroup>& groups, LinkPropsTable* table,
+                          FrameExpresser* frame, ModelMassReport* report) {
   // Reserved: growing the vector re-copied every entry so far at each reallocation, with the page
   // faults of the new blocks (docs/benchmarks.md, section 2).
   report->links.reserve(links.size());
@@ -466,7 +477,7 @@ bool ReportLinksAndGroups(const Model& model, const MassReportOptions& options,
     }
   }
   for (const WeldedGroup& group : groups) {
-    const BodyMassProperties body = FromComposite(group.root_link, table->Composite(group));
+    const BodyMassProperties body = FromComposite(group.root_link, table->Composite(group, index));
     if (!frame->CanExpress(group.links.front())) return false;
     GroupMassReport& entry = report->welded_groups.emplace_back();
     entry.root_link = group.root_link;
@@ -484,17 +495,41 @@ bool ReportTotal(const Model& model, const ModelIndex& index,
                  const std::unordered_map<int, double>& joint_values, int anchor,
                  const std::vector<int>& links, LinkPropsTable* table, FrameExpresser* frame,
                  ModelMassReport* report) {
-  PoseSolver anchor_poses(model, index, joint_values, anchor);
-  for (int link : links) {
-    if (!anchor_poses.Get(link)) report->unreachable_links.push_back(model.links[link].name);
+  // Each part made twice on demand (its pose too) rather than stored: see
+  // internal::ComposeMassPropertiesOnDemand. A full report of a model written parents first
+  // makes the poses in file order without keeping one per link (internal::PosesInFileOrder);
+  // the others ask PoseSolver, which remembers every pose.
+  const bool in_file_order = links.size() == model.links.size() && anchor >= 0 &&
+                             internal::PosesInFileOrder::Applies(index.parent_link);
+  std::optional<internal::PosesInFileOrder> stream;
+  std::optional<PoseSolver> solver;
+  if (in_file_order) {
+    stream.emplace(index.parent_link, anchor);
+  } else {
+    solver.emplace(model, index, joint_values, anchor);
+    for (int link : links) {
+      if (!solver->Get(link)) report->unreachable_links.push_back(model.links[link].name);
+    }
   }
-  // Each part made twice on demand (its pose memoized) rather than stored: see
-  // internal::ComposeMassPropertiesOnDemand.
+  // X_AL of links[k], k = 0, 1, 2, ... in each pass; nullopt when not reachable from A.
+  auto pose = [&](std::size_t k) -> std::optional<Pose> {
+    if (!in_file_order) return solver->Get(links[k]);
+    if (k == 0) stream->Restart();
+    const Pose* X_AL = stream->Next(links[k], [&] {
+      const int j = index.parent_joint[links[k]];
+      const auto q = joint_values.find(j);
+      return CalcJointPose(model.joints[j], q == joint_values.end() ? 0.0 : q->second);
+    });
+    return X_AL != nullptr ? std::optional<Pose>(*X_AL) : std::nullopt;
+  };
   const CompositeInertia composite = internal::ComposeMassPropertiesOnDemand(
       links.size(),
       [&](std::size_t k, double* mass, Eigen::Vector3d* p_AoLcm_A) {
-        const std::optional<Pose> X_AL = anchor_poses.Get(links[k]);
-        if (!X_AL) return false;
+        const std::optional<Pose> X_AL = pose(k);
+        if (!X_AL) {
+          if (in_file_order) report->unreachable_links.push_back(model.links[links[k]].name);
+          return false;
+        }
         // LinkMassAndCom's mass and center of mass, which are LinkMassProperties'.
         const MassProperties& props_L = table->Get(links[k]);
         *mass = props_L.mass;
@@ -502,7 +537,7 @@ bool ReportTotal(const Model& model, const ModelIndex& index,
         return true;
       },
       [&](std::size_t k, MassProperties* props_A) {
-        const std::optional<Pose> X_AL = anchor_poses.Get(links[k]);
+        const std::optional<Pose> X_AL = pose(k);
         if (!X_AL) return false;
         *props_A = InFrameA(table->Get(links[k]), *X_AL);
         return true;
@@ -539,7 +574,9 @@ bool ComputeMassReport(const Model& model, const MassReportOptions& options,
   // A full report (every link in file order) keeps each link's mass properties for the groups
   // and the total.
   LinkPropsTable table(model, named.only.empty() && named.subtree < 0);
-  if (!ReportLinksAndGroups(model, options, links, groups, &table, &frame, report)) return false;
+  if (!ReportLinksAndGroups(model, index, options, links, groups, &table, &frame, report)) {
+    return false;
+  }
   if (!named.only.empty()) return true;
 
   // The total: every link of the model (or subtree) at its pose in the anchor's frame.

@@ -1,5 +1,6 @@
 #include "massprops/analysis/welded_groups.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -102,12 +103,12 @@ std::vector<int> FindGroupRoots(std::vector<int>* fixed_up) {
   return root;
 }
 
-// One group per root link, in file order, with its members (root first, then file order) and
-// room for their poses (identity until FillGroupPoses): each vector allocated once, at its size.
-// *position: each link's place in its group; *group_of: each root link's group.
+// One group per root link, in file order, with its members (root first, then file order) and,
+// with_poses, room for their poses (identity until FillGroupPoses): each vector allocated once,
+// at its size. *position: each link's place in its group; *group_of: each root link's group.
 std::vector<WeldedGroup> MakeGroups(const Model& model, const TreeView& tree,
-                                    const std::vector<int>& root, std::vector<int>* position,
-                                    std::vector<int>* group_of) {
+                                    const std::vector<int>& root, bool with_poses,
+                                    std::vector<int>* position, std::vector<int>* group_of) {
   const int n = static_cast<int>(model.links.size());
   group_of->assign(n, -1);
   std::vector<int> size;  // per group
@@ -125,7 +126,7 @@ std::vector<WeldedGroup> MakeGroups(const Model& model, const TreeView& tree,
     group.root_link = model.links[i].name;
     group.links.reserve(size[(*group_of)[i]]);
     group.links.push_back(i);
-    group.X_RL.resize(size[(*group_of)[i]]);
+    if (with_poses) group.X_RL.resize(size[(*group_of)[i]]);
     const int j = tree.parent_joint[i];
     if (j < 0) {
       // No parent joint: the model's root, or a free-floating link.
@@ -218,15 +219,45 @@ std::vector<WeldedGroup> FindWeldedGroups(const Model& model) {
 
 std::vector<WeldedGroup> internal::FindWeldedGroups(const Model& model,
                                                     const std::vector<int>& parent_joint,
-                                                    const std::vector<int>& parent_link) {
+                                                    const std::vector<int>& parent_link,
+                                                    bool with_poses) {
   const TreeView tree{parent_joint, parent_link};
   std::vector<int> fixed_up = FixedParents(model, tree);
   const std::vector<int> root = FindGroupRoots(&fixed_up);
   std::vector<int> position;  // of each link in its group's `links` and `X_RL`
   std::vector<int> group_of;  // of each group root link
-  std::vector<WeldedGroup> groups = MakeGroups(model, tree, root, &position, &group_of);
-  FillGroupPoses(model, tree, fixed_up, root, position, group_of, &groups);
+  std::vector<WeldedGroup> groups = MakeGroups(model, tree, root, with_poses, &position, &group_of);
+  if (with_poses) FillGroupPoses(model, tree, fixed_up, root, position, group_of, &groups);
   return groups;
+}
+
+void internal::CalcGroupPoses(const Model& model, const WeldedGroup& group,
+                              const std::vector<int>& parent_joint,
+                              const std::vector<int>& parent_link, std::vector<Pose>* X_RL) {
+  // FillGroupPoses' walk, within one group: every member but the root is welded to its tree
+  // parent (its fixed_up there), a member of the same group; the members after the root are in
+  // file order, so a member's place is found by bisection.
+  const std::vector<int>& links = group.links;
+  auto position_of = [&links](int link) -> std::size_t {
+    if (link == links.front()) return 0;
+    return static_cast<std::size_t>(std::lower_bound(links.begin() + 1, links.end(), link) -
+                                    links.begin());
+  };
+  X_RL->assign(links.size(), Pose());
+  std::vector<char> posed(links.size(), 0);
+  posed[0] = 1;
+  std::vector<std::size_t> path;
+  for (std::size_t k = 1; k < links.size(); ++k) {
+    path.clear();
+    for (std::size_t cur = k; !posed[cur]; cur = position_of(parent_link[links[cur]])) {
+      path.push_back(cur);
+    }
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      (*X_RL)[*it] = (*X_RL)[position_of(parent_link[links[*it]])] *
+                     model.joints[parent_joint[links[*it]]].X_PC;
+      posed[*it] = 1;
+    }
+  }
 }
 
 double internal::LinkMassAndCom(const Link& link, Model::Format format,
@@ -296,6 +327,7 @@ CompositeInertia CalcCompositeInertia(const Model& model, const WeldedGroup& gro
 }
 
 CompositeInertia internal::CalcCompositeInertia(const WeldedGroup& group,
+                                                const std::vector<Pose>& X_RL,
                                                 const std::vector<MassProperties>& props_by_link) {
   return internal::ComposeMassPropertiesOnDemand(
       group.links.size(),
@@ -303,11 +335,11 @@ CompositeInertia internal::CalcCompositeInertia(const WeldedGroup& group,
         // LinkMassAndComInR's arithmetic: LinkMassAndCom gives these same mass and center of mass.
         const MassProperties& props_L = props_by_link[group.links[k]];
         *mass = props_L.mass;
-        *p_RoLcm_R = group.X_RL[k].p_AB + group.X_RL[k].R_AB * props_L.p_FoScm_F;
+        *p_RoLcm_R = X_RL[k].p_AB + X_RL[k].R_AB * props_L.p_FoScm_F;
         return true;
       },
       [&](std::size_t k, MassProperties* part_R) {
-        return PartInR(props_by_link[group.links[k]], group.X_RL[k], part_R);
+        return PartInR(props_by_link[group.links[k]], X_RL[k], part_R);
       });
 }
 
