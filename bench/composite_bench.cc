@@ -12,16 +12,17 @@
 // at 10^5 the heap, over glibc's trim threshold, was faulted in again on every call, 0.176 faults
 // per link, now 0.002), groups + composites 106 / 111 / 233 ns (before 108 / 110 / 274). At 10^6
 // one single iteration per repetition right after building the model varies 0.7-1.8 us per link
-// for the same binary (first-call page faults); over 6 calls in one process the report took
-// 584-588 ns per link (before 686-833); groups + composites, first two runs, 340 / 343 ns (before
-// 389 / 408). The work is linear (callgrind: flat instructions per link, first round); what still
-// grows is reading the model from memory (448 bytes per link, 296 per joint: 74 MB at 10^5, past
-// the 32 MB L3), 10-15 ns per element and pass, and at 10^6 the fresh pages of the report's
-// 320-byte entries. Command:
+// for the same binary (first-call page faults); with three calls per repetition
+// (--benchmark_min_time=3) the report takes 580-629 ns per link (before 738-741) and groups +
+// composites 351-352 ns (before 399-426). The work is linear: callgrind counts 2 269-2 346
+// (groups + composites) and 3 695-3 749 (report) instructions per link from 10^3 to 10^6 links;
+// what still grows is reading the model from memory (448 bytes per link, 296 per joint: 74 MB at
+// 10^5, past the 32 MB L3), 10-15 ns per element and pass, and at 10^6 the fresh pages of the
+// report's 320-byte entries. Command:
 //   build/bench/composite_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //     --benchmark_filter='BM_(WeldedGroupsAndComposites|FullReport)/(1000|10000|100000)$'
 // and for 10^6 links --benchmark_filter='BM_(WeldedGroupsAndComposites|FullReport)/1000000$'
-// --benchmark_min_time=0.01 --benchmark_repetitions=3 (one iteration per repetition).
+// --benchmark_min_time=3 --benchmark_repetitions=3.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
