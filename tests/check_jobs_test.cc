@@ -41,9 +41,8 @@ std::vector<std::string> CorpusModelFiles() {
 ToolRun CheckCorpus(int jobs, const std::string& args, const std::vector<std::string>& files) {
   std::string command = "cd " + Quote(CorpusDir()) + " && " + Quote(MASSPROPS_TOOL_PATH) +
                         " check -j " + std::to_string(jobs) + " " + args;
-  for (const char* path : {"gazebo_models", "sdformat/test/integration/model",
-                           "gz-sim/test/worlds/models", "example-robot-data/robots"}) {
-    command += " --model-path " + std::string(path);
+  for (const std::string& folder : massprops::test_support::CorpusModelFolders()) {
+    command += " --model-path " + folder;
   }
   for (const std::string& file : files) command += " " + Quote(file);
   command += " 2>/dev/null";

@@ -21,6 +21,23 @@ struct ManifestRow {
 /// The corpus folder (MASSPROPS_CORPUS_DIR).
 inline std::string CorpusDir() { return MASSPROPS_CORPUS_DIR; }
 
+/// The corpus's model folders, searched for model:// URIs (the corpus README, "Resolving URIs"),
+/// relative to CorpusDir().
+inline const std::vector<std::string>& CorpusModelFolders() {
+  static const std::vector<std::string> kFolders = {
+      "gazebo_models", "sdformat/test/integration/model", "gz-sim/test/worlds/models",
+      "example-robot-data/robots"};
+  return kFolders;
+}
+
+/// CorpusModelFolders() as paths from the working directory.
+inline std::vector<std::string> CorpusModelPaths() {
+  std::vector<std::string> paths;
+  for (const std::string& folder : CorpusModelFolders())
+    paths.push_back(CorpusDir() + "/" + folder);
+  return paths;
+}
+
 /// Every row of the MANIFEST whose format is `format` (every row when `format` is empty), in file
 /// order; empty when the corpus is absent.
 inline std::vector<ManifestRow> ReadCorpusManifest(const std::string& format = "") {

@@ -41,9 +41,7 @@ std::vector<Row> SdfRows() {
 
 SdfReadOptions CorpusOptions() {
   SdfReadOptions options;
-  options.model_paths = {kCorpus + "/gazebo_models", kCorpus + "/sdformat/test/integration/model",
-                         kCorpus + "/gz-sim/test/worlds/models",
-                         kCorpus + "/example-robot-data/robots"};
+  options.model_paths = test_support::CorpusModelPaths();
   options.use_environment = false;
   return options;
 }

@@ -58,10 +58,7 @@ using Real = long double;
 using Vec3 = Eigen::Matrix<Real, 3, 1>;
 using Mat3 = Eigen::Matrix<Real, 3, 3>;
 
-std::vector<std::string> CorpusModelPaths() {
-  return {kCorpus + "/gazebo_models", kCorpus + "/sdformat/test/integration/model",
-          kCorpus + "/gz-sim/test/worlds/models", kCorpus + "/example-robot-data/robots"};
-}
+using test_support::CorpusModelPaths;
 
 // A rigid pose in long double: R_AB and p_AB.
 struct PoseL {

@@ -38,11 +38,7 @@ namespace {
 
 const std::string kCorpus = MASSPROPS_CORPUS_DIR;
 
-// The model folders named by the corpus README ("Resolving URIs").
-std::vector<std::string> CorpusModelPaths() {
-  return {kCorpus + "/gazebo_models", kCorpus + "/sdformat/test/integration/model",
-          kCorpus + "/gz-sim/test/worlds/models", kCorpus + "/example-robot-data/robots"};
-}
+using test_support::CorpusModelPaths;
 
 std::vector<std::string> SdfRows() {
   std::vector<std::string> files;

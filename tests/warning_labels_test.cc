@@ -81,9 +81,8 @@ TEST(WarningLabelsTest, WarningsAreRightNineTimesInTenAndEveryRealOneStillFires)
   ASSERT_GT(labels.size(), 400u);
 
   std::string args = "check --format json --fail-on error";
-  for (const char* path : {"gazebo_models", "sdformat/test/integration/model",
-                           "gz-sim/test/worlds/models", "example-robot-data/robots"}) {
-    args += std::string(" --model-path '") + path + "'";
+  for (const std::string& folder : massprops::test_support::CorpusModelFolders()) {
+    args += " --model-path '" + folder + "'";
   }
   // package://example-robot-data/... is the corpus folder of that name (the corpus README): the
   // meshes of the three robots that have them are read (their bounding boxes, by default).

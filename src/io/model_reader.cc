@@ -22,11 +22,7 @@ std::string MebibytesText(std::size_t bytes) {
 }
 
 ReadError FileError(const std::string& file, std::string message) {
-  ReadError error;
-  error.location.file = file;
-  error.element = "file";
-  error.message = std::move(message);
-  return error;
+  return MakeReadError(file, 0, "file", std::move(message));
 }
 
 // Reads `stream` to its end in chunks, giving up as soon as more than max_bytes have arrived.

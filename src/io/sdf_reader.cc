@@ -100,16 +100,6 @@ std::string Describe(const Node& node) {
   return "";
 }
 
-ReadError MakeError(const std::string& file, int line, const std::string& element,
-                    const std::string& message) {
-  ReadError error;
-  error.location.file = file;
-  error.location.line = line;
-  error.element = element;
-  error.message = message;
-  return error;
-}
-
 std::string Trim(std::string_view s) {
   const char* ws = " \t\r\n";
   const size_t b = s.find_first_not_of(ws);
@@ -191,11 +181,11 @@ class Reader {
       }
       return;
     }
-    result_.errors.push_back(MakeError(file, e ? e->GetLineNum() : 0, element, message));
+    result_.errors.push_back(MakeReadError(file, e ? e->GetLineNum() : 0, element, message));
   }
   void Warning(const std::string& file, const XMLElement* e, const std::string& element,
                const std::string& message) {
-    result_.warnings.push_back(MakeError(file, e ? e->GetLineNum() : 0, element, message));
+    result_.warnings.push_back(MakeReadError(file, e ? e->GetLineNum() : 0, element, message));
   }
 
   // ------------------------------------------------------------ numbers
@@ -325,7 +315,7 @@ class Reader {
     if (include_stack_.size() > 1 && ++included_elements_ > options_.max_included_elements) {
       aborted_ = true;
       const IncludeSite& outer = include_sites_.front();
-      result_.errors.push_back(MakeError(
+      result_.errors.push_back(MakeReadError(
           outer.file, outer.line, "<include> '" + outer.uri + "'",
           "the includes bring in more than " + std::to_string(options_.max_included_elements) +
               " elements (links, joints, frames, models; the limit max_included_elements): " +
@@ -959,7 +949,7 @@ int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx
     auto doc = std::make_unique<XMLDocument>();
     int line = 0;
     if (!ParseXml(text, doc.get(), &why, &line)) {
-      result_.errors.push_back(MakeError(*path, line, what, why));
+      result_.errors.push_back(MakeReadError(*path, line, what, why));
       return kNotFound;
     }
     doc_it = included_docs_.emplace(key, std::move(doc)).first;
@@ -1637,17 +1627,17 @@ void Reader::SetRootLink(const ModelBuild& b, const std::vector<int>& tops, Mode
 ReadResult Reader::Read(const std::string& xml, const std::string& file_name,
                         std::vector<SdfModelFrames>* frames) {
   if (xml.size() > kMaxSdfFileBytes) {
-    result_.errors.push_back(MakeError(file_name, 0, "<sdf>",
-                                       "the input has " + std::to_string(xml.size()) +
-                                           " bytes, more than the limit of " +
-                                           std::to_string(kMaxSdfFileBytes)));
+    result_.errors.push_back(MakeReadError(file_name, 0, "<sdf>",
+                                           "the input has " + std::to_string(xml.size()) +
+                                               " bytes, more than the limit of " +
+                                               std::to_string(kMaxSdfFileBytes)));
     return std::move(result_);
   }
   auto doc = std::make_unique<XMLDocument>();
   std::string why;
   int line = 0;
   if (!ParseXml(xml, doc.get(), &why, &line)) {
-    result_.errors.push_back(MakeError(file_name, line, "<sdf>", why));
+    result_.errors.push_back(MakeReadError(file_name, line, "<sdf>", why));
     return std::move(result_);
   }
   const XMLElement* root = doc->RootElement();
@@ -1718,7 +1708,7 @@ ReadResult ReadSdfFile(const std::string& path, const SdfReadOptions& options,
   std::string why;
   if (!ReadWholeFile(path, &text, &why)) {
     ReadResult result;
-    result.errors.push_back(MakeError(path, 0, "<sdf>", why));
+    result.errors.push_back(MakeReadError(path, 0, "<sdf>", why));
     return result;
   }
   return ReadSdfString(text, path, options, frames);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace massprops {
 
@@ -58,6 +59,15 @@ int Model::FindParentJoint(const std::string& child_link) const {
 
 // The position is printed as compilers do: "file:line:col" when the column is known, "file:line"
 // when only the line is, "file" alone when neither is (e.g. a file that cannot be opened).
+ReadError MakeReadError(std::string file, int line, std::string element, std::string message) {
+  ReadError error;
+  error.location.file = std::move(file);
+  error.location.line = line;
+  error.element = std::move(element);
+  error.message = std::move(message);
+  return error;
+}
+
 std::string ReadError::ToString() const {
   std::string text = location.file.empty() ? std::string("<input>") : location.file;
   if (location.line > 0) {

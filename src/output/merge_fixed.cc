@@ -21,14 +21,6 @@
 namespace massprops {
 namespace {
 
-ReadError MakeError(const std::string& file, int line, const std::string& message) {
-  ReadError error;
-  error.location.file = file;
-  error.location.line = line;
-  error.message = message;
-  return error;
-}
-
 std::string Number(double value) {
   if (value == 0) value = 0;  // no "-0"
   char buffer[64];
@@ -255,12 +247,12 @@ MergeFixedResult MergeUrdf(const std::string& xml, const std::string& file_name,
   MergeFixedResult result;
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    result.errors.push_back(MakeError(file_name, doc.ErrorLineNum(), doc.ErrorStr()));
+    result.errors.push_back(MakeReadError(file_name, doc.ErrorLineNum(), "", doc.ErrorStr()));
     return result;
   }
   tinyxml2::XMLElement* robot = doc.FirstChildElement("robot");
   if (robot == nullptr) {
-    result.errors.push_back(MakeError(file_name, 0, "no <robot> element"));
+    result.errors.push_back(MakeReadError(file_name, 0, "", "no <robot> element"));
     return result;
   }
   const RobotElements elements = CollectRobotElements(robot);
@@ -303,7 +295,7 @@ void CheckReadsBack(const ReadResult& read, const std::string& file_name,
            (e.element.empty() ? "" : e.element + ": ") + e.message + ")";
   }
   result->text.clear();
-  result->errors.push_back(MakeError(file_name, 0, why));
+  result->errors.push_back(MakeReadError(file_name, 0, "", why));
 }
 
 }  // namespace
@@ -312,14 +304,14 @@ MergeFixedResult MergeFixedJoints(const std::string& xml, const std::string& fil
                                   Target target) {
   MergeFixedResult result;
   if (const char* why = UnsupportedTarget(target)) {
-    result.errors.push_back(MakeError(file_name, 0, why));
+    result.errors.push_back(MakeReadError(file_name, 0, "", why));
     return result;
   }
   ReadResult read = ReadModelString(xml, file_name);
   if (!read.ok() || read.models.empty()) {
     result.errors = read.errors;
     if (result.errors.empty()) {
-      result.errors.push_back(MakeError(file_name, 0, "the file holds no model"));
+      result.errors.push_back(MakeReadError(file_name, 0, "", "the file holds no model"));
     }
     return result;
   }

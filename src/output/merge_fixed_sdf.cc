@@ -49,16 +49,6 @@ std::string TextOf(const XMLElement* e) {
 
 std::string Tag(const XMLElement* e) { return e->Name(); }
 
-ReadError MakeError(const std::string& file, int line, const std::string& element,
-                    const std::string& message) {
-  ReadError error;
-  error.location.file = file;
-  error.location.line = line;
-  error.element = element;
-  error.message = message;
-  return error;
-}
-
 // The numbers of a text the reader has validated already (plain decimals, perhaps with '+').
 std::vector<double> Numbers(const std::string& text) {
   std::vector<double> values;
@@ -148,8 +138,8 @@ class ModelMerge {
 
  private:
   void Unsupported(const XMLElement* e, const std::string& element, const std::string& why) {
-    errors_->push_back(MakeError(file_, e == nullptr ? 0 : e->GetLineNum(), element,
-                                 "merge-fixed does not support this: " + why));
+    errors_->push_back(MakeReadError(file_, e == nullptr ? 0 : e->GetLineNum(), element,
+                                     "merge-fixed does not support this: " + why));
   }
   // The frame named by a pose element's relative_to (SDF < 1.7: its frame attribute).
   std::string PoseRef(const XMLElement* pose) const {
@@ -223,7 +213,7 @@ bool ModelMerge::PlanGroups() {
       const auto it = links_.find(Local(link.name));
       if (ScopeOf(link.name) != prefix_ || it == links_.end() || link.location.file != file_ ||
           it->second->GetLineNum() != link.location.line) {
-        errors_->push_back(MakeError(
+        errors_->push_back(MakeReadError(
             link.location.file, link.location.line, "<link> '" + link.name + "'",
             "merge-fixed does not support this: the link is welded by fixed joints to links of "
             "another <model> scope ('" +
@@ -569,12 +559,12 @@ MergeFixedResult MergeFixedSdf(const std::string& xml, const std::string& file_n
   MergeFixedResult result;
   tinyxml2::XMLDocument doc;
   if (doc.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    result.errors.push_back(MakeError(file_name, doc.ErrorLineNum(), "", doc.ErrorStr()));
+    result.errors.push_back(MakeReadError(file_name, doc.ErrorLineNum(), "", doc.ErrorStr()));
     return result;
   }
   XMLElement* sdf = doc.FirstChildElement("sdf");
   if (sdf == nullptr) {
-    result.errors.push_back(MakeError(file_name, 0, "<sdf>", "no <sdf> element"));
+    result.errors.push_back(MakeReadError(file_name, 0, "<sdf>", "no <sdf> element"));
     return result;
   }
   const SdfVersion version = ReadVersion(Attr(sdf, "version"));
@@ -597,7 +587,7 @@ MergeFixedResult MergeFixedSdf(const std::string& xml, const std::string& file_n
       for (const auto& scope : scopes) known = known || scope.second == ScopeOf(g.root_link);
       if (known) continue;
       const Link& root = model.links[g.links.front()];
-      result.errors.push_back(MakeError(
+      result.errors.push_back(MakeReadError(
           root.location.file, root.location.line, "<link> '" + root.name + "'",
           "merge-fixed does not support this: the link is welded to others by fixed joints but "
           "its <model> is not written in this file (an <include>, or models joined by a "

@@ -144,6 +144,10 @@ struct ReadError {
   std::string ToString() const;
 };
 
+/// A ReadError at `file`:`line` (column unknown; line 0: the whole file) about `element` (e.g.
+/// "<link> 'base'", or "" when no element is to blame).
+ReadError MakeReadError(std::string file, int line, std::string element, std::string message);
+
 /// Something a reader found about the model that is a finding rather than a failure to read: the
 /// model is still returned and checked. `rule` is a rule id of AllRules() (checks.h), e.g.
 /// "urdf-not-loadable", "inertial-unreadable" or "include-unresolved"; `link` is "" when the
