@@ -37,12 +37,15 @@
 #include <unordered_set>
 #include <utility>
 
+#include "io/sdf_values.h"
 #include "massprops/io/auto_inertia.h"
 
 namespace massprops {
 namespace {
 
 namespace fs = std::filesystem;
+using internal::Attr;
+using internal::Text;
 using tinyxml2::XMLComment;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
@@ -52,7 +55,6 @@ constexpr int kWorld = -1;     // The world (or the root of a file holding a lon
 constexpr int kNotFound = -2;  // A reference that names nothing.
 constexpr int kMaxResolveDepth = 1000;
 constexpr int kMaxNestingDepth = 100;
-constexpr double kPi = 3.14159265358979323846;
 
 struct Version {
   int major = 1;
@@ -106,16 +108,6 @@ std::string Trim(std::string_view s) {
   if (b == std::string_view::npos) return "";
   const size_t e = s.find_last_not_of(ws);
   return std::string(s.substr(b, e - b + 1));
-}
-
-std::string Text(const XMLElement* e) {
-  const char* t = e ? e->GetText() : nullptr;
-  return t ? Trim(t) : std::string();
-}
-
-std::string Attr(const XMLElement* e, const char* name) {
-  const char* a = e->Attribute(name);
-  return a ? std::string(a) : std::string();
 }
 
 bool ParseVersion(const std::string& text, Version* v) {
@@ -189,51 +181,6 @@ class Reader {
   }
 
   // ------------------------------------------------------------ numbers
-  bool ParseNumbers(const std::string& text, size_t min_count, size_t max_count,
-                    std::vector<double>* out, std::string* why) {
-    out->clear();
-    const char* p = text.data();
-    const char* end = p + text.size();
-    while (true) {
-      while (p < end && (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
-      if (p == end) break;
-      const char* tok = p;
-      while (p < end && !(*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r')) ++p;
-      std::string_view token(tok, static_cast<size_t>(p - tok));
-      std::string_view digits = token;
-      if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
-      double value = 0;
-      const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-      // Magnitudes beyond the largest double, and below the smallest normal one (1e-400 and
-      // subnormals such as 1e-310), are refused: libsdformat 12 (std::stod) rejects both.
-      if (r.ec == std::errc::result_out_of_range ||
-          (r.ec == std::errc() && std::fpclassify(value) == FP_SUBNORMAL)) {
-        *why = "number '" + std::string(token) +
-               "' is out of the range of double (beyond 1.8e308 or below 2.2e-308 in "
-               "magnitude)";
-        return false;
-      }
-      if (r.ec != std::errc() || r.ptr != digits.data() + digits.size() || digits.empty()) {
-        *why = "'" + std::string(token) + "' is not a number";
-        return false;
-      }
-      if (!std::isfinite(value)) {
-        *why = "'" + std::string(token) + "' is not a finite number";
-        return false;
-      }
-      out->push_back(value);
-      if (out->size() > max_count) break;
-    }
-    if (out->size() < min_count || out->size() > max_count) {
-      *why = "expected " +
-             (min_count == max_count
-                  ? std::to_string(min_count)
-                  : std::to_string(min_count) + " to " + std::to_string(max_count)) +
-             " numbers, found '" + text + "'";
-      return false;
-    }
-    return true;
-  }
 
   /// Reads one number from element `e` (text), or `fallback` when e is null.
   double Number(const XMLElement* e, double fallback, const Context& ctx,
@@ -241,7 +188,7 @@ class Reader {
     if (e == nullptr) return fallback;
     std::vector<double> v;
     std::string why;
-    if (!ParseNumbers(Text(e), 1, 1, &v, &why)) {
+    if (!internal::ParseSdfNumbers(Text(e), 1, 1, &v, &why)) {
       Error(ctx.file, e, element, why);
       return fallback;
     }
@@ -253,7 +200,7 @@ class Reader {
     if (e == nullptr) return fallback;
     std::vector<double> v;
     std::string why;
-    if (!ParseNumbers(Text(e), 3, 3, &v, &why)) {
+    if (!internal::ParseSdfNumbers(Text(e), 3, 3, &v, &why)) {
       Error(ctx.file, e, element, why);
       return fallback;
     }
@@ -262,41 +209,19 @@ class Reader {
 
   /// Parses a <pose> element (nullptr: identity).
   Pose ParsePose(const XMLElement* e, const Context& ctx, const std::string& element) {
-    Pose X;
-    if (e == nullptr) return X;
+    if (e == nullptr) return Pose();
     const std::string text = Text(e);
-    if (text.empty()) return X;
+    if (text.empty()) return Pose();
     const bool v19 = ctx.version.AtLeast(1, 9);
-    const std::string format = v19 ? Attr(e, "rotation_format") : "";
-    const std::string degrees_attr = v19 ? Attr(e, "degrees") : "";
-    const bool degrees = degrees_attr == "true" || degrees_attr == "1";
-    std::vector<double> v;
+    const std::string degrees = v19 ? Attr(e, "degrees") : "";
     std::string why;
-    if (format == "quat_xyzw") {
-      if (!ParseNumbers(text, 7, 7, &v, &why)) {
-        Error(ctx.file, e, element, why);
-        return X;
-      }
-      Eigen::Quaterniond q(v[6], v[3], v[4], v[5]);
-      if (q.norm() == 0) {
-        Error(ctx.file, e, element, "the quaternion '" + text + "' has zero length");
-        return X;
-      }
-      X.R_AB = q.normalized().toRotationMatrix();
-    } else {
-      if (!format.empty() && format != "euler_rpy") {
-        Error(ctx.file, e, element, "unknown rotation_format '" + format + "'");
-        return X;
-      }
-      if (!ParseNumbers(text, 6, 6, &v, &why)) {
-        Error(ctx.file, e, element, why);
-        return X;
-      }
-      const double k = degrees ? kPi / 180.0 : 1.0;
-      X.R_AB = RotationFromRollPitchYaw(v[3] * k, v[4] * k, v[5] * k);
+    const std::optional<Pose> X = internal::ParseSdfPose(
+        text, v19 ? Attr(e, "rotation_format") : "", degrees == "true" || degrees == "1", &why);
+    if (!X) {
+      Error(ctx.file, e, element, why);
+      return Pose();
     }
-    X.p_AB = Eigen::Vector3d(v[0], v[1], v[2]);
-    return X;
+    return *X;
   }
 
   /// relative_to of a pose element. SDF < 1.7: libsdformat's 1.6->1.7 converter moves the

@@ -12,10 +12,8 @@
 #include <tinyxml2.h>
 
 #include <Eigen/Geometry>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <unordered_map>
@@ -23,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/sdf_values.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/format_number.h"
 
@@ -31,38 +30,7 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-constexpr double kPi = 3.14159265358979323846;
-
-std::string Attr(const XMLElement* e, const char* name) {
-  const char* value = e == nullptr ? nullptr : e->Attribute(name);
-  return value == nullptr ? "" : value;
-}
-
-std::string TextOf(const XMLElement* e) {
-  const char* text = e == nullptr ? nullptr : e->GetText();
-  if (text == nullptr) return "";
-  std::string s = text;
-  const std::size_t b = s.find_first_not_of(" \t\r\n");
-  const std::size_t end = s.find_last_not_of(" \t\r\n");
-  return b == std::string::npos ? "" : s.substr(b, end - b + 1);
-}
-
 std::string Tag(const XMLElement* e) { return e->Name(); }
-
-// The numbers of a text the reader has validated already (plain decimals, perhaps with '+').
-std::vector<double> Numbers(const std::string& text) {
-  std::vector<double> values;
-  std::istringstream in(text);
-  std::string piece;
-  while (in >> piece) {
-    const std::size_t skip = !piece.empty() && piece[0] == '+' ? 1 : 0;
-    double value = 0;
-    const std::from_chars_result r =
-        std::from_chars(piece.data() + skip, piece.data() + piece.size(), value);
-    values.push_back(r.ec == std::errc() ? value : 0.0);
-  }
-  return values;
-}
 
 // What the SDF version of the file changes here: SDF >= 1.7 names a pose's frame with
 // relative_to (before: the attribute frame), SDF >= 1.9 reads rotation_format and degrees.
@@ -82,19 +50,12 @@ SdfVersion ReadVersion(const std::string& version) {
 // "x y z roll pitch yaw" (radians, or SDF 1.9 degrees with degrees="true"), or with SDF 1.9
 // rotation_format="quat_xyzw" "x y z qx qy qz qw".
 Pose PoseValue(const XMLElement* pose, const SdfVersion& version) {
-  Pose X;
-  if (pose == nullptr) return X;
-  const std::vector<double> v = Numbers(TextOf(pose));
-  if (v.size() < 6) return X;
-  X.p_AB = Eigen::Vector3d(v[0], v[1], v[2]);
-  if (version.v19 && Attr(pose, "rotation_format") == "quat_xyzw" && v.size() >= 7) {
-    X.R_AB = Eigen::Quaterniond(v[6], v[3], v[4], v[5]).normalized().toRotationMatrix();
-  } else {
-    const std::string degrees = version.v19 ? Attr(pose, "degrees") : "";
-    const double k = degrees == "true" || degrees == "1" ? kPi / 180.0 : 1.0;
-    X.R_AB = RotationFromRollPitchYaw(v[3] * k, v[4] * k, v[5] * k);
-  }
-  return X;
+  if (pose == nullptr) return Pose();
+  const std::string degrees = version.v19 ? Attr(pose, "degrees") : "";
+  std::string why;  // The reader has accepted the text; an empty one is the identity.
+  return ParseSdfPose(Text(pose), version.v19 ? Attr(pose, "rotation_format") : "",
+                      degrees == "true" || degrees == "1", &why)
+      .value_or(Pose());
 }
 
 // Writes X into the <pose> element as "x y z roll pitch yaw" in radians, each number the shortest
@@ -251,7 +212,7 @@ std::string ModelMerge::BodyOf(const std::string& name, int depth) const {
   }
   for (const XMLElement* j = element_->FirstChildElement("joint"); j != nullptr;
        j = j->NextSiblingElement("joint")) {
-    if (Attr(j, "name") == name) return BodyOf(TextOf(j->FirstChildElement("child")), depth + 1);
+    if (Attr(j, "name") == name) return BodyOf(Text(j->FirstChildElement("child")), depth + 1);
   }
   return "";
 }
@@ -261,8 +222,8 @@ std::string ModelMerge::BodyOf(const std::string& name, int depth) const {
 void ModelMerge::CheckJoints() {
   for (XMLElement* j = element_->FirstChildElement("joint"); j != nullptr;
        j = j->NextSiblingElement("joint")) {
-    const std::string parent = GroupOf(BodyOf(TextOf(j->FirstChildElement("parent"))));
-    if (parent.empty() || parent != GroupOf(BodyOf(TextOf(j->FirstChildElement("child"))))) {
+    const std::string parent = GroupOf(BodyOf(Text(j->FirstChildElement("parent"))));
+    if (parent.empty() || parent != GroupOf(BodyOf(Text(j->FirstChildElement("child"))))) {
       continue;
     }
     if (Attr(j, "type") == "fixed") {
@@ -293,7 +254,7 @@ void ModelMerge::CheckOutsideReferences(XMLElement* e) {
   };
   for (; e != nullptr; e = e->NextSiblingElement()) {
     if (e == element_) continue;
-    bool named = names_member(TextOf(e));
+    bool named = names_member(Text(e));
     for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a != nullptr; a = a->Next()) {
       named = named || names_member(a->Value());
     }
@@ -341,8 +302,9 @@ void ModelMerge::RewriteExplicitReferences(XMLElement* e) {
     return;
   }
   if (const Member* m = MemberOf(Attr(e, "expressed_in"))) {
-    const std::vector<double> v = Numbers(TextOf(e));
-    if (v.size() == 3) {
+    std::vector<double> v;
+    std::string why;
+    if (ParseSdfNumbers(Text(e), 3, 3, &v, &why)) {
       const Eigen::Vector3d x = m->X_RL.R_AB * Eigen::Vector3d(v[0], v[1], v[2]);
       e->SetText(
           (FormatShortest(x(0)) + " " + FormatShortest(x(1)) + " " + FormatShortest(x(2))).c_str());
@@ -370,7 +332,7 @@ bool NamesFrame(const XMLElement* e, const std::string& name, const std::string&
       if (names(Attr(e, attribute))) return true;
     }
     const std::string tag = Tag(e);
-    if ((tag == "parent" || tag == "child" || tag == "placement_frame") && names(TextOf(e))) {
+    if ((tag == "parent" || tag == "child" || tag == "placement_frame") && names(Text(e))) {
       return true;
     }
     if (NamesFrame(e->FirstChildElement(), name, scoped)) return true;
@@ -382,7 +344,7 @@ bool NamesFrame(const XMLElement* e, const std::string& name, const std::string&
 // where the joint frame was, attached to the group's root, so that every reference stays valid
 // (as libsdformat keeps the frames of the joints it lumps in URDF, gazebosim/sdformat#1148).
 void ModelMerge::ReplaceByFrame(XMLElement* joint) {
-  const std::string child = TextOf(joint->FirstChildElement("child"));
+  const std::string child = Text(joint->FirstChildElement("child"));
   XMLElement* frame = joint->GetDocument()->NewElement("frame");
   frame->SetAttribute("name", Attr(joint, "name").c_str());
   frame->SetAttribute("attached_to", GroupOf(BodyOf(child)).c_str());
@@ -390,7 +352,7 @@ void ModelMerge::ReplaceByFrame(XMLElement* joint) {
   const XMLElement* old = joint->FirstChildElement("pose");
   const std::string ref = PoseRef(old);
   if (!ref.empty()) {  // Already re-expressed in a frame that stays (RewriteExplicitReferences).
-    pose->SetText(TextOf(old).c_str());
+    pose->SetText(Text(old).c_str());
     for (const char* a : {"rotation_format", "degrees"}) {
       if (old->Attribute(a) != nullptr) pose->SetAttribute(a, old->Attribute(a));
     }
@@ -418,11 +380,11 @@ void ModelMerge::RewireJoints(const XMLElement* document_root) {
        j = j->NextSiblingElement("joint")) {
     XMLElement* parent = j->FirstChildElement("parent");
     XMLElement* child = j->FirstChildElement("child");
-    if (const Member* m = MemberOf(TextOf(child))) {
+    if (const Member* m = MemberOf(Text(child))) {
       ReposeDefault(j, *m);  // A joint's pose is in its child's frame by default.
       child->SetText(m->root.c_str());
     }
-    if (const Member* m = MemberOf(TextOf(parent))) parent->SetText(m->root.c_str());
+    if (const Member* m = MemberOf(Text(parent))) parent->SetText(m->root.c_str());
   }
 }
 
