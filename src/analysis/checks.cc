@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/analysis/welded_groups.h"
@@ -30,6 +32,7 @@ constexpr const char* kMasslessMovingBody = "massless-moving-body";
 constexpr const char* kMasslessWithMassOutboard = "massless-link-with-mass-outboard";
 constexpr const char* kZeroInertiaAboutJointAxis = "zero-inertia-about-joint-axis";
 constexpr const char* kInertialMissing = "inertial-missing";
+constexpr const char* kInertiaWithoutMass = "inertia-without-mass";
 constexpr const char* kModelWithoutInertials = "model-without-inertials";
 constexpr const char* kProductsSignSuspect = "products-sign-suspect";
 constexpr const char* kUnitsSuspect = "units-suspect";
@@ -55,6 +58,15 @@ constexpr double kMaxGyrationRadiusWithoutGeometry = 10;  // metres
 // inertia only if its mass cannot fit in the sphere of radius kGeometryMargin·r about the box
 // center, and a center of mass only if it is more than (kGeometryMargin − 1)·r outside the box.
 constexpr double kGeometryMargin = 2;
+// A link whose known geometry includes meshes that were read, and nothing of unknown size: a mesh
+// from CAD is the part's envelope, not a simplification, so the body may reach only a little
+// beyond its box (exporters' rounding, a part drawn a little smaller than its collision): the
+// margin is this instead of kGeometryMargin.
+constexpr double kMeshGeometryMargin = 1.1;
+// The per-axis bound of the mesh hull (LinkGeometryPoints): a moment of inertia is flagged when
+// it exceeds m · max over the hull of the squared distance to its axis by more than this factor
+// (rounding of the written numbers and of float mesh vertices is far below it).
+constexpr double kHullSlack = 1.1;
 
 // Placeholder geometry: a link whose geometry's half-diagonal is below this (a 1 mm sphere, a
 // zero-size box) has no size to judge its inertia by. Dummy masses: a link of at most this mass
@@ -65,11 +77,27 @@ constexpr double kDummyMass = 1e-3;                 // kg
 constexpr double kMarkerHalfDiagonal = 0.01;        // metres: a 1 cm cube is 0.00866
 // Where part of a welded group's geometry is a mesh of unknown size, the known geometry may cover
 // only part of the body: the geometry rules allow it to reach this many times farther.
-constexpr double kPartialGeometryMargin = 3;
+// An inertia is judged so (2: the known primitives, each already allowed kGeometryMargin, stand
+// for a body at most twice farther: a camera's collision box with its visual mesh unread); a
+// center of mass, and anything judged against a 1 cm marker, with kMarkerGeometryMargin.
+constexpr double kPartialGeometryMargin = 2;
+constexpr double kMarkerGeometryMargin = 3;
 // A typed-in inertia on a link with nothing to judge it by matters when it is at least this share
 // of its welded group's central inertia (an error of 5% in a body's inertia is about what careful
 // identification achieves, so more than that changes what a controller sees).
 constexpr double kMadeUpInertiaShare = 0.05;
+// units-suspect by the kinematic tree (a link whose geometry does not give its size): a radius of
+// gyration beyond this many times the span from the link's origin to its farthest joint, center
+// of mass and welded geometry (a rod spanning it has k = span/sqrt(12) about its center, at most
+// span about the origin; a body several times larger than every joint around it is no link's);
+// larger when some of the group's geometry is of unknown size.
+constexpr double kKinematicRatio = 5;
+constexpr double kKinematicRatioPartial = 8;
+// The lightest density of a solid part: rigid foams (expanded polystyrene, polyurethane) are about
+// 15 to 100 kg/m³ (Ashby, Materials Selection in Mechanical Design, 4th ed., chart 4.3: foams
+// span 10 to 1000 kg/m³ and nothing structural is lighter); a part lighter than 50 kg/m³ over its
+// collision volume is a foam block at most.
+constexpr double kMinBodyDensity = 50;  // kg/m³
 
 // massless-moving-body: a joint's generalized coordinate has zero inertia (the mass matrix is
 // singular) when the inertia that its outboard bodies put on it is at most this fraction of its
@@ -424,6 +452,8 @@ class Checker {
   // joint (the first in file order, as FindWeldedGroups decides); total_mass_: the model's mass.
   void BuildJointTree() {
     children_.assign(model_.links.size(), {});
+    welded_to_world_.assign(model_.links.size(), false);
+    parent_.assign(model_.links.size(), -1);
     // Names hashed once (Model::FindLink and FindParentJoint search linearly: per joint, that
     // would make a chain of n links cost n^2).
     std::unordered_map<std::string_view, int> link_of;
@@ -438,8 +468,12 @@ class Checker {
       // The tree parent joint of a link is the first joint naming it as child.
       if (!has_parent_joint.insert(joint.child).second) continue;
       const auto p = link_of.find(joint.parent), c = link_of.find(joint.child);
+      if (p == link_of.end() && c != link_of.end() && joint.type == Joint::Type::kFixed) {
+        welded_to_world_[c->second] = true;  // fixed to a parent outside the model (the world)
+      }
       if (p == link_of.end() || c == link_of.end()) continue;
       children_[p->second].emplace_back(c->second, static_cast<int>(j));
+      parent_[c->second] = p->second;
     }
     total_mass_ = 0;
     for (const Link& link : model_.links) {
@@ -551,6 +585,10 @@ class Checker {
     // The extent its inertia and center of mass must fit: its own, or its welded group's.
     std::optional<GeometryBounds> group_bounds;
     std::string geometry_name;  // "collision", "visual mesh", ...
+    // Its collision geometry is all primitives, and the inertia is judged against its own
+    // geometry: the collision is the body's envelope for the simulator (already allowed
+    // kGeometryMargin for simplification), whatever its unread visual meshes draw.
+    bool collision_envelope = false;
   };
 
   // Every per-link rule on link `link_index`, in the order they are judged.
@@ -562,6 +600,7 @@ class Checker {
     if (!CheckInertialFinite(link, who)) return;
     const bool valid = CheckInertiaValidity(link_index, who);
     const double m = link.inertial->mass;
+    if (m == 0 && !model_.is_static) CheckInertiaWithoutMass(link_index, who);
     if (!(m > 0) || !std::isfinite(m)) return;
 
     // A static SDF model never moves: the simulator never uses its mass properties, so the
@@ -571,7 +610,7 @@ class Checker {
     CheckProductsSignAgainstGeometry(judged);
     const bool units_flagged = CheckUnits(judged) || CheckMadeUpInertia(judged);
     if (!judged.group_bounds) return;
-    if (valid && !units_flagged) CheckInertiaFitsGeometry(judged);
+    if (valid && !units_flagged && !CheckInertiaFitsGeometry(judged)) CheckInertiaFitsHull(judged);
     CheckComInsideGeometry(judged);
   }
 
@@ -585,6 +624,37 @@ class Checker {
                "body)",
            {{"mass", m}});
     }
+  }
+
+  // inertia-without-mass: mass 0 with a non-zero inertia, on a body that moves, where the
+  // inertia matters: the link's welded group has no mass at all (the inertia is all there is of a
+  // moving body: its mass was lost), or the massless inertia is at least kMadeUpInertiaShare of
+  // the group's central inertia (typed-in numbers that change the group's dynamics). Not singular
+  // when other bodies give the joints inertia (so no error), but an inertia belongs to a body
+  // with mass. A group that does not move (a URDF root: PyBullet's fixed base is written with
+  // mass 0; a group welded to the world) is left alone.
+  void CheckInertiaWithoutMass(int link_index, const std::string& who) {
+    const Link& link = model_.links[link_index];
+    const Inertial& in = *link.inertial;
+    const Eigen::Matrix3d I = WrittenMatrix(in);
+    const double trace = I.trace();
+    if (!(trace > 0) || !std::isfinite(trace)) return;
+    const WeldedGroup& group = groups_[group_of_[link_index]];
+    if (!group.is_moving) return;
+    const CompositeInertia composite = CalcCompositeInertia(model_, group);
+    const double group_trace = composite.I_SScm_R.trace();
+    const double share = group_trace > 0 ? trace / group_trace : 1;
+    if (composite.mass > 0 && !(share >= kMadeUpInertiaShare)) return;
+    Emit(kInertiaWithoutMass, link, MassLocation(link),
+         who + ": mass 0 with a non-zero inertia (ixx " + Num(in.ixx) + ", iyy " + Num(in.iyy) +
+             ", izz " + Num(in.izz) + " kg·m²" +
+             (composite.mass > 0
+                  ? ", " + Format("%.3g%%", 100 * share) + " of its welded group's (" +
+                        Num(composite.mass) + " kg)"
+                  : std::string(", on a moving body that has no other mass")) +
+             "): an inertia is that of a body with mass, so the mass was probably lost in an "
+             "edit; give it the part's mass, or zero the inertia if the link is only a frame",
+         {{"mass", 0}, {"trace", trace}, {"group_share", share}});
   }
 
   // inertia-not-finite; returns whether the inertia and the inertial's pose are all finite.
@@ -683,6 +753,7 @@ class Checker {
     if (bounds && !bounds->from_collision &&
         0.5 * bounds->box_B.diagonal().norm() < kMarkerHalfDiagonal) {
       bounds->partial = true;
+      bounds->marker = true;
     }
     if (bounds) judged.smallest_extent = SmallestGeometryExtent(link, *bounds);
     // A mass lumped onto one link of a welded group shows as a center of mass outside the link's
@@ -693,13 +764,33 @@ class Checker {
       const Eigen::Vector3d h_own = 0.5 * bounds->box_B.sizes();
       const Eigen::Vector3d out_own =
           ((c - bounds->box_B.center()).cwiseAbs() - h_own).cwiseMax(Eigen::Vector3d::Zero());
-      if (out_own.norm() > (kGeometryMargin - 1) * h_own.norm()) {
+      if (out_own.norm() > (MarginOf(*bounds) - 1) * h_own.norm()) {
         judged.group_bounds = GroupBounds(link_index, *bounds);
       }
     }
+    judged.collision_envelope = bounds && judged.group_bounds &&
+                                judged.group_bounds->box_B.isApprox(bounds->box_B) &&
+                                BoundsOf(link, /*collision=*/true).has_value() &&
+                                JointsWithin(link_index, *bounds);
     judged.geometry_name = std::string(bounds && !bounds->from_collision ? "visual" : "collision") +
                            (bounds && bounds->from_mesh ? " mesh" : "");
     return judged;
+  }
+
+  // Whether every joint to a child of link `link_index` lies within kGeometryMargin of `bounds`
+  // (its origin within the box grown by (kGeometryMargin − 1) half-diagonals): then the geometry
+  // spans the link, and is not a stub around one joint of a body that reaches to the next.
+  bool JointsWithin(int link_index, const GeometryBounds& bounds) const {
+    const Eigen::Vector3d h = 0.5 * bounds.box_B.sizes();
+    const double allowed = (kGeometryMargin - 1) * h.norm();
+    for (const auto& [child, j] : children_[link_index]) {
+      (void)child;
+      const Eigen::Vector3d p = model_.joints[j].X_PC.p_AB;
+      const Eigen::Vector3d out =
+          ((p - bounds.box_B.center()).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
+      if (out.norm() > allowed) return false;
+    }
+    return true;
   }
 
   // products-sign-suspect for an inertia valid both ways: the geometry decides.
@@ -741,7 +832,13 @@ class Checker {
     if (!(trace > 0)) return false;
     const double k = std::sqrt(trace / (2 * m));
     if (!judged.bounds) {
+      if (CheckUnitsAgainstKinematics(judged, k)) return true;
+      // A dummy mass (<= kDummyMass) with a typed-in floor inertia (1e-6 kg·m² on 1e-8 kg
+      // control surfaces) is no body whose size matters: its inertia is judged by what it does to
+      // its welded group (CheckMadeUpInertia). One whose inertia has a CAD export's digits is a
+      // part whose mass was edited without its inertia: still judged.
       if (!(k > kMaxGyrationRadiusWithoutGeometry)) return false;
+      if (!(m > kDummyMass) && !PlaceholderPattern(judged.I_written).empty()) return false;
       Emit(kUnitsSuspect, link, InertiaLocation(link),
            judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
                Num(kMaxGyrationRadiusWithoutGeometry) +
@@ -770,6 +867,113 @@ class Checker {
           {"ratio", ratio},
           {"mass", m},
           {"trace", trace}});
+    return true;
+  }
+
+  // The size the kinematic tree gives a link whose geometry does not (none, placeholder geometry,
+  // a mesh of unknown size): its body reaches from its parent joint (its origin) to its child
+  // joints and its center of mass, and over the known geometry of its welded group; a leaf (no
+  // child joint) is judged by its parent's span too (a fingertip is not larger than the phalanx
+  // it hangs from; an inertial link welded to a base is not larger than the base's joints).
+  struct KinematicScale {
+    double span = 0;          // metres, from the link origin
+    std::string evidence;     // what gave it
+    bool partial = false;     // some geometry of the group (or the link's own) has unknown size
+  };
+  KinematicScale KinematicScaleOf(int link_index, const Eigen::Vector3d& c) const {
+    KinematicScale scale;
+    // The joints outboard of it, up to two joints away (a two-axis joint's intermediate link has
+    // its child joint at its own origin; the body it moves reaches to the next joint).
+    double joints = 0;
+    for (const auto& [child, j] : children_[link_index]) {
+      const Pose& X_LC = model_.joints[j].X_PC;
+      joints = std::max(joints, X_LC.p_AB.norm());
+      for (const auto& [grandchild, k] : children_[child]) {
+        (void)grandchild;
+        joints = std::max(joints, (X_LC * model_.joints[k].X_PC).p_AB.norm());
+      }
+    }
+    double parent_span = 0;
+    const int parent = parent_[link_index];
+    if (children_[link_index].empty() && parent >= 0) {
+      for (const auto& [child, j] : children_[parent]) {
+        (void)child;
+        parent_span = std::max(parent_span, model_.joints[j].X_PC.p_AB.norm());
+      }
+    }
+    // The known geometry of the welded group, as far as it reaches from this link's origin.
+    double group_reach = 0;
+    const Link& link = model_.links[link_index];
+    scale.partial = !link.geometries.empty() && !BoundsOfLink(link_index);
+    const WeldedGroup& group = groups_[group_of_[link_index]];
+    Pose X_RL;
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      if (group.links[k] == link_index) X_RL = group.X_RL[k];
+    }
+    const Pose X_LR = X_RL.Inverse();
+    for (std::size_t k = 0; k < group.links.size(); ++k) {
+      const int j = group.links[k];
+      const Link& member = model_.links[j];
+      if (member.geometries.empty()) continue;
+      const std::optional<GeometryBounds>& b = BoundsOfLink(j);
+      if (!b || b->partial) scale.partial = true;
+      if (!b) continue;
+      const Pose X_LM = X_LR * group.X_RL[k];
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p =
+            b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+        group_reach = std::max(group_reach, (X_LM.p_AB + X_LM.R_AB * p).norm());
+      }
+    }
+    const double com = c.norm();
+    scale.span = std::max({joints, parent_span, group_reach, com});
+    scale.evidence = "farthest joint outboard (two joints deep) " + Num(joints) +
+                     " m, center of mass " + Num(com) +
+                     " m" +
+                     (parent_span > 0 ? ", the parent's farthest joint " + Num(parent_span) + " m"
+                                      : std::string()) +
+                     (group_reach > 0 ? ", its welded group's geometry " + Num(group_reach) + " m"
+                                      : std::string());
+    return scale;
+  }
+
+  // units-suspect for a link whose size its geometry does not give (no geometry, placeholder
+  // geometry, a mesh of unknown size): k beyond kKinematicRatio times the span the kinematic tree
+  // gives it (KinematicScaleOf) — a body reaches at least k from its center of mass, and a link
+  // does not reach far beyond its joints and its welded group. Where some geometry of the group is
+  // of unknown size the body may be larger: kKinematicRatioPartial. Dummy masses (<= kDummyMass)
+  // are left to CheckMadeUpInertia.
+  bool CheckUnitsAgainstKinematics(const JudgedLink& judged, double k) {
+    const Link& link = *judged.link;
+    const double m = link.inertial->mass;
+    if (!(m > kDummyMass)) return false;
+    // Its own geometry of unknown size (a mesh not read) may be the body: the mesh, once read,
+    // judges it (a hand's phalanges drawn by meshes), not the joints.
+    if (!link.geometries.empty() && !BoundsOfLink(judged.index)) return false;
+    if (const std::optional<GeometryBounds>& own = BoundsOfLink(judged.index);
+        own && own->partial) {
+      return false;
+    }
+    const KinematicScale scale = KinematicScaleOf(judged.index, judged.props.p_FoScm_F);
+    if (!(scale.span > 0)) return false;
+    const double limit = scale.partial ? kKinematicRatioPartial : kKinematicRatio;
+    const double ratio = k / scale.span;
+    if (!(ratio > limit)) return false;
+    const std::string because =
+        judged.unjudged_because.empty()
+            ? (link.geometries.empty() ? "the link has no geometry"
+                                       : "its geometry's size is unknown (a mesh not read)")
+            : judged.unjudged_because;
+    Emit(kUnitsSuspect, link, InertiaLocation(link),
+         judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
+             " times the " + Num(scale.span) + " m its kinematic tree gives it (" +
+             scale.evidence + "; " + because + "; expected at most " + Num(limit) + "): " +
+             Causes(judged.I_written, m, ratio, scale.span),
+         {{"radius_of_gyration", k},
+          {"kinematic_span", scale.span},
+          {"ratio", ratio},
+          {"mass", m},
+          {"trace", judged.I_written.trace()}});
     return true;
   }
 
@@ -833,30 +1037,43 @@ class Checker {
   // The "too large" verdicts of the geometry rules are made against the group's known geometry;
   // where some of it is of unknown size (a mesh not read), the body may reach farther: the
   // allowance is then kPartialGeometryMargin times larger.
-  static double Allowance(const GeometryBounds& group_bounds) {
-    return group_bounds.partial ? kPartialGeometryMargin : 1.0;
+  // For a center of mass, and for an inertia judged against a marker (which says where a link
+  // is, not how large), kMarkerGeometryMargin: a collision stub around a joint or a frame marker
+  // may stand for a body that reaches well beyond it.
+  static double Allowance(const GeometryBounds& group_bounds, bool for_inertia) {
+    if (!group_bounds.partial) return 1.0;
+    return for_inertia && !group_bounds.marker ? kPartialGeometryMargin : kMarkerGeometryMargin;
+  }
+
+  // How far beyond its geometry's box a body may reach, in half-diagonals: kMeshGeometryMargin
+  // when the geometry is known whole and includes meshes (a CAD envelope), kGeometryMargin for
+  // primitives (often simplified).
+  static double MarginOf(const GeometryBounds& bounds) {
+    return bounds.from_mesh && !bounds.partial ? kMeshGeometryMargin : kGeometryMargin;
   }
 
   // inertia-exceeds-geometry / inertia-about-origin-suspect (valid inertias only). A body inside
   // the box lies inside the box's circumscribed sphere (center o, radius r = half-diagonal), so
   // ∫|x − o|² dm = tr(Σ_o) <= m·r² (Wensing, Kim, Slotine 2017, with the ellipsoid Q = r²·1).
-  void CheckInertiaFitsGeometry(const JudgedLink& judged) {
+  bool CheckInertiaFitsGeometry(const JudgedLink& judged) {
     const Link& link = *judged.link;
     const double m = link.inertial->mass;
     const double tol = options_.tolerance;
     const Eigen::Vector3d& c = judged.props.p_FoScm_F;
     const Eigen::Matrix3d& I_B = judged.props.I_SScm_F;
-    const double allowance = Allowance(*judged.group_bounds);
+    const double allowance =
+        judged.collision_envelope ? 1.0 : Allowance(*judged.group_bounds, /*for_inertia=*/true);
     const Eigen::Vector3d o = judged.group_bounds->box_B.center();
     const Eigen::Vector3d h = 0.5 * judged.group_bounds->box_B.sizes();
     const double scale2 = h.squaredNorm();
     const std::string& geometry_kind = judged.geometry_name;
-    const double r2 = allowance * allowance * kGeometryMargin * kGeometryMargin * scale2;
+    const double margin = MarginOf(*judged.group_bounds);
+    const double r2 = allowance * allowance * margin * margin * scale2;
     const Eigen::Vector3d d = c - o;
     // tr(Σ_o) = tr(Σ_cm) + m·|d|² = ½·tr(I) + m·|d|².
     const double spread = 0.5 * I_B.trace() + m * d.squaredNorm();
     const double bound = m * r2;
-    if (!(spread - bound > tol * bound)) return;
+    if (!(spread - bound > tol * bound)) return false;
     // Would the numbers fit as the inertia about the link origin Bo? Then I_Bcm = I − m·(|c|²1
     // − c·cᵀ) must be valid and fit the sphere.
     const Eigen::Matrix3d I_shifted =
@@ -870,7 +1087,7 @@ class Checker {
            judged.who + ": the inertia needs more room than the " + geometry_kind +
                " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
                " kg·m² about the center o of its bounding box, r = " +
-               Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
+               Num(allowance * margin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
                " m), but taken as the inertia about the link origin and shifted to the center "
                "of mass " +
                Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) + ", " +
@@ -888,13 +1105,71 @@ class Checker {
                " geometry (center " + Vec(o) + ", half-sizes " + Vec(h) +
                " m) has this inertia: ∫|x - o|² dm = tr(I)/2 + m·|c - o|² = " + Num(spread) +
                " kg·m² exceeds m·r² = " + Num(bound) + " kg·m² (r = " +
-               Num(allowance * kGeometryMargin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
-               " m, allowing for simplified geometry; ratio " + Num(spread / bound) + ")",
+               Num(allowance * margin) + " × half-diagonal = " + Num(std::sqrt(r2)) +
+               " m, " +
+               (margin == kMeshGeometryMargin ? "the mesh being the part's envelope"
+                                              : "allowing for simplified geometry") +
+               "; ratio " + Num(spread / bound) + ")",
            {{"spread", spread},
             {"bound", bound},
             {"ratio", spread / bound},
             {"half_diagonal", std::sqrt(r2)}});
     }
+    return true;
+  }
+
+  // inertia-exceeds-geometry by the hull of the link's meshes (valid inertias, links whose own
+  // geometry is known whole and includes meshes that were read, center of mass judged against
+  // the link's own geometry): for each principal axis a of the central inertia, and each axis of
+  // the link frame, a body inside the hull of the points P has I_a <= m · max_{p in P}
+  // |(p − c) × a|² (the squared distance to the axis through c is convex, so its maximum over the
+  // hull is at a vertex). Far tighter than the bounding sphere for a detailed CAD mesh.
+  void CheckInertiaFitsHull(const JudgedLink& judged) {
+    if (!options_.points || !judged.bounds || !judged.bounds->from_mesh ||
+        judged.bounds->partial || !judged.group_bounds || judged.group_bounds->partial) {
+      return;
+    }
+    // Judged against the group's geometry (a mass lumped from welded neighbours): not here.
+    if (!judged.group_bounds->box_B.isApprox(judged.bounds->box_B)) return;
+    const Link& link = *judged.link;
+    const std::optional<LinkGeometryPoints> points = options_.points(link);
+    if (!points || points->unknown > 0 || points->meshes == 0 || points->points_B.empty()) return;
+    const double m = link.inertial->mass;
+    const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+    const Eigen::Matrix3d& I = judged.props.I_SScm_F;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(I);
+    if (eig.info() != Eigen::Success) return;
+    double worst = 0, worst_moment = 0, worst_bound = 0;
+    Eigen::Vector3d worst_axis = Eigen::Vector3d::UnitX();
+    for (int i = 0; i < 6; ++i) {
+      const Eigen::Vector3d a = i < 3 ? Eigen::Vector3d(eig.eigenvectors().col(i).normalized())
+                                      : Eigen::Vector3d(Eigen::Vector3d::Unit(i - 3));
+      const double moment = a.dot(I * a);
+      double reach2 = 0;
+      for (const Eigen::Vector3d& p : points->points_B) {
+        reach2 = std::max(reach2, (p - c).cross(a).squaredNorm());
+      }
+      const double bound = m * reach2;
+      if (!(bound > 0)) continue;
+      if (moment / bound > worst) {
+        worst = moment / bound;
+        worst_moment = moment;
+        worst_bound = bound;
+        worst_axis = a;
+      }
+    }
+    if (!(worst > kHullSlack)) return;
+    Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
+         judged.who + ": no mass distribution inside the convex hull of its " +
+             judged.geometry_name + " (" + std::to_string(points->meshes) + " mesh" +
+             (points->meshes == 1 ? "" : "es") + ", " + std::to_string(points->points_B.size()) +
+             " points) has this inertia: about the axis " + Vec(worst_axis) +
+             " through the center of mass " + Vec(c) + " the moment is " + Num(worst_moment) +
+             " kg·m², but the hull allows at most m · (farthest point from that axis)² = " +
+             Num(worst_bound) + " kg·m² (ratio " + Num(worst) +
+             "): the mass was probably changed without its inertia, or the inertia comes from "
+             "another part",
+         {{"moment", worst_moment}, {"hull_bound", worst_bound}, {"ratio", worst}});
   }
 
   // com-outside-geometry.
@@ -902,13 +1177,13 @@ class Checker {
     const Link& link = *judged.link;
     const GeometryBounds& group_bounds = *judged.group_bounds;
     const Eigen::Vector3d& c = judged.props.p_FoScm_F;
-    const double allowance = Allowance(group_bounds);
+    const double allowance = Allowance(group_bounds, /*for_inertia=*/false);
     const Eigen::Vector3d o = group_bounds.box_B.center();
     const Eigen::Vector3d h = 0.5 * group_bounds.box_B.sizes();
     const double scale2 = h.squaredNorm();
     const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
     const double distance = outside.norm();
-    const double allowed = allowance * (kGeometryMargin - 1) * std::sqrt(scale2);
+    const double allowed = allowance * (MarginOf(group_bounds) - 1) * std::sqrt(scale2);
     if (!(distance - allowed > options_.tolerance * std::sqrt(scale2))) return;
     Emit(kComOutsideGeometry, link, PoseLocation(link),
          judged.who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
@@ -1046,8 +1321,10 @@ class Checker {
                                 ? "the welded group rooted at '" + root.name + "' (" +
                                       std::to_string(group.links.size()) + " links)"
                                 : "link '" + root.name + "'";
-    const bool massless_moving = CheckMasslessMovingGroup(group, who, all_massless);
-    if (!massless_moving) CheckInertialMissing(group);
+    const MasslessVerdict massless = CheckMasslessMovingGroup(group, who, all_massless);
+    if (massless != MasslessVerdict::kSingular) {
+      CheckInertialMissing(group, massless == MasslessVerdict::kMassOutboard);
+    }
     if (!composite.I_SScm_R.allFinite() || !std::isfinite(composite.mass)) return;
     CheckCompositeValidity(group, who, composite, contributing);
     CheckInertiaAboutJointAxis(group, who, composite);
@@ -1075,10 +1352,12 @@ class Checker {
   // massless-moving-body (error) where a moving group without mass makes the mass matrix
   // singular (see HingeInertiaOf): what lies outboard of its joint gives the joint's coordinates
   // no inertia, or a joint it carries gets none; otherwise massless-link-with-mass-outboard (note).
-  // Returns whether the group moves and has no mass.
-  bool CheckMasslessMovingGroup(const WeldedGroup& group, const std::string& who,
-                                bool all_massless) {
-    if (!group.is_moving || !all_massless) return false;
+  // Returns kNone unless the group moves and has no mass; kSingular when the error was given (or
+  // an outboard inertial cannot be judged), kMassOutboard when the note was.
+  enum class MasslessVerdict { kNone, kSingular, kMassOutboard };
+  MasslessVerdict CheckMasslessMovingGroup(const WeldedGroup& group, const std::string& who,
+                                           bool all_massless) {
+    if (!group.is_moving || !all_massless) return MasslessVerdict::kNone;
     const int root_index = group.links.front();
     const Link& root = model_.links[root_index];
     Joint free;  // a free-floating SDF link moves as on a floating joint
@@ -1089,7 +1368,9 @@ class Checker {
                                 : "is free-floating";
     const std::optional<CompositeInertia> outboard = OutboardComposite(root_index);
     // An outboard <inertial> unreadable or not finite: its own finding says so; nothing to judge.
-    if (!outboard || !std::isfinite(outboard->mass) || !outboard->I_SScm_R.allFinite()) return true;
+    if (!outboard || !std::isfinite(outboard->mass) || !outboard->I_SScm_R.allFinite()) {
+      return MasslessVerdict::kSingular;
+    }
     const HingeInertia hinge = HingeInertiaOf(joint.type, joint.axis, *outboard, total_mass_);
     const std::vector<std::pair<std::string, double>> values = {
         {"mass", 0},
@@ -1102,12 +1383,12 @@ class Checker {
     if (hinge.singular) {
       Emit(kMasslessMovingBody, root, MassLocation(root),
            who + " " + how + " but has zero mass, and " + hinge.why + singular, values);
-      return true;
+      return MasslessVerdict::kSingular;
     }
     if (const std::optional<std::string> carried = SingularCarriedJoint(group)) {
       Emit(kMasslessMovingBody, root, MassLocation(root),
            who + " " + how + " but has zero mass, and " + *carried + singular, values);
-      return true;
+      return MasslessVerdict::kSingular;
     }
     Emit(kMasslessWithMassOutboard, root, MassLocation(root),
          who + " " + how + " with zero mass, but " + Num(hinge.mass) + " kg lies outboard of it" +
@@ -1116,7 +1397,7 @@ class Checker {
              "moving body whose mass is below mjMINVAL = 1e-15 unless its compiler options "
              "boundmass/boundinertia raise it (see `massprops check --target mujoco`)",
          values);
-    return true;
+    return MasslessVerdict::kMassOutboard;
   }
 
   // For a massless group: the first non-fixed joint from one of its links to a group with mass
@@ -1142,8 +1423,28 @@ class Checker {
     return std::nullopt;
   }
 
-  // inertial-missing: links with collision geometry and no <inertial>.
-  void CheckInertialMissing(const WeldedGroup& group) {
+  // Whether a joint whose parent is not a link of the model (SDF "world") holds `group` with a
+  // fixed joint: then nothing in it ever moves, and its mass never enters the dynamics.
+  bool WeldedToWorld(const WeldedGroup& group) const {
+    if (group.is_moving) return false;
+    for (int i : group.links) {
+      if (welded_to_world_[i]) return true;
+    }
+    return false;
+  }
+
+  // inertial-missing: a link with a body (collision geometry of real size) and no <inertial>
+  // where nothing else carries its mass. A link welded to members that carry mass is a modelling
+  // choice, not a forgotten mass: the body's mass is lumped on them (a root whose mass sits on an
+  // `inertial_link`, collision-helper links, accessory plates, connectors whose inertials were
+  // commented out), unless the link's own collision volume would weigh more than the whole group
+  // even at kMinBodyDensity. A URDF link whose group has no mass is judged only when the group
+  // moves with mass outboard of it (`mass_outboard`: the massless-link-with-mass-outboard note):
+  // a body on a joint that has no mass of its own. The root group of a URDF (fixed to the world or
+  // a floating base: the file does not say) and a group welded to the world never move, so their
+  // mass never matters; where the group's zero mass makes the mass matrix singular, the error
+  // massless-moving-body says it.
+  void CheckInertialMissing(const WeldedGroup& group, bool mass_outboard) {
     // An SDF model none of whose links has an <inertial> is a kinematic or visual description
     // (sdformat's and gz-sim's frame and pose test models): one note for the model, not a warning
     // per link.
@@ -1151,6 +1452,7 @@ class Checker {
       NoteModelWithoutInertials(group);
       return;
     }
+    if (WeldedToWorld(group)) return;
     double group_mass = 0;
     for (int i : group.links) {
       const Link& link = model_.links[i];
@@ -1158,6 +1460,8 @@ class Checker {
         group_mass += link.inertial->mass;
       }
     }
+    const bool urdf = model_.format == Model::Format::kUrdf;
+    if (urdf && group_mass == 0 && !mass_outboard) return;
     for (int i : group.links) {
       const Link& link = model_.links[i];
       if (link.inertial) continue;
@@ -1169,11 +1473,25 @@ class Checker {
       if (b && !b->partial && 0.5 * b->box_B.diagonal().norm() < kPlaceholderHalfDiagonal) {
         continue;
       }
-      // URDF: a collision-helper link whose geometry lies inside the geometry of a welded
-      // neighbour that carries mass: that body's mass is given once, on the neighbour.
-      if (model_.format == Model::Format::kUrdf && group_mass > 0 && b && !b->partial &&
-          InsideMassiveNeighbour(group, i, b->box_B)) {
-        continue;
+      std::string evidence;
+      std::vector<std::pair<std::string, double>> values = {{"collisions", collisions},
+                                                            {"group_mass", group_mass}};
+      if (group_mass > 0) {
+        // The mass is lumped on a welded neighbour, unless this link's collision primitives
+        // alone, at the lightest density a solid part has, outweigh the whole group.
+        const std::optional<LinkShape> solid = CalcLinkShape(link);
+        if (!solid || !solid->from_collision) continue;
+        const double floor_mass = kMinBodyDensity * solid->volume;
+        if (!(floor_mass > group_mass)) continue;
+        evidence = "; its welded group carries only " + Num(group_mass) +
+                   " kg, while its collision volume " + Num(solid->volume) + " m³ would weigh " +
+                   Num(floor_mass) + " kg even at " + Num(kMinBodyDensity) +
+                   " kg/m³ (the lightest foams): the group's mass cannot be this body's";
+        values.emplace_back("collision_volume", solid->volume);
+        values.emplace_back("mass_at_min_density", floor_mass);
+      } else if (urdf) {
+        evidence = "; it moves on a joint with mass outboard of it, and nothing welded to it has "
+                   "mass";
       }
       Emit(kInertialMissing, link, link.location,
            "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
@@ -1181,8 +1499,9 @@ class Checker {
                " but no <inertial>: its mass was probably forgotten (" +
                (model_.format == Model::Format::kSdf
                     ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
-                    : "URDF makes it massless)"),
-           {{"collisions", collisions}});
+                    : "URDF makes it massless)") +
+               evidence,
+           std::move(values));
     }
   }
 
@@ -1252,6 +1571,8 @@ class Checker {
   std::vector<int> group_of_;                               // link index -> index into groups_
   std::vector<std::vector<std::pair<int, int>>> children_;  // see BuildJointTree
   double total_mass_ = 0;
+  std::vector<bool> welded_to_world_;  // link index -> the child of a fixed joint to the world
+  std::vector<int> parent_;            // link index -> its tree parent link, or -1
   bool kinematic_only_ = false;
   bool sdf_without_inertials_ = false;  // an SDF model none of whose links has an <inertial>
   bool model_note_given_ = false;       // model-without-inertials said
@@ -1297,6 +1618,8 @@ const std::vector<RuleInfo>& AllRules() {
        "intermediate link): physics accepts it, MuJoCo does not without boundmass."},
       {kZeroInertiaAboutJointAxis, Severity::kWarning, true,
        "A revolute/continuous joint's child group has zero moment of inertia about the axis."},
+      {kInertiaWithoutMass, Severity::kWarning, true,
+       "An inertial has mass 0 and a non-zero inertia: the mass was lost in an edit."},
       {kInertialMissing, Severity::kWarning, true,
        "A link has collision geometry but no <inertial>."},
       {kModelWithoutInertials, Severity::kNote, true,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,6 +73,52 @@ LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve) {
       ++result.known;
       if (geometry.type == Geometry::Type::kMesh) ++result.meshes;
       if (geometry.is_collision) result.from_collision = true;
+    }
+    return result;
+  };
+}
+
+LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
+  return [resolve](const Link& link) -> std::optional<LinkGeometryPoints> {
+    if (link.geometries.empty()) return std::nullopt;
+    LinkGeometryPoints result;
+    for (const Geometry& geometry : link.geometries) {
+      if (geometry.type != Geometry::Type::kMesh) {
+        const std::optional<Eigen::AlignedBox3d> box = CalcGeometryBounds(geometry, resolve, nullptr);
+        if (!box || box->isEmpty()) {
+          ++result.unknown;
+          continue;
+        }
+        for (int corner = 0; corner < 8; ++corner) {
+          result.points_B.push_back(
+              box->corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
+        }
+        continue;
+      }
+      // The resolved file (CalcGeometryMassProperties resolves it as every other reader does,
+      // included SDF files relative to their own file), then its vertices, scaled and posed.
+      std::string error;
+      const std::optional<GeometryMassProperties> props =
+          CalcGeometryMassProperties(geometry, resolve, &error);
+      std::shared_ptr<const TriangleMesh> mesh;
+      if (props && !props->mesh_path.empty()) {
+        if (resolve.cache != nullptr) {
+          mesh = resolve.cache->Load(props->mesh_path, &error);
+        } else {
+          auto loaded = std::make_shared<TriangleMesh>();
+          if (LoadMeshFile(props->mesh_path, loaded.get(), &error)) mesh = loaded;
+        }
+      }
+      if (!mesh || mesh->vertices.empty()) {
+        ++result.unknown;
+        continue;
+      }
+      const Eigen::Vector3d& s = geometry.scale;
+      const Pose& X_BG = geometry.X_BG;
+      for (const Eigen::Vector3d& v : mesh->vertices) {
+        result.points_B.push_back(X_BG.p_AB + X_BG.R_AB * v.cwiseProduct(s));
+      }
+      ++result.meshes;
     }
     return result;
   };

@@ -730,6 +730,7 @@ class RepairJudge {
     check_options_.tolerance = options.tolerance;
     check_options_.shape = options.shape;
     check_options_.box = options.box;
+    check_options_.points = options.points;
     for (const Finding& f : CheckModel(model, check_options_)) {
       before_.insert({f.link, f.rule});
       // Mass given to a body outboard of a massless moving group turns the group's error into

@@ -189,6 +189,8 @@ bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup)
   if (!args.no_geometry) {
     options.box = MakeLinkBoxFunction(setup->resolve);
     setup->check.box = options.box;
+    options.points = MakeLinkPointsFunction(setup->resolve);
+    setup->check.points = options.points;
   }
   return true;
 }

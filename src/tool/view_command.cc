@@ -343,12 +343,15 @@ std::vector<Repair> CheckAndPlan(const Model& model, const CheckOptions& options
                                  std::vector<Finding>* findings) {
   CheckOptions check_options = options;
   check_options.box = MakeLinkBoxFunction(resolve);
+  check_options.points = MakeLinkPointsFunction(resolve);
   const std::vector<Finding> checked = CheckModel(model, check_options);
   findings->insert(findings->end(), checked.begin(), checked.end());
   RepairOptions repair_options;
   repair_options.box = check_options.box;
+  repair_options.points = check_options.points;
   CheckOptions fix_check;  // fix's checks: the default options, and the boxes
   fix_check.box = check_options.box;
+  fix_check.points = check_options.points;
   return PlanRepairs(model, CheckModel(model, fix_check), repair_options);
 }
 

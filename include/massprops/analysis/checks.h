@@ -69,6 +69,10 @@ struct CheckOptions {
   /// a link's extent unknown. Empty: such links are judged without it. `massprops check` and
   /// `fix` set MakeLinkBoxFunction by default (`--no-geometry` leaves it empty).
   LinkBoxFunction box;
+  /// The points whose hull holds a link's geometry (mesh vertices: MakeLinkPointsFunction), for
+  /// inertia-exceeds-geometry's per-axis bound on links whose geometry includes meshes that
+  /// were read. Empty: that bound is not used. Set with `box` by default.
+  LinkPointsFunction points;
 };
 
 /// Runs every enabled rule on the model. Findings are ordered by location (line), then rule id.
@@ -91,6 +95,9 @@ struct GeometryBounds {
   /// Some geometry of the link (a mesh whose size is not known) is not in the box: the body may
   /// reach farther than the box, so only "too small" verdicts can be made from it.
   bool partial = false;
+  /// The box is that of a visual-only marker of at most 1 cm (it shows where the link is, not
+  /// how far its body reaches); partial too.
+  bool marker = false;
 };
 
 /// The link as a uniform solid of its geometry: from its primitives when its collision

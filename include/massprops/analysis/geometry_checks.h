@@ -48,6 +48,11 @@ LinkShapeFunction MakeLinkShapeFunction(const MeshResolveOptions& resolve);
 /// the link, collision and visual. Never throws.
 LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve);
 
+/// The LinkPointsFunction that reads the meshes' vertices (through `resolve.cache`, which should
+/// be set and outlive the function: each file is loaded once) and the corners of the primitives'
+/// posed boxes, for every geometry of the link, collision and visual. Never throws.
+LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve);
+
 /// The two rules above, as RuleInfo (both warnings, both off by default).
 const std::vector<RuleInfo>& GeometryRules();
 

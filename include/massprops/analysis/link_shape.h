@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "massprops/model/model.h"
 
@@ -58,5 +59,21 @@ struct LinkGeometryBox {
 
 /// The LinkGeometryBox of a link, or nullopt when it has no geometry. Must not throw.
 using LinkBoxFunction = std::function<std::optional<LinkGeometryBox>(const Link&)>;
+
+/// Points whose convex hull holds a link's geometry, in the link frame B: the vertices of its
+/// meshes (scaled and posed) and the corners of its primitives' posed boxes, for every geometry,
+/// collision and visual. A body inside the geometry lies inside their convex hull, so for any
+/// axis through its center of mass c, its moment of inertia is at most m · max over the points of
+/// the squared distance to that axis (the squared distance to a line is convex, so its maximum
+/// over the hull is at a vertex). Used by inertia-exceeds-geometry for links whose geometry
+/// includes meshes (a CAD mesh is the part's envelope: far tighter than its bounding box).
+struct LinkGeometryPoints {
+  std::vector<Eigen::Vector3d> points_B;  ///< In B (metres).
+  int meshes = 0;                         ///< Meshes read.
+  int unknown = 0;  ///< Geometries that could not be read (then the hull is not the body's).
+};
+
+/// The LinkGeometryPoints of a link, or nullopt when it has no geometry. Must not throw.
+using LinkPointsFunction = std::function<std::optional<LinkGeometryPoints>(const Link&)>;
 
 }  // namespace massprops

@@ -71,6 +71,8 @@ struct RepairOptions {
   /// the re-check of every repair judge by, as `check` does. `massprops fix` sets
   /// MakeLinkBoxFunction unless --no-geometry.
   LinkBoxFunction box;
+  /// As CheckOptions::points (the re-check of each repair uses it).
+  LinkPointsFunction points;
 };
 
 /// One number (or a run of numbers) of the file that a repair changes.

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""Precision and recall of `massprops check`'s warnings against hand-judged labels, per link and
+per rule, on the corpus table (the train set: testdata/labels/warnings.tsv over ../shared/corpus)
+and on ../shared/labelled/set1 and set2 (the validation set: labelled by others, never tuned on).
+
+Usage: tools/label_score.py [--tool BUILD/massprops] [--set corpus|labelled|all] [--list]
+                            [--extra-args "ARGS"]
+
+How a set is scored (../shared/labelled/README.md): a finding of severity warning (or error, for
+the rules the labels judge: massless-moving-body, urdf-not-loadable) is judged by the rows of its
+link: real when the link has a `real` row (a better rule that names the link's defect counts
+too), noise otherwise (a warning with no row counts as noise). Precision = real flagged links /
+flagged links; recall = real links flagged by any finding / real links. Rows whose why says
+"uncertain:" count as real in recall only when flagged (they are not required).
+Per rule: a rule's precision counts the links that rule flags; its recall counts the real rows of
+that rule that any finding on the link reports.
+"""
+import argparse
+import collections
+import csv
+import json
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(HERE, "..")
+SHARED = os.path.join(ROOT, "..", "shared")
+# Physics errors are judged exactly against the oracle (not by labels): left out of the figures.
+EXACT = {"inertia-not-physical", "mass-not-positive", "inertia-not-finite", "inertial-unreadable",
+         "read-warning", "inertia-near-boundary"}
+CORPUS_MODEL_PATHS = ["gazebo_models", "sdformat/test/integration/model",
+                      "gz-sim/test/worlds/models", "example-robot-data/robots"]
+
+
+def read_rows(path, skip_header=True):
+    rows = []
+    with open(path, newline="") as f:
+        for i, line in enumerate(f):
+            if i == 0 and skip_header:
+                continue
+            cells = line.rstrip("\n").split("\t")
+            if len(cells) < 4 or cells[0].startswith("#"):
+                continue
+            rows.append({"file": cells[0], "rule": cells[1], "link": cells[2],
+                         "real": cells[3] == "real",
+                         "uncertain": "uncertain:" in (cells[4][:40] if len(cells) > 4 else "")})
+    return rows
+
+
+def run_check(tool, cwd, files, extra):
+    cmd = [tool, "check", "--format", "json", "--fail-on", "error"] + extra + files
+    out = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True)
+    try:
+        report = json.loads(out.stdout)
+    except json.JSONDecodeError:
+        sys.exit(f"label_score: no JSON from {' '.join(cmd[:6])}...: {out.stderr[:500]}")
+    findings = []
+    for entry in report["files"]:
+        for f in entry["findings"]:
+            if f["severity"] == "note" or f["rule"] in EXACT:
+                continue
+            findings.append((entry["path"], f["rule"], f.get("link", ""), f.get("message", ""),
+                             f["severity"]))
+    return findings
+
+
+def score(name, rows, findings, listing):
+    real_links = {}
+    noise_rows = set()
+    for r in rows:
+        key = (r["file"], r["link"])
+        if r["real"]:
+            real_links.setdefault(key, []).append(r)
+        else:
+            noise_rows.add(key)
+    flagged = collections.defaultdict(set)  # (file, link) -> rules of the warnings
+    found = set()  # (file, link) with any finding, warning or error
+    for path, rule, link, _, severity in findings:
+        found.add((path, link))
+        if severity == "warning":
+            flagged[(path, link)].add(rule)
+    tp = sum(1 for k in flagged if k in real_links)
+    fp = len(flagged) - tp
+    required = {k for k, rs in real_links.items() if not all(r["uncertain"] for r in rs)}
+    hit = sum(1 for k in required if k in found)
+    prec = tp / len(flagged) if flagged else 1.0
+    rec = hit / len(required) if required else 1.0
+    print(f"## {name}: flagged links {len(flagged)} (real {tp}, noise {fp}): precision {prec:.3f};"
+          f" real links {len(required)} (+{len(real_links) - len(required)} uncertain), flagged"
+          f" {hit}: recall {rec:.3f}")
+    # Per rule.
+    per_rule = collections.defaultdict(lambda: [0, 0, 0, 0])  # real flagged, noise flagged, rows hit, rows
+    for (path, link), rules in flagged.items():
+        for rule in rules:
+            per_rule[rule][0 if (path, link) in real_links else 1] += 1
+    for k, rs in real_links.items():
+        for r in rs:
+            if r["uncertain"]:
+                continue
+            per_rule[r["rule"]][3] += 1
+            if k in found:
+                per_rule[r["rule"]][2] += 1
+    print("| rule | flagged real | flagged noise | precision | real rows | reported | recall |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for rule in sorted(per_rule):
+        a, b, c, d = per_rule[rule]
+        p = f"{a / (a + b):.3f}" if a + b else "—"
+        q = f"{c / d:.3f}" if d else "—"
+        print(f"| `{rule}` | {a} | {b} | {p} | {d} | {c} | {q} |")
+    if listing:
+        print("\nnoise flagged:")
+        for (path, link), rules in sorted(flagged.items()):
+            if (path, link) not in real_links:
+                print(f"  NOISE {path} {link} {sorted(rules)}"
+                      + (" (labelled noise)" if (path, link) in noise_rows else " (no row)"))
+        print("real missed:")
+        for k in sorted(required):
+            if k not in found:
+                print(f"  MISS {k[0]} {k[1]} {[r['rule'] for r in real_links[k]]}")
+    return prec, rec
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--tool", default=os.path.join(ROOT, "build", "massprops"))
+    ap.add_argument("--set", default="all", choices=["corpus", "labelled", "all"])
+    ap.add_argument("--list", action="store_true", help="list noise and missed links")
+    ap.add_argument("--extra-args", default="", help="more arguments for check")
+    args = ap.parse_args()
+    tool = os.path.abspath(args.tool)
+    extra = args.extra_args.split()
+    if args.set in ("corpus", "all"):
+        rows = read_rows(os.path.join(ROOT, "testdata", "labels", "warnings.tsv"))
+        corpus = os.path.join(SHARED, "corpus")
+        with open(os.path.join(corpus, "MANIFEST.tsv"), newline="") as f:
+            files = [r["file"] for r in csv.DictReader(f, delimiter="\t")
+                     if r["format"] in ("urdf", "sdf")]
+        paths = []
+        for p in CORPUS_MODEL_PATHS:
+            paths += ["--model-path", p]
+        findings = run_check(tool, corpus, files, paths + ["--package-path", "."] + extra)
+        score("corpus (train: testdata/labels/warnings.tsv)", rows, findings, args.list)
+    if args.set in ("labelled", "all"):
+        allrows, allfindings = [], []
+        for s in ("set1", "set2"):
+            base = os.path.join(SHARED, "labelled", s)
+            rows = read_rows(os.path.join(base, "labels.tsv"))
+            files = sorted(os.listdir(os.path.join(base, "files")))
+            extra_s = extra + ["--model-path", os.path.join(base, "modelpath")]
+            findings = run_check(tool, os.path.join(base, "files"), files, extra_s)
+            for r in rows:
+                r["file"] = s + "/" + r["file"]
+            allrows += rows
+            allfindings += [(s + "/" + f[0],) + tuple(f[1:]) for f in findings]
+        score("labelled (validation: ../shared/labelled set1+set2)", allrows, allfindings,
+              args.list)
+
+
+if __name__ == "__main__":
+    main()
