@@ -127,6 +127,9 @@ def main():
     ap.add_argument("--set", default="all", choices=["corpus", "labelled", "all"])
     ap.add_argument("--list", action="store_true", help="list noise and missed links")
     ap.add_argument("--extra-args", default="", help="more arguments for check")
+    ap.add_argument("--meshes", metavar="FINDINGS_JSONL",
+                    help="score the labelled set from the findings.jsonl of tools/labelled_meshes.py"
+                         " (check run in place in the repositories' snapshots, meshes present)")
     args = ap.parse_args()
     tool = os.path.abspath(args.tool)
     extra = args.extra_args.split()
@@ -141,6 +144,23 @@ def main():
             paths += ["--model-path", p]
         findings = run_check(tool, corpus, files, paths + ["--package-path", "."] + extra)
         score("corpus (train: testdata/labels/warnings.tsv)", rows, findings, args.list)
+    if args.meshes:
+        allrows, allfindings = [], []
+        for s in ("set1", "set2"):
+            rows = read_rows(os.path.join(SHARED, "labelled", s, "labels.tsv"))
+            for r in rows:
+                r["file"] = s + "/" + r["file"]
+            allrows += rows
+        with open(args.meshes) as f:
+            for line in f:
+                d = json.loads(line)
+                if d["severity"] == "note" or d["rule"] in EXACT:
+                    continue
+                allfindings.append((d["set"] + "/" + d["file"], d["rule"], d.get("link", ""),
+                                    d.get("message", ""), d["severity"]))
+        score("labelled with meshes (validation, " + args.meshes + ")", allrows, allfindings,
+              args.list)
+        return
     if args.set in ("labelled", "all"):
         allrows, allfindings = [], []
         for s in ("set1", "set2"):

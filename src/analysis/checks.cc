@@ -67,6 +67,10 @@ constexpr double kMeshGeometryMargin = 1.1;
 // it exceeds m · max over the hull of the squared distance to its axis by more than this factor
 // (rounding of the written numbers and of float mesh vertices is far below it).
 constexpr double kHullSlack = 1.1;
+// A center of mass outside a whole mesh geometry's box by more than this many half-diagonals is
+// flagged (a mirrored part's COM copied from its twin lies a whole box-width away; a few mm out of
+// a 4 cm box is an exporter's frame rounding or a screw drawn elsewhere).
+constexpr double kMeshComMargin = 0.25;
 
 // Placeholder geometry: a link whose geometry's half-diagonal is below this (a 1 mm sphere, a
 // zero-size box) has no size to judge its inertia by. Dummy masses: a link of at most this mass
@@ -764,7 +768,9 @@ class Checker {
       const Eigen::Vector3d h_own = 0.5 * bounds->box_B.sizes();
       const Eigen::Vector3d out_own =
           ((c - bounds->box_B.center()).cwiseAbs() - h_own).cwiseMax(Eigen::Vector3d::Zero());
-      if (out_own.norm() > (MarginOf(*bounds) - 1) * h_own.norm()) {
+      const double com_margin =
+          MarginOf(*bounds) == kMeshGeometryMargin ? kMeshComMargin : kGeometryMargin - 1;
+      if (out_own.norm() > com_margin * h_own.norm()) {
         judged.group_bounds = GroupBounds(link_index, *bounds);
       }
     }
@@ -1183,7 +1189,9 @@ class Checker {
     const double scale2 = h.squaredNorm();
     const Eigen::Vector3d outside = ((c - o).cwiseAbs() - h).cwiseMax(Eigen::Vector3d::Zero());
     const double distance = outside.norm();
-    const double allowed = allowance * (MarginOf(group_bounds) - 1) * std::sqrt(scale2);
+    const double margin = MarginOf(group_bounds) == kMeshGeometryMargin ? kMeshComMargin
+                                                                        : kGeometryMargin - 1;
+    const double allowed = allowance * margin * std::sqrt(scale2);
     if (!(distance - allowed > options_.tolerance * std::sqrt(scale2))) return;
     Emit(kComOutsideGeometry, link, PoseLocation(link),
          judged.who + ": the center of mass " + Vec(c) + " is " + Num(distance) +
