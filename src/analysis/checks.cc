@@ -931,9 +931,8 @@ class Checker {
         group_reach = std::max(group_reach, (X_LM.p_AB + X_LM.R_AB * p).norm());
       }
     }
-    // No joint gives a size (a single free link, a leaf whose parent's joints sit at its origin):
-    // no kinematic scale; the center of mass and the group's geometry only add to one.
-    if (!(joints > 0) && !(parent_span > 0)) return scale;
+    // A link with no joint at all (a single free body) has no kinematic tree to give it a size.
+    if (children_[link_index].empty() && parent < 0) return scale;
     const double com = c.norm();
     scale.span = std::max({joints, parent_span, group_reach, com});
     scale.evidence = "farthest joint outboard (two joints deep) " + Num(joints) +
