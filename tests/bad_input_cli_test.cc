@@ -436,4 +436,31 @@ TEST_F(BadInputTest, EmptyAndGarbageMeshesAreNamed) {
   }
 }
 
+// urdfdom reports what it cannot read through console_bridge, which prints to the terminal unless
+// massprops captures it (docs/urdf.md, console_bridge). Standard error must hold nothing but
+// massprops' own lines: each starts with the file's path or "massprops". The fixtures hold
+// capsules (urdfdom logs "Unknown geometry type 'capsule'"), one with a NUL byte after the end,
+// as bullet3's pybullet_data/humanoid/humanoid.urdf (issue 25).
+TEST_F(BadInputTest, StandardErrorHoldsOnlyWhatMasspropsSays) {
+  const std::string data = std::string(MASSPROPS_TESTDATA_DIR) + "/urdf/";
+  for (const std::string name : {"nul_byte_capsule.urdf", "capsule.urdf"}) {
+    fs::copy_file(data + name, dir_ / name);
+    for (const std::string command :
+         {"check", "check -j 2", "check --format json", "report", "report --format json", "fix",
+          "view -o page.html", "merge-fixed -o merged.urdf"}) {
+      const fs::path err = dir_ / "stderr.txt";
+      const std::string line = "cd '" + dir_.string() + "' && timeout 120 '" + kTool + "' " +
+                               command + " " + name + " </dev/null >/dev/null 2>'" +
+                               err.string() + "'";
+      const int status = std::system(line.c_str());
+      EXPECT_TRUE(WIFEXITED(status)) << command << " " << name;
+      std::istringstream lines(ReadFile(err));
+      for (std::string text; std::getline(lines, text);) {
+        EXPECT_TRUE(text.rfind(name, 0) == 0 || text.rfind("massprops", 0) == 0)
+            << command << " " << name << ": standard error: " << text;
+      }
+    }
+  }
+}
+
 }  // namespace

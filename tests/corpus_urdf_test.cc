@@ -137,6 +137,16 @@ void ExpectSameModel(const urdf::ModelInterface& expected, const Model& actual,
         << what << " parent joint";
     if (link.inertial_unreadable) {
       EXPECT_FALSE(link.inertial.has_value()) << what;
+      // What urdfdom loads of it is kept, bit for bit (dex2_5/Left_Hand.urdf: the mass and
+      // center of mass as written, the inertia zero and marked unknown; issue 25).
+      ASSERT_TRUE(link.loaded_inertial.has_value() && other->inertial) << what;
+      const urdf::Inertial& i = *other->inertial;
+      EXPECT_EQ(link.loaded_inertial->mass, i.mass) << what;
+      EXPECT_EQ(link.loaded_inertial->X_BBi.p_AB,
+                Eigen::Vector3d(i.origin.position.x, i.origin.position.y, i.origin.position.z))
+          << what;
+      EXPECT_EQ(link.loaded_inertial->ixz, i.ixz) << what;
+      EXPECT_NE(link.loaded_inertial->unknown, 0u) << what;
     } else {
       ASSERT_EQ(link.inertial.has_value(), static_cast<bool>(other->inertial)) << what;
     }

@@ -176,4 +176,54 @@ TEST(ReportCliTest, MergeFixedForGazeboWritesAnSdfUnchangedWithANote) {
       << run.output;
 }
 
+// testdata/urdf/inertia_unreadable.urdf: urdfdom loads the pad with mass 0.0075 kg at
+// (0.02, 0, 0) and an inertia it could not read (tests/urdf_unreadable_inertial_test.cc). Every
+// format says the inertia is unknown rather than printing zeros; the composites say they are
+// incomplete and which link makes them so.
+TEST(ReportCliTest, ALinkWhoseInertiaCannotBeReadHasItsMassAndAnUnknownInertiaInEveryFormat) {
+  const std::string file =
+      "'" + std::string(MASSPROPS_TESTDATA_DIR) + "/urdf/inertia_unreadable.urdf'";
+  const ToolRun json_run = RunTool("report --format json " + file);
+  ASSERT_EQ(json_run.exit_code, 0) << json_run.output;
+  const nlohmann::json model = nlohmann::json::parse(json_run.output)["models"][0];
+  const nlohmann::json& pad = model["links"][1];
+  EXPECT_EQ(pad["name"], "pad");
+  EXPECT_EQ(pad["mass"].get<double>(), 0.0075);
+  EXPECT_EQ(pad["com"][0].get<double>(), 0.02);
+  EXPECT_TRUE(pad["inertia_about_com"].is_null());
+  EXPECT_TRUE(pad["principal_moments"].is_null());
+  EXPECT_TRUE(pad["equivalent_box"].is_null());
+  EXPECT_EQ(pad["unknown"], nlohmann::json({"inertia"}));
+  EXPECT_FALSE(model["links"][0].contains("unknown"));  // the finger is known
+  const nlohmann::json& group = model["welded_groups"][0];
+  EXPECT_NEAR(group["mass"].get<double>(), 0.1075, 1e-16);  // 0.1 + 0.0075
+  EXPECT_TRUE(group["inertia_about_com"].is_null());
+  EXPECT_EQ(group["incomplete_links"], nlohmann::json({"pad"}));
+  EXPECT_EQ(model["total"]["incomplete_links"], nlohmann::json({"pad"}));
+  EXPECT_EQ(model["total"]["unknown"], nlohmann::json({"inertia"}));
+
+  const ToolRun text = RunTool("report " + file);
+  ASSERT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.output.find("note: link 'pad': its <inertial> could not be read wholly"),
+            std::string::npos)
+      << text.output;
+  EXPECT_NE(text.output.find("note: group 'finger': incomplete: inertia unknown, since the "
+                             "numbers of pad are partly unknown"),
+            std::string::npos)
+      << text.output;
+  EXPECT_NE(text.output.find("0.0075"), std::string::npos);
+
+  // CSV: the pad's row has its mass and center of mass, and empty inertia fields.
+  const ToolRun csv = RunTool("report --format csv " + file);
+  ASSERT_EQ(csv.exit_code, 0);
+  std::istringstream lines(csv.output);
+  std::string line, pad_row;
+  while (std::getline(lines, line)) {
+    if (line.find(",link,pad,") != std::string::npos) pad_row = line;
+  }
+  EXPECT_NE(pad_row.find(",link,pad,pad,0.0074999999999999997,0.02,0,0,,,,,,,,,,"),
+            std::string::npos)
+      << pad_row;
+}
+
 }  // namespace

@@ -157,7 +157,10 @@ BodyMassProperties ReExpress(const BodyMassProperties& body_A, const std::string
   const Eigen::Matrix3d& R = X_FA.R_AB;
   Eigen::Matrix3d I_F = R * body_A.inertia_about_com * R.transpose();
   I_F = (0.5 * (I_F + I_F.transpose())).eval();
-  return MakeBodyMassProperties(frame_F, body_A.mass, X_FA.p_AB + R * body_A.com, I_F);
+  BodyMassProperties body_F =
+      MakeBodyMassProperties(frame_F, body_A.mass, X_FA.p_AB + R * body_A.com, I_F);
+  body_F.unknown = body_A.unknown;
+  return body_F;
 }
 
 // A link's mass properties in its frame L re-expressed in frame A (X_AL given), the inertia made
@@ -188,6 +191,14 @@ std::optional<Eigen::Vector3d> CalcEquivalentBox(double mass, const Eigen::Vecto
     sides(k) = std::sqrt(6 * std::max(excess, 0.0) / mass);
   }
   return sides;
+}
+
+unsigned BodyUnknownOf(unsigned inertial_unknown) {
+  unsigned unknown = 0;
+  if (inertial_unknown & kInertialMass) unknown |= kUnknownMass | kUnknownCom | kUnknownInertia;
+  if (inertial_unknown & kInertialPosition) unknown |= kUnknownCom | kUnknownInertia;
+  if (inertial_unknown != 0) unknown |= kUnknownInertia;
+  return unknown;
 }
 
 BodyMassProperties MakeBodyMassProperties(const std::string& frame, double mass,
@@ -379,7 +390,31 @@ class LinkPropsTable {
   // The link's, computed; when kept, links must come in order 0, 1, 2, ...
   const MassProperties& Add(int link) {
     if (!keep_) return Get(link);
-    return props_.emplace_back(LinkMassProperties(model_.links[link], model_.format));
+    const Link& l = model_.links[link];
+    if (l.inertial_unreadable) unknown_.emplace_back(link, UnknownInertialNumbers(l));
+    return props_.emplace_back(LinkMassProperties(l, model_.format));
+  }
+  // Whether a link may have unknown numbers (when kept: whether one added has).
+  bool AnyUnknown() const { return !keep_ || !unknown_.empty(); }
+  // The link's unknown numbers (Inertial::unknown bits); when kept, once the link is added.
+  unsigned InertialUnknown(int link) const {
+    if (!keep_) return UnknownInertialNumbers(model_.links[link]);
+    const auto found = std::lower_bound(unknown_.begin(), unknown_.end(),
+                                        std::make_pair(link, 0u));
+    return found != unknown_.end() && found->first == link ? found->second : 0;
+  }
+  // What of the composite of `links` is unknown (kUnknown* bits); their names with unknown
+  // numbers appended to *names.
+  unsigned CompositeUnknown(const std::vector<int>& links, std::vector<std::string>* names) const {
+    if (!AnyUnknown()) return 0;
+    unsigned unknown = 0;
+    for (int link : links) {
+      const unsigned numbers = InertialUnknown(link);
+      if (numbers == 0) continue;
+      unknown |= BodyUnknownOf(numbers);
+      names->push_back(model_.links[link].name);
+    }
+    return unknown;
   }
   // The link's (when not kept: valid until the next call).
   const MassProperties& Get(int link) {
@@ -403,6 +438,7 @@ class LinkPropsTable {
   const Model& model_;
   bool keep_;
   std::vector<MassProperties> props_;  // per link, when kept
+  std::vector<std::pair<int, unsigned>> unknown_;  // (link, its unknown numbers), when kept
   MassProperties scratch_;
   std::vector<Pose> X_RL_;  // of the group at hand (Composite)
 };
@@ -465,8 +501,9 @@ bool ReportLinksAndGroups(const Model& model, const ModelIndex& index,
   report->welded_groups.reserve(groups.size());
   for (int link : links) {
     const MassProperties& props = table->Add(link);
-    const BodyMassProperties body =
+    BodyMassProperties body =
         MakeBodyMassProperties(model.links[link].name, props.mass, props.p_FoScm_F, props.I_SScm_F);
+    body.unknown = BodyUnknownOf(table->InertialUnknown(link));
     if (!frame->CanExpress(link)) return false;
     LinkMassReport& entry = report->links.emplace_back();  // in place: the entry is large
     entry.name = model.links[link].name;
@@ -477,9 +514,10 @@ bool ReportLinksAndGroups(const Model& model, const ModelIndex& index,
     }
   }
   for (const WeldedGroup& group : groups) {
-    const BodyMassProperties body = FromComposite(group.root_link, table->Composite(group, index));
+    BodyMassProperties body = FromComposite(group.root_link, table->Composite(group, index));
     if (!frame->CanExpress(group.links.front())) return false;
     GroupMassReport& entry = report->welded_groups.emplace_back();
+    body.unknown = table->CompositeUnknown(group.links, &entry.incomplete_links);
     entry.root_link = group.root_link;
     entry.links.reserve(group.links.size());
     for (int link : group.links) entry.links.push_back(model.links[link].name);
@@ -543,7 +581,19 @@ bool ReportTotal(const Model& model, const ModelIndex& index,
         return true;
       });
   const std::string anchor_name = anchor >= 0 ? model.links[anchor].name : model.root_link;
-  const BodyMassProperties total = FromComposite(anchor_name, composite);
+  BodyMassProperties total = FromComposite(anchor_name, composite);
+  // The links left out of the total (unreachable) do not make it incomplete.
+  std::vector<int> included;
+  if (table->AnyUnknown()) {
+    included.reserve(links.size());
+    for (int link : links) {
+      if (std::find(report->unreachable_links.begin(), report->unreachable_links.end(),
+                    model.links[link].name) == report->unreachable_links.end()) {
+        included.push_back(link);
+      }
+    }
+  }
+  total.unknown = table->CompositeUnknown(included, &report->total_incomplete_links);
   if (anchor >= 0 && !frame->CanExpress(anchor)) return false;
   report->total = anchor >= 0 ? frame->InFrame(total, anchor) : total;
   return true;

@@ -260,19 +260,32 @@ void internal::CalcGroupPoses(const Model& model, const WeldedGroup& group,
   }
 }
 
+namespace {
+
+// The inertial the loader loads: the one written, or what was loaded of one that could not be read
+// wholly (Link::loaded_inertial); null when the link has neither.
+const Inertial* LoadedInertial(const Link& link) {
+  if (link.inertial) return &*link.inertial;
+  return link.loaded_inertial ? &*link.loaded_inertial : nullptr;
+}
+
+}  // namespace
+
 double internal::LinkMassAndCom(const Link& link, Model::Format format,
                                 Eigen::Vector3d* p_BoBcm_B) {
-  if (!link.inertial) {
+  const Inertial* inertial = LoadedInertial(link);
+  if (inertial == nullptr) {
     p_BoBcm_B->setZero();
     return format == Model::Format::kSdf ? 1.0 : 0.0;
   }
-  *p_BoBcm_B = link.inertial->X_BBi.p_AB;
-  return link.inertial->mass;
+  *p_BoBcm_B = inertial->X_BBi.p_AB;
+  return inertial->mass;
 }
 
 MassProperties LinkMassProperties(const Link& link, Model::Format format) {
   MassProperties props;
-  if (!link.inertial) {
+  const Inertial* loaded = LoadedInertial(link);
+  if (loaded == nullptr) {
     if (format == Model::Format::kSdf) {
       // SDF specification (link.sdf, inertial.sdf): mass 1, ixx = iyy = izz = 1, products 0.
       props.mass = 1;
@@ -280,7 +293,7 @@ MassProperties LinkMassProperties(const Link& link, Model::Format format) {
     }
     return props;
   }
-  const Inertial& inertial = *link.inertial;
+  const Inertial& inertial = *loaded;
   const Eigen::Matrix3d& R_BBi = inertial.X_BBi.R_AB;
   props.mass = inertial.mass;
   props.p_FoScm_F = inertial.X_BBi.p_AB;

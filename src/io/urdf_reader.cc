@@ -22,6 +22,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -101,6 +102,7 @@ struct Underflow {
   int line = 0;
   std::string what;  // `<mass value="1e-400">`
   double value = 0;  // what urdfdom reads
+  unsigned number = 0;  // which number (an Inertial::unknown bit)
 };
 
 // The lines of the elements that carry mass properties, by name and order. Decides nothing.
@@ -142,7 +144,7 @@ class Reader {
                               const Joint& kept);
   void ReportUnreadableInertial(const XMLElement* link_xml, Link* link);
   void ReportUnderflows(Model* model);
-  void InertialUnreadable(int line, Link* link, std::string message);
+  void InertialUnreadable(int line, Link* link, std::string message, unsigned unknown);
   void ReportNotLoadable(const std::vector<std::string>& errors);
   int LineOfNamed(std::string_view message) const;
 
@@ -223,7 +225,7 @@ bool Underflows(std::string_view text, double* value) {
 // The first number of a link's first <inertial> that underflows, in urdfdom's order of reading
 // (origin xyz, rpy, mass, inertia ixx ... izz; vectors split at spaces as urdf::Vector3::init).
 void Reader::IndexUnderflow(const XMLElement* inertial, int link) {
-  const auto check = [&](const XMLElement* e, const char* attribute) {
+  const auto check = [&](const XMLElement* e, const char* attribute, unsigned number) {
     const char* text = e != nullptr ? e->Attribute(attribute) : nullptr;
     if (text == nullptr) return false;
     const bool vector = std::strcmp(e->Name(), "origin") == 0;
@@ -234,7 +236,8 @@ void Reader::IndexUnderflow(const XMLElement* inertial, int link) {
       if (Underflows(all.substr(begin, end - begin), &value)) {
         index_.underflows.push_back(
             {link, LineOf(e),
-             std::string("<") + e->Name() + " " + attribute + "=" + Quote(text) + ">", value});
+             std::string("<") + e->Name() + " " + attribute + "=" + Quote(text) + ">", value,
+             number});
         return true;
       }
       begin = end + 1;
@@ -242,11 +245,16 @@ void Reader::IndexUnderflow(const XMLElement* inertial, int link) {
     return false;
   };
   const XMLElement* origin = inertial->FirstChildElement("origin");
-  if (check(origin, "xyz") || check(origin, "rpy")) return;
-  if (check(inertial->FirstChildElement("mass"), "value")) return;
+  if (check(origin, "xyz", kInertialPosition) || check(origin, "rpy", kInertialOrientation)) {
+    return;
+  }
+  if (check(inertial->FirstChildElement("mass"), "value", kInertialMass)) return;
   const XMLElement* inertia = inertial->FirstChildElement("inertia");
-  for (const char* attribute : {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}) {
-    if (check(inertia, attribute)) return;
+  const std::pair<const char*, unsigned> entries[] = {
+      {"ixx", kInertialIxx}, {"ixy", kInertialIxy}, {"ixz", kInertialIxz},
+      {"iyy", kInertialIyy}, {"iyz", kInertialIyz}, {"izz", kInertialIzz}};
+  for (const auto& [attribute, number] : entries) {
+    if (check(inertia, attribute, number)) return;
   }
 }
 
@@ -540,12 +548,18 @@ bool UrdfdomReadsVector(const char* text) {
   }
 }
 
-// urdfdom could not read the link's first <inertial>: say what, in urdfdom's order of reading.
+// urdfdom could not read the link's first <inertial>: say what, in urdfdom's order of reading,
+// and what urdfdom loads instead. urdfdom 3.0.1 keeps the link and its inertial as far as it got:
+// an unreadable <origin> leaves all of it zero; an unreadable <mass> keeps the origin, with mass
+// and inertia zero; an unreadable <inertia> keeps the origin and the mass, with all six inertia
+// numbers zero (measured with urdf::parseURDF: tests/urdf_reader_test.cc,
+// WhatUrdfdomLoadsOfAPartlyReadInertialIsKeptWithItsUnknownNumbersMarked).
 void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
   const XMLElement* inertial = link_xml->FirstChildElement("inertial");
   if (inertial == nullptr) return;
   int line = LineOf(inertial);
   std::string what;
+  unsigned unknown = kInertialAll;
   const XMLElement* origin = inertial->FirstChildElement("origin");
   const XMLElement* mass = inertial->FirstChildElement("mass");
   const XMLElement* inertia = inertial->FirstChildElement("inertia");
@@ -556,6 +570,7 @@ void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
       line = LineOf(origin);
     }
   }
+  if (what.empty()) unknown = kInertialMass | kInertialMoments;
   if (what.empty() && mass == nullptr) what = "<inertial> without <mass>";
   if (what.empty() && mass->Attribute("value") == nullptr) {
     what = "<mass> without 'value'";
@@ -565,6 +580,7 @@ void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
     what = std::string("<mass value=") + Quote(mass->Attribute("value")) + ">";
     line = LineOf(mass);
   }
+  if (what.empty()) unknown = kInertialMoments;
   if (what.empty() && inertia == nullptr) what = "<inertial> without <inertia>";
   for (const char* attribute : {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"}) {
     if (!what.empty()) break;
@@ -575,22 +591,37 @@ void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
       line = LineOf(inertia);
     }
   }
-  if (what.empty()) what = "its <inertial>";
+  if (what.empty()) {
+    what = "its <inertial>";
+    unknown = kInertialAll;
+  }
+  const char* loads =
+      unknown == kInertialMoments
+          ? "' and loads the link with its mass and center of mass as written but an inertia of "
+            "zero (all six numbers)"
+          : unknown == (kInertialMass | kInertialMoments)
+                ? "' and loads the link with its center of mass as written but mass and inertia "
+                  "zero"
+                : "' and loads the link's <inertial> as all zeros";
   InertialUnreadable(line, link,
-                     "ROS's URDF parser cannot read " + what + " of link '" + link->name +
-                         "' and loads the link with a partly read inertial (what follows the bad "
-                         "value is zero); write one decimal number per attribute, nothing around "
-                         "it");
+                     "ROS's URDF parser cannot read " + what + " of link '" + link->name + loads +
+                         "; write one decimal number per attribute, nothing around it",
+                     unknown);
 }
 
-// The link's inertial is not the one written: an error finding, and the link is not judged.
-void Reader::InertialUnreadable(int line, Link* link, std::string message) {
+// The link's inertial is not the one written: an error finding, and the link is not judged. What
+// the loader loaded moves to Link::loaded_inertial, `unknown` marking what is not the author's.
+void Reader::InertialUnreadable(int line, Link* link, std::string message, unsigned unknown) {
   ReadFinding finding;
   finding.rule = kInertialUnreadable;
   finding.link = link->name;
   finding.location = Loc(line);
   finding.message = std::move(message);
   result_.findings.push_back(std::move(finding));
+  if (link->inertial) {
+    link->loaded_inertial = std::move(link->inertial);
+    link->loaded_inertial->unknown = unknown;
+  }
   link->inertial.reset();
   link->inertial_unreadable = true;
 }
@@ -611,7 +642,8 @@ void Reader::ReportUnderflows(Model* model) {
                            value +
                            ": the number is not zero but below the smallest normal double "
                            "(2.2e-308), so it underflows (SDF readers refuse it); write 0, or a "
-                           "value of at least 2.2e-308");
+                           "value of at least 2.2e-308",
+                       u.number);
   }
 }
 
@@ -944,15 +976,22 @@ class LenientReader {
  private:
   SourceLocation Loc(const XMLNode* node) const { return SourceLocation{file_, LineOf(node), 0}; }
 
-  void Unreadable(Link* link, const XMLElement* element, const std::string& what) {
+  // The numbers of the link's inertial that cannot be read (`what`, the first at `element`): an
+  // error finding; every other number is kept in Link::loaded_inertial, the unread ones (held as
+  // 0) marked in Inertial::unknown.
+  void Unreadable(Link* link, const XMLElement* element, const std::string& what,
+                  unsigned unknown) {
     ReadFinding finding;
     finding.rule = kInertialUnreadable;
     finding.link = link->name;
     finding.location = Loc(element);
     finding.message = "neither ROS's URDF parser nor a lenient reading can read " + what +
                       " of link '" + link->name +
-                      "' as numbers; its mass properties are not checked";
+                      "' as numbers; its mass properties are not checked, and the report leaves "
+                      "the numbers that depend on them unknown";
     result_->findings.push_back(std::move(finding));
+    link->loaded_inertial = std::move(link->inertial);
+    link->loaded_inertial->unknown = unknown;
     link->inertial.reset();
     link->inertial_unreadable = true;
   }
@@ -985,43 +1024,62 @@ class LenientReader {
     if (const XMLElement* i = e->FirstChildElement("inertial")) {
       Inertial& inertial = link.inertial.emplace();
       inertial.location = Loc(i);
+      // Every number is read that can be; those that cannot are listed (the first's element
+      // locates the finding) and marked unknown.
       std::string what;
-      const XMLElement* origin = i->FirstChildElement("origin");
-      inertial.pose_location = Loc(origin);
-      if (const std::optional<Pose> X = ReadOrigin(origin, &what)) {
-        inertial.X_BBi = *X;
-      } else {
-        Unreadable(&link, origin, what);
-        return link;
+      const XMLElement* first_bad = nullptr;
+      unsigned unknown = 0;
+      const auto bad = [&](const XMLElement* element, const std::string& text, unsigned number) {
+        what += (what.empty() ? "" : ", ") + text;
+        if (first_bad == nullptr) first_bad = element;
+        unknown |= number;
+      };
+      if (const XMLElement* origin = i->FirstChildElement("origin")) {
+        inertial.pose_location = Loc(origin);
+        const std::pair<const char*, unsigned> parts[] = {{"xyz", kInertialPosition},
+                                                          {"rpy", kInertialOrientation}};
+        for (const auto& [attribute, number] : parts) {
+          const char* text = origin->Attribute(attribute);
+          if (text == nullptr) continue;
+          const std::optional<Eigen::Vector3d> v = LenientVector(text);
+          if (!v) {
+            bad(origin, std::string("<origin ") + attribute + "=" + Quote(text) + ">", number);
+          } else if (number == kInertialPosition) {
+            inertial.X_BBi.p_AB = *v;
+          } else {
+            inertial.X_BBi.R_AB = RotationFromRollPitchYaw(v->x(), v->y(), v->z());
+          }
+        }
       }
       if (const XMLElement* mass = i->FirstChildElement("mass")) {
         inertial.mass_location = Loc(mass);
         if (const char* text = mass->Attribute("value")) {
           const std::optional<double> value = LenientNumber(text);
-          if (!value) {
-            Unreadable(&link, mass, std::string("<mass value=") + Quote(text) + ">");
-            return link;
+          if (value) {
+            inertial.mass = *value;
+          } else {
+            bad(mass, std::string("<mass value=") + Quote(text) + ">", kInertialMass);
           }
-          inertial.mass = *value;
         }
       }
       if (const XMLElement* inertia = i->FirstChildElement("inertia")) {
         inertial.inertia_location = Loc(inertia);
-        const std::pair<const char*, double*> entries[] = {
-            {"ixx", &inertial.ixx}, {"ixy", &inertial.ixy}, {"ixz", &inertial.ixz},
-            {"iyy", &inertial.iyy}, {"iyz", &inertial.iyz}, {"izz", &inertial.izz}};
-        for (const auto& [attribute, target] : entries) {
+        const std::tuple<const char*, double*, unsigned> entries[] = {
+            {"ixx", &inertial.ixx, kInertialIxx}, {"ixy", &inertial.ixy, kInertialIxy},
+            {"ixz", &inertial.ixz, kInertialIxz}, {"iyy", &inertial.iyy, kInertialIyy},
+            {"iyz", &inertial.iyz, kInertialIyz}, {"izz", &inertial.izz, kInertialIzz}};
+        for (const auto& [attribute, target, number] : entries) {
           const char* text = inertia->Attribute(attribute);
           if (text == nullptr) continue;
           const std::optional<double> value = LenientNumber(text);
-          if (!value) {
-            Unreadable(&link, inertia,
-                       std::string("<inertia ") + attribute + "=" + Quote(text) + ">");
-            return link;
+          if (value) {
+            *target = *value;
+          } else {
+            bad(inertia, std::string("<inertia ") + attribute + "=" + Quote(text) + ">", number);
           }
-          *target = *value;
         }
       }
+      if (unknown != 0) Unreadable(&link, first_bad, what, unknown);
     }
     for (const XMLElement* child = e->FirstChildElement(); child != nullptr;
          child = child->NextSiblingElement()) {

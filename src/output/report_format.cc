@@ -24,16 +24,36 @@ nlohmann::json Mat(const Eigen::Matrix3d& m) {
   return {Vec(m.row(0).transpose()), Vec(m.row(1).transpose()), Vec(m.row(2).transpose())};
 }
 
+// The names of the unknown parts of a body (BodyMassProperties::unknown), in the schema's words.
+std::vector<std::string> UnknownNames(unsigned unknown) {
+  std::vector<std::string> names;
+  if (unknown & kUnknownMass) names.push_back("mass");
+  if (unknown & kUnknownCom) names.push_back("com");
+  if (unknown & kUnknownInertia) names.push_back("inertia");
+  return names;
+}
+
+std::string JoinedWords(const std::vector<std::string>& words, const char* separator) {
+  std::string text;
+  for (std::size_t i = 0; i < words.size(); ++i) text += (i ? separator : "") + words[i];
+  return text;
+}
+
+// A body's numbers; those it does not know are null, and "unknown" names them (only then).
 void AddBody(const BodyMassProperties& body, nlohmann::json* out) {
   nlohmann::json& j = *out;
+  const bool mass = !(body.unknown & kUnknownMass), com = !(body.unknown & kUnknownCom);
+  const bool inertia = !(body.unknown & kUnknownInertia);
   j["frame"] = body.frame;
-  j["mass"] = body.mass;
-  j["com"] = Vec(body.com);
-  j["inertia_about_com"] = Mat(body.inertia_about_com);
-  j["principal_moments"] = Vec(body.principal_moments);
-  j["principal_axes"] = Mat(body.principal_axes);
-  j["equivalent_box"] = body.equivalent_box ? Vec(*body.equivalent_box) : nlohmann::json();
-  j["digits_lost"] = body.digits_lost;
+  j["mass"] = mass ? nlohmann::json(body.mass) : nlohmann::json();
+  j["com"] = com ? Vec(body.com) : nlohmann::json();
+  j["inertia_about_com"] = inertia ? Mat(body.inertia_about_com) : nlohmann::json();
+  j["principal_moments"] = inertia ? Vec(body.principal_moments) : nlohmann::json();
+  j["principal_axes"] = inertia ? Mat(body.principal_axes) : nlohmann::json();
+  j["equivalent_box"] =
+      inertia && body.equivalent_box ? Vec(*body.equivalent_box) : nlohmann::json();
+  j["digits_lost"] = inertia && com ? nlohmann::json(body.digits_lost) : nlohmann::json();
+  if (body.unknown != 0) j["unknown"] = UnknownNames(body.unknown);
 }
 
 // A model's target part (docs/report.md): "target", "target_bodies" and MuJoCo's verdict.
@@ -122,12 +142,16 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
       j["root_link"] = group.root_link;
       j["links"] = group.links;
       AddBody(group.properties, &j);
+      if (!group.incomplete_links.empty()) j["incomplete_links"] = group.incomplete_links;
       model["welded_groups"].push_back(std::move(j));
     }
     if (report.total) {
       nlohmann::json j;
       AddBody(*report.total, &j);
       j["unreachable_links"] = report.unreachable_links;
+      if (!report.total_incomplete_links.empty()) {
+        j["incomplete_links"] = report.total_incomplete_links;
+      }
       model["total"] = std::move(j);
     } else {
       model["total"] = nullptr;
@@ -192,21 +216,29 @@ class CsvWriter {
                const BodyMassProperties& b, const std::vector<std::string>& members,
                const LinkGeometryComparison* comparison, const std::string& target) const {
     Start(report, kind, name, b.frame);
-    out_ << ',' << Number(b.mass, kCsvDigits);
-    for (int i = 0; i < 3; ++i) out_ << ',' << Number(b.com(i), kCsvDigits);
+    // An unknown number is an empty field (BodyMassProperties::unknown).
+    const bool mass = !(b.unknown & kUnknownMass), com = !(b.unknown & kUnknownCom);
+    const bool inertia = !(b.unknown & kUnknownInertia);
+    const auto field = [&](bool known, double v, int digits) {
+      out_ << ',';
+      if (known) out_ << Number(v, digits);
+    };
+    field(mass, b.mass, kCsvDigits);
+    for (int i = 0; i < 3; ++i) field(com, b.com(i), kCsvDigits);
     const Eigen::Matrix3d& I = b.inertia_about_com;
     for (double v : {I(0, 0), I(1, 1), I(2, 2), I(0, 1), I(0, 2), I(1, 2)}) {
-      out_ << ',' << Number(v, kCsvDigits);
+      field(inertia, v, kCsvDigits);
     }
-    for (int i = 0; i < 3; ++i) out_ << ',' << Number(b.principal_moments(i), kCsvDigits);
+    for (int i = 0; i < 3; ++i) field(inertia, b.principal_moments(i), kCsvDigits);
     for (int k = 0; k < 3; ++k) {
-      for (int i = 0; i < 3; ++i) out_ << ',' << Number(b.principal_axes(i, k), kCsvDigits);
+      for (int i = 0; i < 3; ++i) field(inertia, b.principal_axes(i, k), kCsvDigits);
     }
     for (int k = 0; k < 3; ++k) {
-      out_ << ',';
-      if (b.equivalent_box) out_ << Number((*b.equivalent_box)(k), kCsvDigits);
+      field(inertia && b.equivalent_box, b.equivalent_box ? (*b.equivalent_box)(k) : 0,
+            kCsvDigits);
     }
-    out_ << ',' << Number(b.digits_lost, 4) << ',' << Joined(members);
+    field(inertia && com, b.digits_lost, 4);
+    out_ << ',' << Joined(members);
     GeometryFields(comparison);
     TargetFields(target, "", "");
     out_ << '\n';
@@ -358,13 +390,18 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
     struct Entry {
       std::string kind, name;
       const BodyMassProperties* body;
+      const std::vector<std::string>* incomplete_links;  // of a composite; null for a link
     };
     std::vector<Entry> entries;
-    for (const auto& link : report.links) entries.push_back({"link", link.name, &link.properties});
-    for (const auto& group : report.welded_groups) {
-      entries.push_back({"group", group.root_link, &group.properties});
+    for (const auto& link : report.links) {
+      entries.push_back({"link", link.name, &link.properties, nullptr});
     }
-    if (report.total) entries.push_back({"total", report.name, &*report.total});
+    for (const auto& group : report.welded_groups) {
+      entries.push_back({"group", group.root_link, &group.properties, &group.incomplete_links});
+    }
+    if (report.total) {
+      entries.push_back({"total", report.name, &*report.total, &report.total_incomplete_links});
+    }
 
     std::vector<std::vector<std::string>> a{{"kind", "name", "frame", "mass", "com_x", "com_y",
                                              "com_z", "ixx", "iyy", "izz", "ixy", "ixz", "iyz"}};
@@ -377,22 +414,45 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
     for (const Entry& e : entries) {
       const BodyMassProperties& p = *e.body;
       const Eigen::Matrix3d& I = p.inertia_about_com;
-      a.push_back({e.kind, e.name, p.frame, Number(p.mass, kDigits), Number(p.com(0), kDigits),
-                   Number(p.com(1), kDigits), Number(p.com(2), kDigits), Number(I(0, 0), kDigits),
-                   Number(I(1, 1), kDigits), Number(I(2, 2), kDigits), Number(I(0, 1), kDigits),
-                   Number(I(0, 2), kDigits), Number(I(1, 2), kDigits)});
+      const bool mass = !(p.unknown & kUnknownMass), com = !(p.unknown & kUnknownCom);
+      const bool inertia = !(p.unknown & kUnknownInertia);
+      const auto cell = [](bool known, const std::string& text) {
+        return known ? text : std::string("unknown");
+      };
+      a.push_back({e.kind, e.name, p.frame, cell(mass, Number(p.mass, kDigits)),
+                   cell(com, Number(p.com(0), kDigits)), cell(com, Number(p.com(1), kDigits)),
+                   cell(com, Number(p.com(2), kDigits)), cell(inertia, Number(I(0, 0), kDigits)),
+                   cell(inertia, Number(I(1, 1), kDigits)), cell(inertia, Number(I(2, 2), kDigits)),
+                   cell(inertia, Number(I(0, 1), kDigits)), cell(inertia, Number(I(0, 2), kDigits)),
+                   cell(inertia, Number(I(1, 2), kDigits))});
       std::vector<std::string> row{e.kind,
                                    e.name,
-                                   Number(p.principal_moments(0), kDigits),
-                                   Number(p.principal_moments(1), kDigits),
-                                   Number(p.principal_moments(2), kDigits),
-                                   axis(p.principal_axes, 0),
-                                   axis(p.principal_axes, 1),
-                                   axis(p.principal_axes, 2)};
+                                   cell(inertia, Number(p.principal_moments(0), kDigits)),
+                                   cell(inertia, Number(p.principal_moments(1), kDigits)),
+                                   cell(inertia, Number(p.principal_moments(2), kDigits)),
+                                   cell(inertia, axis(p.principal_axes, 0)),
+                                   cell(inertia, axis(p.principal_axes, 1)),
+                                   cell(inertia, axis(p.principal_axes, 2))};
       for (int k = 0; k < 3; ++k) {
-        row.push_back(p.equivalent_box ? Number((*p.equivalent_box)(k), kDigits) : "-");
+        row.push_back(!inertia            ? "unknown"
+                      : p.equivalent_box ? Number((*p.equivalent_box)(k), kDigits)
+                                         : "-");
       }
       b.push_back(std::move(row));
+      if (p.unknown != 0) {
+        const std::string unknown = JoinedWords(UnknownNames(p.unknown), ", ");
+        if (e.incomplete_links == nullptr) {
+          notes.push_back(e.kind + " '" + e.name +
+                          "': its <inertial> could not be read wholly (inertial-unreadable; "
+                          "`massprops check` says which number): " +
+                          unknown + " unknown; the other numbers are what the loader loads");
+        } else {
+          notes.push_back(e.kind + " '" + e.name + "': incomplete: " + unknown +
+                          " unknown, since the numbers of " +
+                          JoinedWords(*e.incomplete_links, ", ") + " are partly unknown");
+        }
+        continue;  // no other note on numbers that are not known
+      }
       if (!p.equivalent_box && p.mass > 0) {
         notes.push_back(e.kind + " '" + e.name +
                         "': no equivalent box: the principal moments violate the triangle "

@@ -44,6 +44,18 @@ struct MassReportOptions {
   const MeshResolveOptions* geometry = nullptr;
 };
 
+/// Bits of BodyMassProperties::unknown.
+inline constexpr unsigned kUnknownMass = 1u << 0;
+inline constexpr unsigned kUnknownCom = 1u << 1;
+/// The inertia about the center of mass, and so the principal moments and axes, the equivalent
+/// box and the digits lost.
+inline constexpr unsigned kUnknownInertia = 1u << 2;
+
+/// What of a body is unknown (kUnknown* bits) when a part of it has the Inertial::unknown numbers
+/// `inertial_unknown`: its mass if the part's mass; its center of mass if the part's mass or
+/// position; its inertia if any of the part's numbers.
+unsigned BodyUnknownOf(unsigned inertial_unknown);
+
 /// The mass properties of one body (a link, a welded group, or a whole model or subtree),
 /// expressed in the frame named `frame` (a link frame; its origin is the reference point).
 struct BodyMassProperties {
@@ -65,6 +77,10 @@ struct BodyMassProperties {
   /// the center of mass: log10(m·|com|² / max(tr(I_com), tiny)), at least 0. A tool that stores
   /// the inertia about the frame origin and shifts it back to the center of mass loses this many.
   double digits_lost = 0;
+  /// Which numbers above are unknown (kUnknown* bits): a link whose <inertial> could not be read
+  /// wholly (inertial-unreadable) holds what the loader of record loads, and a composite holding
+  /// it is incomplete. The renderings print those numbers as unknown, never as measured.
+  unsigned unknown = 0;
 };
 
 /// A link's declared central inertia beside the one its geometry implies for the same mass,
@@ -129,6 +145,9 @@ struct GroupMassReport {
   std::string root_link;
   std::vector<std::string> links;  ///< Root first, then the others in file order.
   BodyMassProperties properties;
+  /// The members whose numbers are partly unknown (properties.unknown says what that leaves
+  /// unknown of the group); empty when the composite is complete.
+  std::vector<std::string> incomplete_links;
 };
 
 /// The report of one model.
@@ -141,6 +160,8 @@ struct ModelMassReport {
   std::optional<BodyMassProperties> total;
   /// Links left out of the total: not reachable from the model's root link (free SDF links).
   std::vector<std::string> unreachable_links;
+  /// The links of the total whose numbers are partly unknown (total->unknown says what).
+  std::vector<std::string> total_incomplete_links;
 };
 
 /// Computes the mass properties of a body given in frame F: principal moments and axes, the

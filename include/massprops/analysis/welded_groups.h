@@ -80,7 +80,9 @@ std::vector<WeldedGroup> FindWeldedGroups(const Model& model);
 
 /// The mass properties of a link in its own frame B, from its <inertial>: mass, p_BoBcm_B =
 /// X_BBi.p, I_BBcm_B = R_BBi·I_Bi·R_BBiᵀ. A link without inertial has zero mass and inertia in
-/// URDF, and the SDF defaults (mass 1, inertia diag(1, 1, 1) at the link origin) in SDF.
+/// URDF, and the SDF defaults (mass 1, inertia diag(1, 1, 1) at the link origin) in SDF. A link
+/// whose <inertial> could not be read wholly has what the loader loaded of it
+/// (Link::loaded_inertial; UnknownInertialNumbers says which numbers are not the author's).
 /// Non-finite numbers propagate. Never throws.
 MassProperties LinkMassProperties(const Link& link, Model::Format format = Model::Format::kUrdf);
 

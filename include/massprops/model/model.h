@@ -45,12 +45,28 @@ struct Inertial {
   double mass = 0;
   Pose X_BBi;  ///< URDF <origin> / SDF <pose> of the inertial, in the link frame.
   double ixx = 0, iyy = 0, izz = 0, ixy = 0, ixz = 0, iyz = 0;
+  /// The numbers that could not be read (bits kInertialMass, ...): the value held for them is
+  /// what the loader made of the text (0 for urdfdom), not the author's. 0 but in
+  /// Link::loaded_inertial.
+  unsigned unknown = 0;
 
   SourceLocation location;          ///< The <inertial> element.
   SourceLocation mass_location;     ///< The <mass> element (line 0 when absent).
   SourceLocation inertia_location;  ///< The <inertia> element (line 0 when absent).
   SourceLocation pose_location;     ///< The <origin>/<pose> element (line 0 when absent).
 };
+
+/// Bits of Inertial::unknown: which numbers of an <inertial> are not the author's.
+inline constexpr unsigned kInertialMass = 1u << 0;         ///< <mass value>
+inline constexpr unsigned kInertialPosition = 1u << 1;     ///< <origin xyz> / <pose> position
+inline constexpr unsigned kInertialOrientation = 1u << 2;  ///< <origin rpy> / <pose> rotation
+inline constexpr unsigned kInertialIxx = 1u << 3, kInertialIyy = 1u << 4, kInertialIzz = 1u << 5,
+                          kInertialIxy = 1u << 6, kInertialIxz = 1u << 7, kInertialIyz = 1u << 8;
+/// The six numbers of the inertia.
+inline constexpr unsigned kInertialMoments = kInertialIxx | kInertialIyy | kInertialIzz |
+                                             kInertialIxy | kInertialIxz | kInertialIyz;
+inline constexpr unsigned kInertialAll = kInertialMass | kInertialPosition |
+                                         kInertialOrientation | kInertialMoments;
 
 /// A collision or visual geometry of a link, with its pose X_BG in the link frame B.
 struct Geometry {
@@ -85,8 +101,21 @@ struct Link {
   /// `inertial` is then absent, a ReadFinding with rule "inertial-unreadable" says why, and the
   /// checks judge nothing about the mass properties of this link or of its welded group.
   bool inertial_unreadable = false;
+  /// With inertial_unreadable: what the loader of record loads for the <inertial> (URDF: urdfdom,
+  /// which keeps the numbers it read before the <inertia> or <mass> it could not; a file urdfdom
+  /// refuses: the lenient reading, every number it can read), Inertial::unknown marking the
+  /// numbers that are not the author's. Absent when nothing of it is known (SDF: libsdformat
+  /// refuses the link's <inertial>). The report (LinkMassProperties) uses it; the checks do not.
+  std::optional<Inertial> loaded_inertial;
   SourceLocation location;  ///< The <link> element.
 };
+
+/// Which numbers of the link's mass properties are not the author's (Inertial::unknown bits):
+/// 0 unless inertial_unreadable; then those of loaded_inertial, or kInertialAll without it.
+inline unsigned UnknownInertialNumbers(const Link& link) {
+  if (!link.inertial_unreadable) return 0;
+  return link.loaded_inertial ? link.loaded_inertial->unknown : kInertialAll;
+}
 
 struct Joint {
   enum class Type {
