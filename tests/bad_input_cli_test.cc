@@ -450,8 +450,8 @@ TEST_F(BadInputTest, StandardErrorHoldsOnlyWhatMasspropsSays) {
           "view -o page.html", "merge-fixed -o merged.urdf"}) {
       const fs::path err = dir_ / "stderr.txt";
       const std::string line = "cd '" + dir_.string() + "' && timeout 120 '" + kTool + "' " +
-                               command + " " + name + " </dev/null >/dev/null 2>'" +
-                               err.string() + "'";
+                               command + " " + name + " </dev/null >/dev/null 2>'" + err.string() +
+                               "'";
       const int status = std::system(line.c_str());
       EXPECT_TRUE(WIFEXITED(status)) << command << " " << name;
       std::istringstream lines(ReadFile(err));

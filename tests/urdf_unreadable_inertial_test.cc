@@ -51,8 +51,8 @@ void ExpectUrdfdomsNumbers(const std::string& xml, const Inertial& loaded) {
   const urdf::InertialSharedPtr i = urdf->getLink("arm")->inertial;
   ASSERT_TRUE(i);
   EXPECT_EQ(loaded.mass, i->mass);
-  EXPECT_EQ(loaded.X_BBi.p_AB, Eigen::Vector3d(i->origin.position.x, i->origin.position.y,
-                                               i->origin.position.z));
+  EXPECT_EQ(loaded.X_BBi.p_AB,
+            Eigen::Vector3d(i->origin.position.x, i->origin.position.y, i->origin.position.z));
   EXPECT_EQ(loaded.ixx, i->ixx);
   EXPECT_EQ(loaded.ixy, i->ixy);
   EXPECT_EQ(loaded.ixz, i->ixz);
@@ -94,7 +94,8 @@ TEST(UrdfUnreadableInertialTest, AnInertiaUrdfdomCannotReadKeepsTheMassAndComUrd
 }
 
 TEST(UrdfUnreadableInertialTest, WhatUrdfdomLoadsOfAPartlyReadInertialIsKeptWithItsUnknownsMarked) {
-  const char* kInertia = "<inertia ixx=\"1\" ixy=\"0.1\" ixz=\"0.2\" iyy=\"2\" iyz=\"0.3\" izz=\"3\"/>";
+  const char* kInertia =
+      "<inertia ixx=\"1\" ixy=\"0.1\" ixz=\"0.2\" iyy=\"2\" iyz=\"0.3\" izz=\"3\"/>";
   struct Case {
     std::string inertial;
     unsigned unknown;

@@ -399,8 +399,7 @@ class LinkPropsTable {
   // The link's unknown numbers (Inertial::unknown bits); when kept, once the link is added.
   unsigned InertialUnknown(int link) const {
     if (!keep_) return UnknownInertialNumbers(model_.links[link]);
-    const auto found = std::lower_bound(unknown_.begin(), unknown_.end(),
-                                        std::make_pair(link, 0u));
+    const auto found = std::lower_bound(unknown_.begin(), unknown_.end(), std::make_pair(link, 0u));
     return found != unknown_.end() && found->first == link ? found->second : 0;
   }
   // What of the composite of `links` is unknown (kUnknown* bits); their names with unknown
@@ -437,7 +436,7 @@ class LinkPropsTable {
  private:
   const Model& model_;
   bool keep_;
-  std::vector<MassProperties> props_;  // per link, when kept
+  std::vector<MassProperties> props_;              // per link, when kept
   std::vector<std::pair<int, unsigned>> unknown_;  // (link, its unknown numbers), when kept
   MassProperties scratch_;
   std::vector<Pose> X_RL_;  // of the group at hand (Composite)

@@ -100,8 +100,8 @@ struct IndexedJoint {
 struct Underflow {
   int link = 0;  // index in UrdfIndex::links
   int line = 0;
-  std::string what;  // `<mass value="1e-400">`
-  double value = 0;  // what urdfdom reads
+  std::string what;     // `<mass value="1e-400">`
+  double value = 0;     // what urdfdom reads
   unsigned number = 0;  // which number (an Inertial::unknown bit)
 };
 
@@ -250,9 +250,9 @@ void Reader::IndexUnderflow(const XMLElement* inertial, int link) {
   }
   if (check(inertial->FirstChildElement("mass"), "value", kInertialMass)) return;
   const XMLElement* inertia = inertial->FirstChildElement("inertia");
-  const std::pair<const char*, unsigned> entries[] = {
-      {"ixx", kInertialIxx}, {"ixy", kInertialIxy}, {"ixz", kInertialIxz},
-      {"iyy", kInertialIyy}, {"iyz", kInertialIyz}, {"izz", kInertialIzz}};
+  const std::pair<const char*, unsigned> entries[] = {{"ixx", kInertialIxx}, {"ixy", kInertialIxy},
+                                                      {"ixz", kInertialIxz}, {"iyy", kInertialIyy},
+                                                      {"iyz", kInertialIyz}, {"izz", kInertialIzz}};
   for (const auto& [attribute, number] : entries) {
     if (check(inertia, attribute, number)) return;
   }
@@ -553,7 +553,7 @@ bool UrdfdomReadsVector(const char* text) {
 // an unreadable <origin> leaves all of it zero; an unreadable <mass> keeps the origin, with mass
 // and inertia zero; an unreadable <inertia> keeps the origin and the mass, with all six inertia
 // numbers zero (measured with urdf::parseURDF: tests/urdf_reader_test.cc,
-// WhatUrdfdomLoadsOfAPartlyReadInertialIsKeptWithItsUnknownNumbersMarked).
+// WhatUrdfdomLoadsOfAPartlyReadInertialIsKeptWithItsUnknownsMarked).
 void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
   const XMLElement* inertial = link_xml->FirstChildElement("inertial");
   if (inertial == nullptr) return;
@@ -599,10 +599,10 @@ void Reader::ReportUnreadableInertial(const XMLElement* link_xml, Link* link) {
       unknown == kInertialMoments
           ? "' and loads the link with its mass and center of mass as written but an inertia of "
             "zero (all six numbers)"
-          : unknown == (kInertialMass | kInertialMoments)
-                ? "' and loads the link with its center of mass as written but mass and inertia "
-                  "zero"
-                : "' and loads the link's <inertial> as all zeros";
+      : unknown == (kInertialMass | kInertialMoments)
+          ? "' and loads the link with its center of mass as written but mass and inertia "
+            "zero"
+          : "' and loads the link's <inertial> as all zeros";
   InertialUnreadable(line, link,
                      "ROS's URDF parser cannot read " + what + " of link '" + link->name + loads +
                          "; write one decimal number per attribute, nothing around it",

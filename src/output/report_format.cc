@@ -234,8 +234,7 @@ class CsvWriter {
       for (int i = 0; i < 3; ++i) field(inertia, b.principal_axes(i, k), kCsvDigits);
     }
     for (int k = 0; k < 3; ++k) {
-      field(inertia && b.equivalent_box, b.equivalent_box ? (*b.equivalent_box)(k) : 0,
-            kCsvDigits);
+      field(inertia && b.equivalent_box, b.equivalent_box ? (*b.equivalent_box)(k) : 0, kCsvDigits);
     }
     field(inertia && com, b.digits_lost, 4);
     out_ << ',' << Joined(members);
@@ -434,7 +433,7 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
                                    cell(inertia, axis(p.principal_axes, 1)),
                                    cell(inertia, axis(p.principal_axes, 2))};
       for (int k = 0; k < 3; ++k) {
-        row.push_back(!inertia            ? "unknown"
+        row.push_back(!inertia           ? "unknown"
                       : p.equivalent_box ? Number((*p.equivalent_box)(k), kDigits)
                                          : "-");
       }

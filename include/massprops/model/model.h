@@ -63,10 +63,10 @@ inline constexpr unsigned kInertialOrientation = 1u << 2;  ///< <origin rpy> / <
 inline constexpr unsigned kInertialIxx = 1u << 3, kInertialIyy = 1u << 4, kInertialIzz = 1u << 5,
                           kInertialIxy = 1u << 6, kInertialIxz = 1u << 7, kInertialIyz = 1u << 8;
 /// The six numbers of the inertia.
-inline constexpr unsigned kInertialMoments = kInertialIxx | kInertialIyy | kInertialIzz |
-                                             kInertialIxy | kInertialIxz | kInertialIyz;
-inline constexpr unsigned kInertialAll = kInertialMass | kInertialPosition |
-                                         kInertialOrientation | kInertialMoments;
+inline constexpr unsigned kInertialMoments =
+    kInertialIxx | kInertialIyy | kInertialIzz | kInertialIxy | kInertialIxz | kInertialIyz;
+inline constexpr unsigned kInertialAll =
+    kInertialMass | kInertialPosition | kInertialOrientation | kInertialMoments;
 
 /// A collision or visual geometry of a link, with its pose X_BG in the link frame B.
 struct Geometry {
