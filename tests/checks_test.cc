@@ -59,8 +59,8 @@ INSTANTIATE_TEST_SUITE_P(
     EveryRuleWithAFixture, RuleFixtureTest,
     ::testing::Values("mass-not-positive", "inertia-not-physical", "massless-moving-body",
                       "massless-link-with-mass-outboard", "zero-inertia-about-joint-axis",
-                      "inertial-missing", "products-sign-suspect", "units-suspect",
-                      "inertia-about-origin-suspect", "inertia-exceeds-geometry",
+                      "inertia-without-mass", "inertial-missing", "products-sign-suspect",
+                      "units-suspect", "inertia-about-origin-suspect", "inertia-exceeds-geometry",
                       "com-outside-geometry", "inertia-near-boundary"),
     [](const ::testing::TestParamInfo<std::string>& info) {
       std::string name = info.param;
@@ -71,10 +71,10 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
-  // 14 rules of CheckModel + 4 rules whose findings the readers make (ReadResult::findings,
+  // 15 rules of CheckModel + 4 rules whose findings the readers make (ReadResult::findings,
   // inertial-auto from the SDF reader) + 9 target-profile rules (target_profile.h, reported only
   // with --target) + 2 geometry rules (geometry_checks.h), off unless --geometry.
-  EXPECT_EQ(ids.size(), 20u + TargetRules().size());
+  EXPECT_EQ(ids.size(), 21u + TargetRules().size());
   EXPECT_EQ(TargetRules().size(), 9u);
   EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);
