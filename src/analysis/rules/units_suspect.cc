@@ -216,6 +216,8 @@ KinematicScale KinematicScaleOf(const RuleContext& ctx, int link_index, const Ei
       group_reach = std::max(group_reach, (X_LM.p_AB + X_LM.R_AB * p).norm());
     }
   }
+  // A link with no joint at all (a single free body) has no kinematic tree to give it a size.
+  if (ctx.children[link_index].empty() && parent < 0) return scale;
   const double com = c.norm();
   scale.span = std::max({joints, parent_span, group_reach, com});
   scale.evidence = "farthest joint outboard (two joints deep) " + Num(joints) +
