@@ -59,8 +59,8 @@ INSTANTIATE_TEST_SUITE_P(
     EveryRuleWithAFixture, RuleFixtureTest,
     ::testing::Values("mass-not-positive", "inertia-not-physical", "massless-moving-body",
                       "massless-link-with-mass-outboard", "zero-inertia-about-joint-axis",
-                      "inertial-missing", "products-sign-suspect", "units-suspect",
-                      "inertia-about-origin-suspect", "inertia-exceeds-geometry",
+                      "inertia-without-mass", "inertial-missing", "products-sign-suspect",
+                      "units-suspect", "inertia-about-origin-suspect", "inertia-exceeds-geometry",
                       "com-outside-geometry", "inertia-near-boundary"),
     [](const ::testing::TestParamInfo<std::string>& info) {
       std::string name = info.param;
