@@ -181,7 +181,7 @@ TEST(CliTest, JsonOutputParsesAndNamesRuleLinkAndLine) {
 }
 
 TEST(CliTest, FailOnDecidesWhetherWarningsFailTheRun) {
-  // missing_inertial.urdf has one warning (inertial-missing) and nothing else.
+  // missing_inertial.urdf has one warning (inertial-missing) and one note (the massless pan link).
   RunResult run = RunTool("check missing_inertial.urdf");
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_TRUE(Contains(run.out, ": warning: ")) << run.out;
