@@ -61,21 +61,30 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # massprops_VERSION_ARCH.deb
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${MASSPROPS_DEB_MAINTAINER}")
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
-# The Description's long part: lines after the first start with a space (deb-control(5)).
-set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "${CPACK_PACKAGE_DESCRIPTION_SUMMARY}
- massprops checks that the mass, center of mass and rotational inertia of each link of a
- URDF or SDF robot model could belong to a real body, finds the defects CAD exports
- have (wrong units, inertia about the wrong point, forgotten masses), rewrites only
- the wrong numbers, and reports composite inertias.
- .
- This package holds the massprops command (check, report, fix, merge-fixed, view), the
- C++ library with its headers and CMake package (find_package(massprops)), its
- mesh module (assimp, qhull) and the Python 3 module.")
+# The Description's long part; cpack puts CPACK_PACKAGE_DESCRIPTION_SUMMARY before it as the first
+# line and indents the rest as deb-control(5) asks (an empty line becomes " .").
+set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "massprops checks that the mass, center of mass and
+rotational inertia of each link of a URDF or SDF robot model could belong to
+a real body, finds the defects CAD exports have (wrong units, inertia about
+the wrong point, forgotten masses), rewrites only the wrong numbers, and
+reports composite inertias.
+
+This package holds the massprops command (check, report, fix, merge-fixed,
+view), the C++ library with its headers and CMake package
+(find_package(massprops)), its mesh module (assimp, qhull) and the Python 3
+module.
+")
 # Depends: from the libraries the installed binaries link, by dpkg-shlibdeps (dpkg-dev):
 # tinyxml2, urdfdom, console-bridge (bin, library); assimp, qhull (mesh module); libstdc++, libc.
 # toml++ is compiled in (header-only) and needs no package at run time.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_GENERATE_SHLIBS ON)
+# libmassprops.so.0.1 is a public library in /usr/lib/<multiarch>: the shlibs file above, and
+# ldconfig run by dpkg's trigger (lintian's lacks-ldconfig-trigger). cpack's postinst and postrm
+# also call ldconfig (lintian: maintscript-calls-ldconfig, a warning; docs/install.md).
+file(WRITE "${PROJECT_BINARY_DIR}/debian-control/triggers" "activate-noawait ldconfig\n")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${PROJECT_BINARY_DIR}/debian-control/triggers")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 # What only some users need: Eigen's headers for find_package(massprops) (the one public
 # dependency), and the interpreter and numpy that `import massprops` runs in.
 set(recommends "libeigen3-dev")

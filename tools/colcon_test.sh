@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # massprops in a ROS 2 workspace (package.xml; docs/install.md; run by tools/test.sh): a scratch
 # workspace with this checkout in src/ (a symbolic link), `colcon build` (Debian: colcon,
-# python3-colcon-cmake) without tests or benchmarks (with ccache when present), then the installed
+# python3-colcon-ros, which reads package.xml, and python3-colcon-cmake) without tests or benchmarks (with ccache when present), then the installed
 # tool runs from the workspace's install/ folder, and `import massprops` after sourcing
 # install/setup.bash. Prints the seconds it took.
 set -euo pipefail
@@ -20,8 +20,7 @@ if command -v ccache >/dev/null; then
 fi
 # The build folder stays (build-colcon/build/massprops) so that a second run builds only what
 # changed; install/ is made anew each time.
-(cd "$ws" && colcon build --event-handlers console_cohesion- status- summary+ \
-   --parallel-workers 1 --cmake-args "${cmake_args[@]}") >"$ws/colcon.log" 2>&1 ||
+(cd "$ws" && colcon build --cmake-args "${cmake_args[@]}") >"$ws/colcon.log" 2>&1 ||
   { tail -40 "$ws/colcon.log"; fail "colcon build failed (log: $ws/colcon.log)"; }
 
 version=$(sed -n 's/^project(massprops VERSION \([0-9.]*\).*/\1/p' "$here/CMakeLists.txt")

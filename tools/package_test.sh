@@ -49,7 +49,7 @@ tool=$root/usr/bin/massprops
 clean_env=(env -i HOME="$work" PATH=/usr/bin:/bin LANG=C.UTF-8)
 
 "${clean_env[@]}" "$tool" --version | grep -qx "massprops $version" || fail "massprops --version"
-if ldd "$tool" "$libdir"/libmassprops.so.* "$libdir"/libmassprops_meshlibs.so | grep "not found"; then
+if ldd "$tool" "$libdir"/libmassprops.so.* "$libdir"/massprops/libmassprops_meshlibs.so | grep "not found"; then
   fail "a library of the package is missing"
 fi
 # The installed example: exit 1 by design, with its three findings (README, quick start).
@@ -59,8 +59,8 @@ status=0
 [[ $status -eq 1 ]] || fail "check on the example exited $status, expected 1"
 grep -q "link 'forearm'.*\[inertia-not-physical\]" "$work/check.txt" || fail "no inertia-not-physical"
 grep -q "checked 1 file: 1 error, 2 warnings, 0 notes" "$work/check.txt" || fail "summary line"
-# A mesh read by the installed module (libmassprops_meshlibs.so, found beside the installed
-# tool): the box mesh of 0.1 x 0.2 x 0.3 m, scaled 3x along x, is a 0.3 x 0.2 x 0.3 box.
+# A mesh read by the installed module (<lib>/massprops/libmassprops_meshlibs.so, found from the
+# installed tool): the box mesh of 0.1 x 0.2 x 0.3 m, scaled 3x along x, is a 0.3 x 0.2 x 0.3 box.
 printf '%s\n' '<robot name="m"><link name="box">' \
   '<inertial><mass value="2"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>' \
   "<collision><geometry><mesh filename=\"$here/testdata/mesh/box_ascii.stl\" scale=\"3 1 1\"/></geometry></collision>" \

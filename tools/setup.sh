@@ -21,9 +21,10 @@ packages+=(libmujoco-dev)
 packages+=(libjs-three chromium chromium-driver python3-selenium)
 # The libFuzzer targets (tools/fuzz.sh, run by tools/test.sh): clang and its libFuzzer.
 packages+=(clang-14 libfuzzer-14-dev)
-# The packaging tests (tools/package_test.sh): lintian judges the .deb; colcon builds a ROS 2
-# workspace holding massprops.
-packages+=(lintian colcon python3-colcon-cmake)
+# The packaging tests: lintian judges the .deb (tools/package_test.sh); colcon builds a ROS 2
+# workspace holding massprops (tools/colcon_test.sh): colcon-ros reads package.xml, colcon-cmake
+# builds, colcon-bash writes install/setup.bash.
+packages+=(lintian colcon python3-colcon-cmake python3-colcon-ros python3-colcon-bash)
 fi
 missing=()
 for p in "${packages[@]}"; do
