@@ -31,6 +31,9 @@ endif()
 # MASSPROPS_DEBIAN_PACKAGE=ON (tools/package.sh) adds what Debian's policy asks of a package beside
 # the program: /usr/share/doc/massprops/copyright and changelog.gz. A .deb installs into /usr.
 option(MASSPROPS_DEBIAN_PACKAGE "Install the files a Debian package needs (tools/package.sh)" OFF)
+set(MASSPROPS_DEB_MAINTAINER
+    "Seed 44f16922 maintainers <maintainers@users.noreply.h-seed-44f16922.example>"
+    CACHE STRING "The Maintainer field of the .deb and of its changelog")
 if(MASSPROPS_DEBIAN_PACKAGE)
   if(NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
     message(FATAL_ERROR "MASSPROPS_DEBIAN_PACKAGE needs -DCMAKE_INSTALL_PREFIX=/usr, "
@@ -38,9 +41,6 @@ if(MASSPROPS_DEBIAN_PACKAGE)
   endif()
   # The changelog's date: SOURCE_DATE_EPOCH when set (reproducible builds), else now.
   string(TIMESTAMP MASSPROPS_DEB_DATE "%a, %d %b %Y %H:%M:%S +0000" UTC)
-  set(MASSPROPS_DEB_MAINTAINER
-      "Seed 44f16922 maintainers <maintainers@users.noreply.h-seed-44f16922.example>"
-      CACHE STRING "The Maintainer field of the .deb and its changelog")
   set(deb_doc "${PROJECT_BINARY_DIR}/debian-doc")
   configure_file(cmake/debian/changelog.in "${deb_doc}/changelog" @ONLY)
   configure_file(cmake/debian/copyright "${deb_doc}/copyright" COPYONLY)
