@@ -23,6 +23,12 @@ fi
 (cd "$ws" && colcon build --cmake-args "${cmake_args[@]}") >"$ws/colcon.log" 2>&1 ||
   { tail -40 "$ws/colcon.log"; fail "colcon build failed (log: $ws/colcon.log)"; }
 
+# colcon read package.xml (colcon-ros): it records the package's run dependencies, the rosdep
+# keys of package.xml's <depend> and <exec_depend> (without colcon-ros it would have taken the
+# package for a plain CMake one, with none).
+run_deps=$(cat "$ws/install/massprops/share/colcon-core/packages/massprops")
+[[ $run_deps == "assimp:eigen:libqhull:python3-numpy:tinyxml2:urdfdom" ]] ||
+  fail "colcon's run dependencies of massprops: '$run_deps', not those of package.xml"
 version=$(sed -n 's/^project(massprops VERSION \([0-9.]*\).*/\1/p' "$here/CMakeLists.txt")
 "$ws/install/massprops/bin/massprops" --version | grep -qx "massprops $version" ||
   fail "install/massprops/bin/massprops --version"
