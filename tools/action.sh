@@ -62,6 +62,7 @@ massprops --version
 
 # ---------------------------------------------------------------- the check
 read -r -d '' -a paths <<<"${INPUT_PATHS:-.}" || true
+((${#paths[@]} > 0)) || paths=(.)  # blank: the repository (with no FILE, check takes its example)
 args=(--fail-on "${INPUT_FAIL_ON:-error}")
 read -r -d '' -a package_paths <<<"${INPUT_PACKAGE_PATH:-}" || true
 for p in "${package_paths[@]}"; do args+=(--package-path "$p"); done
