@@ -6,8 +6,14 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$here/build}
 
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
-          nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev
-          pybind11-dev python3-dev python3-numpy python3-pytest)
+          nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev
+          pybind11-dev python3-dev python3-numpy libjs-three)
+# The Debian package (tools/package.sh): the man page is written by help2man, cpack's Depends:
+# by dpkg-shlibdeps (dpkg-dev).
+packages+=(help2man dpkg-dev)
+# MASSPROPS_SETUP_BUILD_ONLY=1 (tools/package.sh, action.yml): only what the build needs.
+if [[ -z ${MASSPROPS_SETUP_BUILD_ONLY:-} ]]; then
+packages+=(libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev python3-pytest)
 # The MuJoCo differential test (tests/target_profile_mujoco_test.cc): libmujoco 2.2.2.
 packages+=(libmujoco-dev)
 # The HTML view (`massprops view`): three.js, embedded at build time; its browser test: headless
@@ -15,6 +21,11 @@ packages+=(libmujoco-dev)
 packages+=(libjs-three chromium chromium-driver python3-selenium)
 # The libFuzzer targets (tools/fuzz.sh, run by tools/test.sh): clang and its libFuzzer.
 packages+=(clang-14 libfuzzer-14-dev)
+# The packaging tests: lintian judges the .deb (tools/package_test.sh); colcon builds a ROS 2
+# workspace holding massprops (tools/colcon_test.sh): colcon-ros reads package.xml, colcon-cmake
+# builds, colcon-bash writes install/setup.bash.
+packages+=(lintian colcon python3-colcon-cmake python3-colcon-ros python3-colcon-bash)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

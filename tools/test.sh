@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Quick start, command 2: set up and run every test, twice:
-#   1. build/        Release, warnings are errors;
+#   1. build/        Release, warnings are errors; then the Debian package (tools/package_test.sh)
+#                    and a ROS 2 workspace (tools/colcon_test.sh);
 #   2. build-asan/   Debug under AddressSanitizer + UndefinedBehaviorSanitizer.
 #   3. build-fuzz/   each libFuzzer target of tests/fuzz for 60 s under ASan + UBSan (clang-14;
 #                    tools/fuzz.sh). Set MASSPROPS_FUZZ_SECONDS to change the time per target.
@@ -11,6 +12,11 @@ jobs=$(nproc)
 
 BUILD_DIR="$here/build" "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_TESTS=ON
 (cd "$here/build" && ctest --output-on-failure -j "$jobs")
+
+# As users install it (docs/install.md): the .deb built, judged by lintian and run from its files
+# only, with the GitHub Action's script on it; a ROS 2 workspace built by colcon.
+bash "$here/tools/package_test.sh" -DMASSPROPS_WERROR=ON
+bash "$here/tools/colcon_test.sh"
 
 if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   BUILD_DIR="$here/build-asan" BUILD_TYPE=Debug "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON \

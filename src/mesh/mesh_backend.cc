@@ -23,6 +23,7 @@ const MeshBackend* GetMeshBackend(std::string* /*error*/) { return massprops_mes
 namespace {
 
 constexpr const char* kBackendFile = "libmassprops_meshlibs.so";
+constexpr const char* kPrivateFolder = "massprops/";  // below the lib folder, when installed
 
 #ifndef MASSPROPS_BIN_TO_LIB
 #define MASSPROPS_BIN_TO_LIB "../lib"
@@ -34,9 +35,11 @@ std::string FolderOf(const std::string& path) {
 }
 
 // Where to look for the module, best first: beside the shared object that holds this function
-// (libmassprops.so: the build tree, an install prefix's lib folder); when this code is linked into
-// the executable instead (the `massprops` tool), beside the executable (the build tree) and in
-// its prefix's lib folder (installed); then the loader's search path (LD_LIBRARY_PATH, the cache).
+// (libmassprops.so in the build tree) and in the private folder massprops/ below it (installed:
+// <prefix>/<lib>/massprops/, where Debian's policy puts a module that only massprops loads); when
+// this code is linked into the executable instead (the `massprops` tool), beside the executable
+// (the build tree) and in its prefix's <lib>/massprops/ (installed); then the loader's search path
+// (LD_LIBRARY_PATH, the cache).
 std::vector<std::string> Candidates() {
   std::vector<std::string> candidates;
   Dl_info info{};
@@ -45,6 +48,7 @@ std::vector<std::string> Candidates() {
               RTLD_DL_LINKMAP) != 0) {
     if (map != nullptr && map->l_name != nullptr && map->l_name[0] != '\0') {
       candidates.push_back(FolderOf(map->l_name) + kBackendFile);
+      candidates.push_back(FolderOf(map->l_name) + kPrivateFolder + kBackendFile);
     } else {  // The main program: glibc gives it no name in its link map.
       std::string exe(4096, '\0');
       const ssize_t length = readlink("/proc/self/exe", exe.data(), exe.size());
@@ -53,7 +57,7 @@ std::vector<std::string> Candidates() {
         const std::string folder = FolderOf(exe);
         if (!folder.empty()) {
           candidates.push_back(folder + kBackendFile);
-          candidates.push_back(folder + MASSPROPS_BIN_TO_LIB + "/" + kBackendFile);
+          candidates.push_back(folder + MASSPROPS_BIN_TO_LIB + "/" + kPrivateFolder + kBackendFile);
         }
       }
     }
