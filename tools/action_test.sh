@@ -22,12 +22,12 @@ run_action() {
 }
 
 # The bundled example (README): one error, two warnings. fail-on error: exit 1; an annotation per
-# finding in GitHub's workflow-command form (::error file=...,line=...::), line 70 for forearm.
+# finding in GitHub's workflow-command form (::error file=...,line=...::), line 73 for forearm.
 run_action INPUT_PATHS="examples/two_link_arm.urdf" INPUT_SARIF=true
 [[ $status -eq 1 ]] || { cat "$work/out.txt"; fail "exit $status on the example, expected 1"; }
 grep -q "^massprops 0\." "$work/out.txt" || fail "no massprops --version line"
-grep -q "^::error file=examples/two_link_arm.urdf,line=70.*inertia-not-physical" "$work/out.txt" ||
-  { cat "$work/out.txt"; fail "no error annotation at line 70"; }
+grep -q "^::error file=examples/two_link_arm.urdf,line=73.*inertia-not-physical" "$work/out.txt" ||
+  { cat "$work/out.txt"; fail "no error annotation at line 73"; }
 [[ $(grep -c "^::warning file=examples/two_link_arm.urdf" "$work/out.txt") -eq 2 ]] ||
   fail "expected 2 warning annotations"
 grep -qx "sarif-file=$work/massprops.sarif" "$work/github_output" || fail "no sarif-file output"
@@ -36,7 +36,8 @@ import json, sys
 sarif = json.load(open(sys.argv[1]))
 assert sarif["version"] == "2.1.0", sarif["version"]
 rules = sorted(r["ruleId"] for r in sarif["runs"][0]["results"])
-assert rules == ["inertia-not-physical", "inertial-missing", "units-suspect"], rules
+assert rules == ["inertia-not-physical", "inertial-missing", "massless-link-with-mass-outboard",
+                 "units-suspect"], rules
 PY
 
 # fail-on warning with several paths (white space, a folder): still 1; no SARIF when not asked.
