@@ -127,8 +127,7 @@ TEST_F(MeshResolutionCliTest, CheckFindsTheRepositorysPackagesAndSaysHowInJson) 
   // --geometry resolves the same way (mesh-unreadable names only the lost mesh).
   run = RunTool("check --geometry " + Quote(urdf));
   EXPECT_NE(run.output.find("[mesh-unreadable]"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("package 'nowhere_pkg' not found in the packages of the "
-                            "repository " +
+  EXPECT_NE(run.output.find("package 'nowhere_pkg' not found in the packages under " +
                             repo.string()),
             std::string::npos)
       << run.output;

@@ -86,7 +86,7 @@ TEST_F(RepositoryPackagesTest, ARepositoryWithTwoPackagesResolvesBothByTheirPack
                            MeshFoundBy::kRepositoryPackage));
   std::string error;
   EXPECT_EQ(Resolve("package://outside_pkg/x.stl", options, &error).second, MeshFoundBy::kNone);
-  EXPECT_NE(error.find("package 'outside_pkg' not found in the packages of the repository " +
+  EXPECT_NE(error.find("package 'outside_pkg' not found in the packages under " +
                        repo.string()),
             std::string::npos)
       << error;
@@ -259,10 +259,34 @@ TEST_F(RepositoryPackagesTest, TheRepositoryRootIsTheNearestFolderWithDotGit) {
   EXPECT_EQ(FindRepositoryRoot((repo / "a/b").string()), repo.string());
   EXPECT_EQ(FindRepositoryRoot((repo / "a/b/").string()), repo.string());
   EXPECT_EQ(FindRepositoryRoot(repo.string()), repo.string());
+  EXPECT_EQ(FindPackageSearchRoot((repo / "a/b").string()), repo.string());
   // No .git above: the filesystem root (the temporary folder is in no repository here).
   if (FindRepositoryRoot(top_.string()) == "/") {
     EXPECT_EQ(FindRepositoryRoot((top_ / "no_git/x").string()), "/");
   }
+}
+
+// Outside a repository the crawl covers the folder that holds the description's package (a
+// downloaded archive of a repository: its packages are siblings), else the description's own
+// folder; never the whole file system.
+TEST_F(RepositoryPackagesTest, OutsideARepositoryTheCrawlCoversTheFolderThatHoldsThePackage) {
+  if (FindRepositoryRoot(top_.string()) != "/") GTEST_SKIP() << "the temporary folder has a .git";
+  const fs::path archive = top_ / "robot-main";  // unpacked, no .git
+  WritePackageXml(archive / "robot_description", "robot_description");
+  Write(archive / "robot_description/urdf/robot.urdf", "<robot name='r'/>");
+  WritePackageXml(archive / "robot_meshes", "robot_meshes");
+  Write(archive / "robot_meshes/m.stl", "solid m\nendsolid m\n");
+  WritePackageXml(top_ / "beside_archive", "beside");  // above the archive: not searched
+  const fs::path urdf_folder = archive / "robot_description/urdf";
+  EXPECT_EQ(FindPackageSearchRoot(urdf_folder.string()), archive.string());
+  const MeshResolveOptions options = For(urdf_folder / "robot.urdf");
+  EXPECT_EQ(Resolve("package://robot_meshes/m.stl", options),
+            std::make_pair((archive / "robot_meshes/m.stl").string(),
+                           MeshFoundBy::kRepositoryPackage));
+  EXPECT_EQ(RepositoryPackages().Find(urdf_folder.string(), "beside"), std::nullopt);
+  // No package.xml above: only the description's folder.
+  fs::create_directories(top_ / "loose/urdf");
+  EXPECT_EQ(FindPackageSearchRoot((top_ / "loose/urdf").string()), (top_ / "loose/urdf").string());
 }
 
 TEST_F(RepositoryPackagesTest, PackageXmlNameIsTrimmedAndBadManifestsNameNothing) {

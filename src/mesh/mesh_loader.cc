@@ -108,7 +108,7 @@ namespace {
 
 // "the repository R (N folders listed[, stopped at the limit of M])" for a message.
 std::string DescribeRepositorySearch(const std::string& base, const RepositoryPackages& packages) {
-  std::string text = "the packages of the repository " + FindRepositoryRoot(base) + " (" +
+  std::string text = "the packages under " + FindPackageSearchRoot(base) + " (" +
                      std::to_string(packages.folders_listed()) + " folders listed";
   if (packages.truncated()) {
     text += ", stopped at the limit of " + std::to_string(packages.max_folders());

@@ -82,6 +82,20 @@ std::string FindRepositoryRoot(const std::string& folder) {
   }
 }
 
+std::string FindPackageSearchRoot(const std::string& folder) {
+  const fs::path start = Normal(folder);
+  const std::string repository = FindRepositoryRoot(start.string());
+  if (HasEntry(fs::path(repository) / ".git")) return repository;
+  for (const fs::path& ancestor : ChainUpTo(start, fs::path(repository))) {
+    std::error_code ec;
+    if (fs::is_regular_file(ancestor / "package.xml", ec)) {
+      const fs::path parent = ancestor.parent_path();
+      return (parent.empty() ? ancestor : parent).string();
+    }
+  }
+  return start.string();
+}
+
 std::optional<std::string> FindAncestorNamed(const std::string& folder, const std::string& name) {
   if (name.empty()) return std::nullopt;
   const fs::path start = Normal(folder);
@@ -152,7 +166,7 @@ std::optional<std::string> RepositoryPackages::Find(const std::string& folder,
   std::lock_guard<std::mutex> lock(mutex_);
   auto root = roots_.find(start.string());
   if (root == roots_.end()) {
-    root = roots_.emplace(start.string(), FindRepositoryRoot(start.string())).first;
+    root = roots_.emplace(start.string(), FindPackageSearchRoot(start.string())).first;
   }
   const bool in_repository = HasEntry(fs::path(root->second) / ".git");
   for (const fs::path& level : ChainUpTo(start, fs::path(root->second))) {
