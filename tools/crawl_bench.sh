@@ -8,9 +8,9 @@
 #    a package.xml in the last one) and a description 3 folders down: `check` of a URDF whose
 #    mesh is in that last package (the whole tree is crawled), of one whose package exists
 #    nowhere (the whole tree, then the ancestors), against --no-geometry (no mesh looked up).
-# 2. The corpus (no .git: the crawl goes up to the filesystem root, bounded): one process over
-#    every model file, and one file (finger_edu.urdf, package://example-robot-data/ found as an
-#    ancestor folder), each against --no-geometry.
+# 2. The corpus (no .git, no package.xml: each description's folder is crawled, and
+#    package://example-robot-data/ is found as an ancestor folder): one process over every model
+#    file (-j 1), and one file (finger_edu.urdf), each against --no-geometry.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 tool="$(realpath "${1:-$here/../build/massprops}")"
@@ -34,16 +34,16 @@ link "package://last_pkg/m.stl" > "$tree/d00/s01/urdf/found.urdf"
 link "package://no_such_pkg/m.stl" > "$tree/d00/s01/urdf/missing.urdf"
 "$tool" check --format json "$tree/d00/s01/urdf/found.urdf" | grep -c '"found_by": "repository-package"'
 
-hyperfine -N --warmup 3 --runs 20 \
-  "$tool check -q --no-geometry $tree/d00/s01/urdf/found.urdf" \
-  "$tool check -q $tree/d00/s01/urdf/found.urdf" \
-  "$tool check -q $tree/d00/s01/urdf/missing.urdf"
+hyperfine -N --warmup 3 --runs 20 --style basic \
+  -n "10 000 folders, --no-geometry" "$tool check -q --no-geometry $tree/d00/s01/urdf/found.urdf" \
+  -n "10 000 folders, package found last" "$tool check -q $tree/d00/s01/urdf/found.urdf" \
+  -n "10 000 folders, package nowhere" "$tool check -q $tree/d00/s01/urdf/missing.urdf"
 
 mapfile -t files < <(awk -F'\t' 'NR > 1 && ($2 == "urdf" || $2 == "sdf") {print $1}' "$corpus/MANIFEST.tsv")
 cd "$corpus"
 finger=example-robot-data/robots/finger_edu_description/robots/finger_edu.urdf
-hyperfine -N --warmup 2 --runs 10 -i \
-  "$tool check -q --no-geometry ${files[*]}" \
-  "$tool check -q ${files[*]}" \
-  "$tool check -q --no-geometry $finger" \
-  "$tool check -q $finger"
+hyperfine -N --warmup 2 --runs 10 -i --style basic \
+  -n "corpus, ${#files[@]} files, --no-geometry" "$tool check -q -j 1 --no-geometry ${files[*]}" \
+  -n "corpus, ${#files[@]} files" "$tool check -q -j 1 ${files[*]}" \
+  -n "finger_edu.urdf, --no-geometry" "$tool check -q --no-geometry $finger" \
+  -n "finger_edu.urdf" "$tool check -q $finger"

@@ -1,6 +1,5 @@
 #include "massprops/mesh/repository_packages.h"
 
-#include <sys/stat.h>
 #include <tinyxml2.h>
 
 #include <algorithm>
@@ -41,13 +40,6 @@ std::vector<fs::path> ChainUpTo(const fs::path& start, const fs::path& root) {
     current = parent;
   }
   return chain;
-}
-
-// The device a folder is on (lstat), or -1 when it cannot be known.
-long long DeviceOf(const fs::path& folder) {
-  struct stat info {};
-  if (::lstat(folder.c_str(), &info) != 0) return -1;
-  return static_cast<long long>(info.st_dev);
 }
 
 bool IsSkippedName(const std::string& name) {
@@ -111,7 +103,6 @@ const RepositoryPackages::Subtree& RepositoryPackages::CrawlLocked(const std::st
                                                                    bool other_repositories) {
   if (auto found = subtrees_.find(top); found != subtrees_.end()) return found->second;
   Subtree packages;
-  const long long device = DeviceOf(top);
   std::deque<std::pair<fs::path, int>> queue{{fs::path(top), 0}};
   while (!queue.empty()) {
     auto [folder, depth] = std::move(queue.front());
@@ -150,11 +141,7 @@ const RepositoryPackages::Subtree& RepositoryPackages::CrawlLocked(const std::st
       continue;
     }
     std::sort(children.begin(), children.end());
-    for (const std::string& name : children) {
-      fs::path child = folder / name;
-      if (DeviceOf(child) != device) continue;  // a mount point
-      queue.emplace_back(std::move(child), depth + 1);
-    }
+    for (const std::string& name : children) queue.emplace_back(folder / name, depth + 1);
   }
   return subtrees_.emplace(top, std::move(packages)).first->second;
 }

@@ -12,8 +12,8 @@
 /// The crawl goes nearest first: the folder's own subtree, then its parent's (the part not yet
 /// seen), and so on up to that root, so the package nearest the description wins. It skips
 /// hidden folders, build/, install/ and log/ (a colcon workspace's outputs), folders holding
-/// CATKIN_IGNORE, COLCON_IGNORE or AMENT_IGNORE, symbolic links, other file systems (mount
-/// points), and, outside a repository, repositories (folders holding `.git`). As in catkin and
+/// CATKIN_IGNORE, COLCON_IGNORE or AMENT_IGNORE, symbolic links, and, outside a repository,
+/// repositories (folders holding `.git`). As in catkin and
 /// colcon, a folder with a package.xml is a package and is not searched further. At most
 /// `max_folders` folders are listed per RepositoryPackages (one per run): the packages under
 /// each folder on the way up are remembered, so a folder crawled for one description is not
