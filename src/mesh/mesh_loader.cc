@@ -106,9 +106,9 @@ std::string Describe(const Geometry& geometry) {
 
 namespace {
 
-// "the repository R (N folders listed[, stopped at the limit of M])" for a message.
-std::string DescribeRepositorySearch(const std::string& base, const RepositoryPackages& packages) {
-  std::string text = "the packages under " + FindPackageSearchRoot(base) + " (" +
+// "the packages under R (N folders listed[, stopped at the limit of M])" for a message.
+std::string DescribeRepositorySearch(const std::string& base, RepositoryPackages& packages) {
+  std::string text = "the packages under " + packages.SearchRoot(base) + " (" +
                      std::to_string(packages.folders_listed()) + " folders listed";
   if (packages.truncated()) {
     text += ", stopped at the limit of " + std::to_string(packages.max_folders());
@@ -164,7 +164,7 @@ std::optional<std::string> ResolveSearchedUri(const std::string& uri, bool is_pa
     const std::optional<std::string> package = packages.Find(base, name);
     if (package && holds(*package, MeshFoundBy::kRepositoryPackage, &path)) return path;
     searched.push_back(DescribeRepositorySearch(base, packages));
-    const std::optional<std::string> ancestor = FindAncestorNamed(base, name);
+    const std::optional<std::string> ancestor = packages.FindAncestor(base, name);
     if (ancestor && ancestor != package && holds(*ancestor, MeshFoundBy::kAncestor, &path)) {
       return path;
     }

@@ -91,6 +91,10 @@ std::string FindPackageSearchRoot(const std::string& folder) {
 std::optional<std::string> FindAncestorNamed(const std::string& folder, const std::string& name) {
   if (name.empty()) return std::nullopt;
   const fs::path start = Normal(folder);
+  // No folder of that name on the way up: nothing to look at on the disk.
+  bool named = false;
+  for (const fs::path& part : start) named = named || part == name;
+  if (!named) return std::nullopt;
   for (const fs::path& ancestor : ChainUpTo(start, fs::path(FindRepositoryRoot(start.string())))) {
     if (ancestor.filename() != name) continue;
     const std::string named = PackageXmlName(ancestor.string());
@@ -169,6 +173,25 @@ std::optional<std::string> RepositoryPackages::Find(const std::string& folder,
     if (best != nullptr) return best->folder;
   }
   return std::nullopt;
+}
+
+std::string RepositoryPackages::SearchRoot(const std::string& folder) {
+  const std::string start = Normal(folder).string();
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto root = roots_.find(start);
+  if (root == roots_.end()) root = roots_.emplace(start, FindPackageSearchRoot(start)).first;
+  return root->second;
+}
+
+std::optional<std::string> RepositoryPackages::FindAncestor(const std::string& folder,
+                                                            const std::string& name) {
+  const std::string key = Normal(folder).string() + '\n' + name;
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto found = ancestors_.find(key);
+  if (found == ancestors_.end()) {
+    found = ancestors_.emplace(key, FindAncestorNamed(folder, name)).first;
+  }
+  return found->second;
 }
 
 int RepositoryPackages::folders_listed() const {

@@ -65,6 +65,12 @@ class RepositoryPackages {
   /// package.xml met); later calls reuse what was crawled.
   std::optional<std::string> Find(const std::string& folder, const std::string& name);
 
+  /// FindPackageSearchRoot(folder), remembered per folder.
+  std::string SearchRoot(const std::string& folder);
+
+  /// FindAncestorNamed(folder, name), remembered per (folder, name).
+  std::optional<std::string> FindAncestor(const std::string& folder, const std::string& name);
+
   /// Folders listed so far (the budget used).
   int folders_listed() const;
   /// Whether some crawl stopped at max_folders.
@@ -88,6 +94,7 @@ class RepositoryPackages {
   bool truncated_ = false;
   std::unordered_map<std::string, Subtree> subtrees_;   // by folder, for the folders upward
   std::unordered_map<std::string, std::string> roots_;  // FindPackageSearchRoot, by folder
+  std::unordered_map<std::string, std::optional<std::string>> ancestors_;  // by folder + name
 };
 
 }  // namespace massprops
