@@ -93,8 +93,8 @@ TEST_F(MeshResolutionCliTest, CheckFindsTheRepositorysPackagesAndSaysHowInJson) 
   EXPECT_EQ(file.at("mesh_links"), 3);
   EXPECT_EQ(file.at("mesh_links_unresolved"), 1);  // lost
   const nlohmann::json expected_counts = {
-      {"flag", 0},     {"repository-package", 2}, {"ancestor", 0}, {"environment", 0},
-      {"beside-file", 0}, {"relative", 0},        {"absolute", 0}, {"unresolved", 1}};
+      {"flag", 0},        {"repository-package", 2}, {"ancestor", 0}, {"environment", 0},
+      {"beside-file", 0}, {"relative", 0},           {"absolute", 0}, {"unresolved", 1}};
   EXPECT_EQ(file.at("mesh_resolution"), expected_counts);
   EXPECT_EQ(report.at("summary").at("mesh_resolution"), expected_counts);
   const nlohmann::json expected_uris = {
@@ -118,18 +118,18 @@ TEST_F(MeshResolutionCliTest, CheckFindsTheRepositorysPackagesAndSaysHowInJson) 
 
   // SARIF carries the totals; --no-geometry reads no mesh, so lists none.
   run = RunTool("check --format sarif " + Quote(urdf));
-  EXPECT_EQ(nlohmann::json::parse(run.output).at("runs").at(0).at("properties").at(
-                "mesh_resolution"),
-            expected_counts);
+  EXPECT_EQ(
+      nlohmann::json::parse(run.output).at("runs").at(0).at("properties").at("mesh_resolution"),
+      expected_counts);
   run = RunTool("check --no-geometry --format json " + Quote(urdf));
   EXPECT_EQ(nlohmann::json::parse(run.output).at("files").at(0).at("mesh_uris").size(), 0u);
 
   // --geometry resolves the same way (mesh-unreadable names only the lost mesh).
   run = RunTool("check --geometry " + Quote(urdf));
   EXPECT_NE(run.output.find("[mesh-unreadable]"), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("package 'nowhere_pkg' not found in the packages under " +
-                            repo.string()),
-            std::string::npos)
+  EXPECT_NE(
+      run.output.find("package 'nowhere_pkg' not found in the packages under " + repo.string()),
+      std::string::npos)
       << run.output;
   EXPECT_EQ(run.output.find("robot_meshes"), std::string::npos) << run.output;
 }

@@ -86,8 +86,7 @@ TEST_F(RepositoryPackagesTest, ARepositoryWithTwoPackagesResolvesBothByTheirPack
                            MeshFoundBy::kRepositoryPackage));
   std::string error;
   EXPECT_EQ(Resolve("package://outside_pkg/x.stl", options, &error).second, MeshFoundBy::kNone);
-  EXPECT_NE(error.find("package 'outside_pkg' not found in the packages under " +
-                       repo.string()),
+  EXPECT_NE(error.find("package 'outside_pkg' not found in the packages under " + repo.string()),
             std::string::npos)
       << error;
   EXPECT_EQ(Resolve("package://robot_meshes/meshes/missing.stl", options, &error).second,
@@ -126,8 +125,7 @@ TEST_F(RepositoryPackagesTest, AnEmptyPackageNameIsTheFolderOfTheDescription) {
   EXPECT_EQ(Resolve("package:///body_front.stl", options),
             std::make_pair((duck / "body_front.stl").string(), MeshFoundBy::kBesideFile));
   EXPECT_EQ(Resolve("package:///meshes/torso_visual.stl", options),
-            std::make_pair((duck / "meshes/torso_visual.stl").string(),
-                           MeshFoundBy::kBesideFile));
+            std::make_pair((duck / "meshes/torso_visual.stl").string(), MeshFoundBy::kBesideFile));
   std::string error;
   EXPECT_EQ(Resolve("package:///missing.stl", options, &error).second, MeshFoundBy::kNone);
   EXPECT_NE(error.find("no such file: " + (duck / "missing.stl").string()), std::string::npos)
@@ -151,9 +149,9 @@ TEST_F(RepositoryPackagesTest, APackageXmlNamingAnotherPackageWinsOverTheFolderN
   std::string error;
   EXPECT_EQ(Resolve("package://arm/meshes/link.stl", options, &error).second, MeshFoundBy::kNone);
   EXPECT_NE(error.find("package 'arm' not found"), std::string::npos) << error;
-  EXPECT_EQ(Resolve("package://arm_description/meshes/link.stl", options),
-            std::make_pair((repo / "arm/meshes/link.stl").string(),
-                           MeshFoundBy::kRepositoryPackage));
+  EXPECT_EQ(
+      Resolve("package://arm_description/meshes/link.stl", options),
+      std::make_pair((repo / "arm/meshes/link.stl").string(), MeshFoundBy::kRepositoryPackage));
   EXPECT_EQ(FindAncestorNamed((repo / "arm/urdf").string(), "arm"), std::nullopt);
 }
 
@@ -177,9 +175,9 @@ TEST_F(RepositoryPackagesTest, TheOrderIsFlagRepositoryAncestorEnvironment) {
   EXPECT_EQ(Resolve("package://robot/m.stl", options),
             std::make_pair((top_ / "flag/robot/m.stl").string(), MeshFoundBy::kFlag));
   options.package_paths.clear();
-  EXPECT_EQ(Resolve("package://robot/m.stl", options),
-            std::make_pair((repo / "src/robot_pkg/m.stl").string(),
-                           MeshFoundBy::kRepositoryPackage));
+  EXPECT_EQ(
+      Resolve("package://robot/m.stl", options),
+      std::make_pair((repo / "src/robot_pkg/m.stl").string(), MeshFoundBy::kRepositoryPackage));
   fs::remove(repo / "src/robot_pkg/package.xml");
   EXPECT_EQ(Resolve("package://robot/m.stl", options),
             std::make_pair((repo / "robot/m.stl").string(), MeshFoundBy::kAncestor));
@@ -280,9 +278,9 @@ TEST_F(RepositoryPackagesTest, OutsideARepositoryTheCrawlCoversTheFolderThatHold
   const fs::path urdf_folder = archive / "robot_description/urdf";
   EXPECT_EQ(FindPackageSearchRoot(urdf_folder.string()), archive.string());
   const MeshResolveOptions options = For(urdf_folder / "robot.urdf");
-  EXPECT_EQ(Resolve("package://robot_meshes/m.stl", options),
-            std::make_pair((archive / "robot_meshes/m.stl").string(),
-                           MeshFoundBy::kRepositoryPackage));
+  EXPECT_EQ(
+      Resolve("package://robot_meshes/m.stl", options),
+      std::make_pair((archive / "robot_meshes/m.stl").string(), MeshFoundBy::kRepositoryPackage));
   EXPECT_EQ(RepositoryPackages().Find(urdf_folder.string(), "beside"), std::nullopt);
   // No package.xml above: only the description's folder.
   fs::create_directories(top_ / "loose/urdf");

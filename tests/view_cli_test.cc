@@ -137,8 +137,8 @@ TEST(ViewCliTest, MeshesAreDrawnFromTheirFilesAndDecimated) {
   ASSERT_EQ(found.exit_code, 0);
   EXPECT_EQ(PageData(found.output)["meshes"].size(), data["meshes"].size());
   // A mesh found nowhere (package://nowhere/...): the page says why, per geometry.
-  const ToolRun lost = RunTool(std::string("view '") + MASSPROPS_TESTDATA_DIR +
-                               "/check/mesh-unresolved.urdf'");
+  const ToolRun lost =
+      RunTool(std::string("view '") + MASSPROPS_TESTDATA_DIR + "/check/mesh-unresolved.urdf'");
   ASSERT_EQ(lost.exit_code, 0);
   const json lost_data = PageData(lost.output);
   const json& error = lost_data["models"][0]["links"][0]["geometry"][0]["error"];

@@ -120,8 +120,8 @@ std::string DescribeRepositorySearch(const std::string& base, RepositoryPackages
 // that holds `rest` wins.
 std::optional<std::string> ResolveSearchedUri(const std::string& uri, bool is_package,
                                               const std::string& name, const std::string& rest,
-                                              const MeshResolveOptions& options,
-                                              std::string* error, MeshFoundBy* found_by) {
+                                              const MeshResolveOptions& options, std::string* error,
+                                              MeshFoundBy* found_by) {
   const char* kind = is_package ? "package" : "model";
   std::vector<std::string> searched;
   std::vector<std::string> found_without_file;
@@ -172,14 +172,13 @@ std::optional<std::string> ResolveSearchedUri(const std::string& uri, bool is_pa
   }
   if (options.use_environment) {
     const std::vector<std::pair<const char*, const char*>> variables =
-        is_package ? std::vector<std::pair<const char*, const char*>>{{"ROS_PACKAGE_PATH", ""},
-                                                                      {"AMENT_PREFIX_PATH",
-                                                                       "/share"}}
-                   : std::vector<std::pair<const char*, const char*>>{
-                         {"SDF_PATH", ""},
-                         {"GZ_SIM_RESOURCE_PATH", ""},
-                         {"IGN_GAZEBO_RESOURCE_PATH", ""},
-                         {"GAZEBO_MODEL_PATH", ""}};
+        is_package
+            ? std::vector<std::pair<const char*, const char*>>{{"ROS_PACKAGE_PATH", ""},
+                                                               {"AMENT_PREFIX_PATH", "/share"}}
+            : std::vector<std::pair<const char*, const char*>>{{"SDF_PATH", ""},
+                                                               {"GZ_SIM_RESOURCE_PATH", ""},
+                                                               {"IGN_GAZEBO_RESOURCE_PATH", ""},
+                                                               {"GAZEBO_MODEL_PATH", ""}};
     std::vector<std::string> folders;
     for (const auto& [variable, suffix] : variables) {
       for (auto& folder : SplitEnvironmentPath(variable, suffix)) folders.push_back(folder);
@@ -391,8 +390,8 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
 }
 
 std::optional<std::string> MeshCache::Resolve(const std::string& uri,
-                                              const MeshResolveOptions& options,
-                                              std::string* error, MeshFoundBy* found_by) {
+                                              const MeshResolveOptions& options, std::string* error,
+                                              MeshFoundBy* found_by) {
   // model:// URIs do not depend on the description's folder: one lookup per run. package://
   // ones do (its repository, its ancestors, package:///).
   const bool same_everywhere = StartsWith(uri, "model://");

@@ -133,8 +133,7 @@ const RepositoryPackages::Subtree& RepositoryPackages::CrawlLocked(const std::st
         ignored = true;
       } else if (name == ".git") {
         repository = true;
-      } else if (!IsSkippedName(name) && !it->is_symlink(entry_ec) &&
-                 it->is_directory(entry_ec)) {
+      } else if (!IsSkippedName(name) && !it->is_symlink(entry_ec) && it->is_directory(entry_ec)) {
         children.push_back(name);
       }
     }

@@ -120,8 +120,8 @@ void UseGeometryShapes(const Model& model, const std::vector<std::string>& model
                        const std::vector<std::string>& config_package_paths) {
   GeometryArgs& args = Args();
   if (args.no_geometry) return;
-  const MeshResolveOptions resolve = MakeResolveOptions(PackagePaths(config_package_paths),
-                                                        model_paths, model.file, &args.cache);
+  const MeshResolveOptions resolve =
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
   if (args.enabled) options->shape = MakeLinkShapeFunction(resolve);
   options->box = MakeLinkBoxFunction(resolve);
 }
@@ -130,8 +130,8 @@ void CountMeshLinks(const Model& model, const std::vector<std::string>& model_pa
                     FileResult* result, const std::vector<std::string>& config_package_paths) {
   GeometryArgs& args = Args();
   if (args.no_geometry) return;
-  const MeshResolveOptions resolve = MakeResolveOptions(PackagePaths(config_package_paths),
-                                                        model_paths, model.file, &args.cache);
+  const MeshResolveOptions resolve =
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
   RecordMeshUris(model, resolve, result);
   if (args.enabled) return;
   const LinkBoxFunction box = MakeLinkBoxFunction(resolve);
@@ -158,8 +158,8 @@ void AddGeometryFindings(const Model& model, const CheckOptions& options,
   GeometryCheckOptions geometry;
   geometry.enabled = true;
   geometry.factor = args.factor;
-  geometry.resolve = MakeResolveOptions(PackagePaths(config_package_paths), model_paths,
-                                        model.file, &args.cache);
+  geometry.resolve =
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
   geometry.check = options;
   const std::vector<Finding> found = CheckModelGeometry(model, geometry);
   findings->insert(findings->end(), found.begin(), found.end());

@@ -40,8 +40,7 @@ void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted);
 /// `config_package_paths` (the file's .massprops.toml package-paths) are searched after
 /// --package-path, here and in the two functions below.
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
-                       CheckOptions* options,
-                       const std::vector<std::string>& config_package_paths);
+                       CheckOptions* options, const std::vector<std::string>& config_package_paths);
 
 /// In the default mode (neither --geometry, whose mesh-unreadable findings name each mesh, nor
 /// --no-geometry): counts into *result the links of `model` whose geometry includes a mesh, and

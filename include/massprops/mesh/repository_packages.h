@@ -58,8 +58,8 @@ class RepositoryPackages {
       : max_folders_(max_folders) {}
 
   /// The folder of the package named `name` (its package.xml's <name>) nearest to `folder`
-  /// under FindPackageSearchRoot(folder): found in the subtree of the nearest ancestor that has one;
-  /// among several at that level, the shallowest, then the first by path. nullopt when there
+  /// under FindPackageSearchRoot(folder): found in the subtree of the nearest ancestor that has
+  /// one; among several at that level, the shallowest, then the first by path. nullopt when there
   /// is none, or the crawl stopped at max_folders before finding one (truncated() says so).
   /// Never throws. Cost: the first call lists up to max_folders folders (reading each
   /// package.xml met); later calls reuse what was crawled.
