@@ -138,6 +138,22 @@ TEST(ConfigTest, LoadConfigResolvesModelPathsAgainstTheConfigFolder) {
   EXPECT_EQ(config.model_paths[1], "/abs");
 }
 
+// package-paths (issue 29) is read like model-paths: an array of strings, relative paths
+// made absolute against the configuration file's folder.
+TEST(ConfigTest, PackagePathsAreReadAndResolvedLikeModelPaths) {
+  TempDir dir;
+  const fs::path file = dir.path() / ".massprops.toml";
+  WriteFile(file, "package-paths = [\"../src\", \"/opt/ws/src\"]\nmodel-paths = [\"m\"]\n");
+  const Config config = LoadConfig(file.string());
+  ASSERT_EQ(config.package_paths.size(), 2u);
+  EXPECT_EQ(fs::path(config.package_paths[0]), (dir.path() / "../src").lexically_normal());
+  EXPECT_EQ(config.package_paths[1], "/opt/ws/src");
+  EXPECT_EQ(config.model_paths.size(), 1u);
+  EXPECT_EQ(ParseError("package-paths = \"src\"\n").line(), 1);
+  EXPECT_EQ(ParseError("package-paths = [\"a\", 2]\n").line(), 1);
+  EXPECT_TRUE(ParseConfig("", "cfg.toml").package_paths.empty());
+}
+
 TEST(ConfigTest, LoadConfigOfAMissingFileThrowsNamingTheFile) {
   TempDir dir;
   const std::string missing = (dir.path() / "missing.toml").string();

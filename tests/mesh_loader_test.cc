@@ -36,10 +36,12 @@ RotationalInertia<double> Inertia(double xx, double yy, double zz, double xy = 0
 // float nearest to 0.1. Closed forms are evaluated at these values.
 double F(double x) { return static_cast<double>(static_cast<float>(x)); }
 
-// Options that see only what the test gives (no environment variables).
+// Options that see only what the test gives (no environment variables, no repository crawl:
+// tests/repository_packages_test.cc tests those).
 MeshResolveOptions IsolatedOptions() {
   MeshResolveOptions options;
   options.use_environment = false;
+  options.search_repository = false;
   return options;
 }
 
@@ -167,8 +169,11 @@ TEST(MeshLoaderTest, PackageUriFailuresSayWhatWasSearched) {
   EXPECT_NE(error.find(MASSPROPS_TESTDATA_DIR), std::string::npos) << error;
   EXPECT_FALSE(ResolveMeshUri("package://mesh/missing.stl", options, &error));
   EXPECT_NE(error.find("found but the file is not there"), std::string::npos) << error;
+  // package:///a.stl is a file beside the description (repository_packages_test.cc).
   EXPECT_FALSE(ResolveMeshUri("package:///a.stl", options, &error));
-  EXPECT_NE(error.find("no package or model name"), std::string::npos) << error;
+  EXPECT_NE(error.find("beside the description"), std::string::npos) << error;
+  EXPECT_FALSE(ResolveMeshUri("model:///a.sdf", options, &error));
+  EXPECT_NE(error.find("no model name"), std::string::npos) << error;
 }
 
 TEST(MeshLoaderTest, PackageUriResolvesThroughRosPackagePath) {

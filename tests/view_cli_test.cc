@@ -131,12 +131,20 @@ TEST(ViewCliTest, MeshesAreDrawnFromTheirFilesAndDecimated) {
     }
     for (const json& index : mesh["t"]) ASSERT_LT(index.get<std::size_t>(), mesh["q"].size() / 3);
   }
-  // Without the package path the meshes are not found: the page says why, per geometry.
-  const ToolRun lost = RunTool("view " + model);
+  // Without the package path they are found too: example-robot-data is an ancestor folder of
+  // the model (docs/meshes.md, "Packages found with no flags").
+  const ToolRun found = RunTool("view " + model);
+  ASSERT_EQ(found.exit_code, 0);
+  EXPECT_EQ(PageData(found.output)["meshes"].size(), data["meshes"].size());
+  // A mesh found nowhere (package://nowhere/...): the page says why, per geometry.
+  const ToolRun lost =
+      RunTool(std::string("view '") + MASSPROPS_TESTDATA_DIR + "/check/mesh-unresolved.urdf'");
   ASSERT_EQ(lost.exit_code, 0);
   const json lost_data = PageData(lost.output);
-  EXPECT_TRUE(lost_data["meshes"].empty());
-  EXPECT_TRUE(lost_data["models"][0]["links"][0]["geometry"][0]["error"].is_string());
+  const json& error = lost_data["models"][0]["links"][0]["geometry"][0]["error"];
+  ASSERT_TRUE(error.is_string());
+  EXPECT_NE(error.get<std::string>().find("package 'nowhere' not found"), std::string::npos)
+      << error;
 }
 
 TEST(ViewCliTest, ReportFormatHtmlWritesTheSamePage) {

@@ -20,6 +20,7 @@
 // mesh
 #include "massprops/mesh/mesh_inertia.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "massprops/mesh/repository_packages.h"
 
 // io
 #include "massprops/io/auto_inertia.h"

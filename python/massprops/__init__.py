@@ -75,7 +75,8 @@ class CheckOptions:
     model_paths: folders searched for SDF model:// URIs (before the configuration's).
     geometry: read link geometry, meshes too (`check --geometry`).
     geometry_factor: inertia-disagrees-with-geometry threshold (> 1).
-    package_paths: folders searched for package:// mesh URIs.
+    package_paths: folders searched first for package:// mesh URIs (then the description's
+        repository, an ancestor folder of that name, ROS_PACKAGE_PATH; docs/meshes.md).
     """
 
     tolerance: Optional[float] = None

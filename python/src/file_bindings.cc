@@ -328,9 +328,11 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
 
   CheckOptions options;
   std::vector<std::string> paths = model_paths;
+  std::vector<std::string> packages = package_paths;
   if (loaded) {
     ApplyConfig(*loaded, options);
     paths.insert(paths.end(), loaded->model_paths.begin(), loaded->model_paths.end());
+    packages.insert(packages.end(), loaded->package_paths.begin(), loaded->package_paths.end());
   }
   if (tolerance) options.tolerance = *tolerance;
   for (const auto& [rule, level] : overrides) options.overrides[rule] = level;
@@ -356,7 +358,7 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
   for (const Model& model : read.models) {
     CheckOptions model_options = options;
     MeshResolveOptions resolve;
-    resolve.package_paths = package_paths;
+    resolve.package_paths = packages;
     resolve.model_paths = paths;
     resolve.model_file = model.file;
     resolve.cache = &cache;

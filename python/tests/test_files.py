@@ -259,3 +259,31 @@ def test_rules_list_matches_the_tool(tool):
     out = subprocess.run([tool, "check", "--list-rules", "--format", "json"],
                          capture_output=True, text=True, check=True).stdout
     assert massprops.rules() == json.loads(out)
+
+
+def test_check_finds_package_meshes_in_the_descriptions_repository(tmp_path, testdata):
+    # A repository (.git) whose package "arm_meshes" (its package.xml, folder "parts") holds the
+    # only geometry of link "box": the 0.1 x 0.2 x 0.3 m box of testdata/mesh/box_ascii.stl.
+    # Its inertia diag(1, 1, 1) kg m^2 for 1 kg gives tr(I)/2 = 1.5 kg m^2 about the box center,
+    # far above m r^2 = 1 x (2 x 0.187)^2 = 0.14 kg m^2 (r = twice the half-diagonal
+    # sqrt(0.05^2 + 0.1^2 + 0.15^2) = 0.187 m): inertia-exceeds-geometry, once the box is known.
+    repo = tmp_path / "repo"
+    (repo / ".git").mkdir(parents=True)
+    (repo / "parts" / "meshes").mkdir(parents=True)
+    (repo / "parts" / "package.xml").write_text(
+        "<package format='3'><name>arm_meshes</name></package>")
+    shutil.copy(os.path.join(testdata, "mesh", "box_ascii.stl"), repo / "parts" / "meshes")
+    (repo / "desc").mkdir()
+    urdf = repo / "desc" / "arm.urdf"
+    urdf.write_text(
+        "<robot name='arm'><link name='box'><inertial><origin xyz='0.05 0.1 0.15'/>"
+        "<mass value='1'/><inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/>"
+        "</inertial><visual><geometry>"
+        "<mesh filename='package://arm_meshes/meshes/box_ascii.stl'/>"
+        "</geometry></visual></link></robot>")
+    rules = {f.rule for f in massprops.check(urdf, config=None)}
+    assert "inertia-exceeds-geometry" in rules
+    # Without the package.xml no package is named arm_meshes: the mesh's size is unknown.
+    (repo / "parts" / "package.xml").unlink()
+    rules = {f.rule for f in massprops.check(urdf, config=None)}
+    assert "inertia-exceeds-geometry" not in rules

@@ -110,15 +110,16 @@ Config ParseConfig(std::string_view text, const std::string& source_name) {
              "'target' must be \"generic\", \"mujoco\", \"drake\" or \"gazebo\"");
       }
       config.target = target;
-    } else if (name == "model-paths") {
+    } else if (name == "model-paths" || name == "package-paths") {
+      std::vector<std::string>& paths =
+          name == "model-paths" ? config.model_paths : config.package_paths;
+      const std::string must = "'" + name + "' must be an array of strings";
       const auto* array = node.as_array();
-      if (!array) Fail(source_name, node.source(), "'model-paths' must be an array of strings");
+      if (!array) Fail(source_name, node.source(), must);
       for (const toml::node& element : *array) {
         const auto* path = element.as_string();
-        if (!path) {
-          Fail(source_name, element.source(), "'model-paths' must be an array of strings");
-        }
-        config.model_paths.push_back(path->get());
+        if (!path) Fail(source_name, element.source(), must);
+        paths.push_back(path->get());
       }
     } else if (name == "rules") {
       const auto* rules = node.as_table();
@@ -140,7 +141,7 @@ Config ParseConfig(std::string_view text, const std::string& source_name) {
     } else {
       Fail(source_name, key.source(),
            "unknown key '" + name +
-               "' (known keys: fail-on, tolerance, target, model-paths, [rules])");
+               "' (known keys: fail-on, tolerance, target, model-paths, package-paths, [rules])");
     }
   }
   return config;
@@ -156,9 +157,11 @@ Config LoadConfig(const std::string& path) {
   config.path = path;
   std::error_code ec;
   const fs::path base = fs::absolute(fs::path(path), ec).parent_path();
-  for (std::string& model_path : config.model_paths) {
-    const fs::path p(model_path);
-    if (p.is_relative() && !ec) model_path = (base / p).lexically_normal().string();
+  for (std::vector<std::string>* paths : {&config.model_paths, &config.package_paths}) {
+    for (std::string& path : *paths) {
+      const fs::path p(path);
+      if (p.is_relative() && !ec) path = (base / p).lexically_normal().string();
+    }
   }
   return config;
 }

@@ -694,7 +694,7 @@ LinkGeometryComparison CompareLinkWithGeometry(const Link& link,
     if (part >= implied->geometries.size()) break;
     const GeometryMassProperties& used = implied->geometries[part++];
     if (g.type == Geometry::Type::kMesh && used.mesh_diagnostics) {
-      result.meshes.push_back({g.uri, used.mesh_path, *used.mesh_diagnostics});
+      result.meshes.push_back({g.uri, used.mesh_path, *used.mesh_diagnostics, used.mesh_found_by});
     }
   }
   result.geometry = MakeBodyMassProperties(link.name, mass, implied->p_BoBcm_B,

@@ -1,7 +1,5 @@
 #include "massprops/mesh/mesh_loader.h"
 
-#include <tinyxml2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -50,33 +48,18 @@ std::vector<std::string> SplitEnvironmentPath(const char* variable, const std::s
   return folders;
 }
 
-// The <name> of the package.xml in `folder`, or "" if there is none.
-std::string PackageXmlName(const fs::path& folder) {
-  const fs::path manifest = folder / "package.xml";
-  if (!IsRegularFile(manifest)) return "";
-  tinyxml2::XMLDocument document;
-  if (document.LoadFile(manifest.string().c_str()) != tinyxml2::XML_SUCCESS) return "";
-  const tinyxml2::XMLElement* package = document.FirstChildElement("package");
-  const tinyxml2::XMLElement* name = package ? package->FirstChildElement("name") : nullptr;
-  if (name == nullptr || name->GetText() == nullptr) return "";
-  std::string text = name->GetText();
-  const auto first = text.find_first_not_of(" \t\r\n");
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
-}
-
 // Folders that are the package `name` under search folder P: P/name, P itself or a child of P
 // whose package.xml names it.
 std::vector<fs::path> PackageRootsIn(const fs::path& folder, const std::string& name) {
   std::vector<fs::path> roots;
   if (!IsDirectory(folder)) return roots;
   if (IsDirectory(folder / name)) roots.push_back(folder / name);
-  if (PackageXmlName(folder) == name) roots.push_back(folder);
+  if (PackageXmlName(folder.string()) == name) roots.push_back(folder);
   std::error_code ec;
   for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
     std::error_code entry_ec;
     if (!it->is_directory(entry_ec) || it->path().filename() == name) continue;
-    if (PackageXmlName(it->path()) == name) roots.push_back(it->path());
+    if (PackageXmlName(it->path().string()) == name) roots.push_back(it->path());
   }
   return roots;
 }
@@ -121,8 +104,125 @@ std::string Describe(const Geometry& geometry) {
 
 }  // namespace
 
+namespace {
+
+// "the packages under R (N folders listed[, stopped at the limit of M])" for a message.
+std::string DescribeRepositorySearch(const std::string& base, RepositoryPackages& packages) {
+  std::string text = "the packages under " + packages.SearchRoot(base) + " (" +
+                     std::to_string(packages.folders_listed()) + " folders listed";
+  if (packages.truncated()) {
+    text += ", stopped at the limit of " + std::to_string(packages.max_folders());
+  }
+  return text + ")";
+}
+
+// A package:// or model:// URI: NAME looked up where options say, the first package or model
+// that holds `rest` wins.
+std::optional<std::string> ResolveSearchedUri(const std::string& uri, bool is_package,
+                                              const std::string& name, const std::string& rest,
+                                              const MeshResolveOptions& options, std::string* error,
+                                              MeshFoundBy* found_by) {
+  const char* kind = is_package ? "package" : "model";
+  std::vector<std::string> searched;
+  std::vector<std::string> found_without_file;
+  // Returns true when `root`/rest is a file (then *path is set).
+  auto holds = [&](const fs::path& root, MeshFoundBy how, std::optional<std::string>* path) {
+    const fs::path candidate = root / rest;
+    if (IsRegularFile(candidate)) {
+      *path = candidate.lexically_normal().string();
+      if (found_by) *found_by = how;
+      return true;
+    }
+    found_without_file.push_back(candidate.string());
+    return false;
+  };
+  auto in_folders = [&](const std::vector<std::string>& folders, MeshFoundBy how,
+                        std::optional<std::string>* path) {
+    for (const auto& folder : folders) {
+      searched.push_back(folder);
+      std::vector<fs::path> roots;
+      if (is_package) {
+        roots = PackageRootsIn(folder, name);
+      } else if (IsDirectory(fs::path(folder) / name)) {
+        roots.push_back(fs::path(folder) / name);
+      }
+      for (const auto& root : roots) {
+        if (holds(root, how, path)) return true;
+      }
+    }
+    return false;
+  };
+  std::optional<std::string> path;
+  if (in_folders(is_package ? options.package_paths : options.model_paths, MeshFoundBy::kFlag,
+                 &path)) {
+    return path;
+  }
+  if (is_package && options.search_repository) {
+    const std::string base = BaseFolder(options).string();
+    RepositoryPackages local;
+    RepositoryPackages& packages = options.cache ? options.cache->packages() : local;
+    const std::optional<std::string> package = packages.Find(base, name);
+    if (package && holds(*package, MeshFoundBy::kRepositoryPackage, &path)) return path;
+    searched.push_back(DescribeRepositorySearch(base, packages));
+    const std::optional<std::string> ancestor = packages.FindAncestor(base, name);
+    if (ancestor && ancestor != package && holds(*ancestor, MeshFoundBy::kAncestor, &path)) {
+      return path;
+    }
+    searched.push_back("its ancestor folders named '" + name + "'");
+  }
+  if (options.use_environment) {
+    const std::vector<std::pair<const char*, const char*>> variables =
+        is_package
+            ? std::vector<std::pair<const char*, const char*>>{{"ROS_PACKAGE_PATH", ""},
+                                                               {"AMENT_PREFIX_PATH", "/share"}}
+            : std::vector<std::pair<const char*, const char*>>{{"SDF_PATH", ""},
+                                                               {"GZ_SIM_RESOURCE_PATH", ""},
+                                                               {"IGN_GAZEBO_RESOURCE_PATH", ""},
+                                                               {"GAZEBO_MODEL_PATH", ""}};
+    std::vector<std::string> folders;
+    for (const auto& [variable, suffix] : variables) {
+      for (auto& folder : SplitEnvironmentPath(variable, suffix)) folders.push_back(folder);
+    }
+    if (in_folders(folders, MeshFoundBy::kEnvironment, &path)) return path;
+  }
+  if (error) {
+    if (!found_without_file.empty()) {
+      *error = "mesh '" + uri + "': " + kind + " '" + name +
+               "' found but the file is not there: " + JoinList(found_without_file);
+    } else {
+      *error = "mesh '" + uri + "': " + kind + " '" + name + "' not found in " + JoinList(searched);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+const char* ToString(MeshFoundBy found_by) {
+  switch (found_by) {
+    case MeshFoundBy::kNone:
+      return "none";
+    case MeshFoundBy::kFlag:
+      return "flag";
+    case MeshFoundBy::kRepositoryPackage:
+      return "repository-package";
+    case MeshFoundBy::kAncestor:
+      return "ancestor";
+    case MeshFoundBy::kEnvironment:
+      return "environment";
+    case MeshFoundBy::kBesideFile:
+      return "beside-file";
+    case MeshFoundBy::kRelative:
+      return "relative";
+    case MeshFoundBy::kAbsolute:
+      return "absolute";
+  }
+  return "none";
+}
+
 std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshResolveOptions& options,
-                                          std::string* error) {
+                                          std::string* error, MeshFoundBy* found_by) {
+  if (found_by) *found_by = MeshFoundBy::kNone;
   if (uri.empty()) {
     if (error) *error = "mesh with an empty filename";
     return std::nullopt;
@@ -131,8 +231,8 @@ std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshReso
   const bool is_model = StartsWith(uri, "model://");
   if (is_package || is_model) {
     const auto [name, rest] = SplitNameAndPath(uri.substr(is_package ? 10 : 8));
-    if (name.empty()) {
-      if (error) *error = "mesh '" + uri + "': no package or model name";
+    if (name.empty() && !is_package) {
+      if (error) *error = "mesh '" + uri + "': no model name";
       return std::nullopt;
     }
     // "package://x/../../etc/passwd" names no file of package x: refused, never looked up.
@@ -144,50 +244,22 @@ std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshReso
       }
       return std::nullopt;
     }
-    std::vector<std::string> folders = is_package ? options.package_paths : options.model_paths;
-    if (options.use_environment) {
-      const std::vector<std::pair<const char*, const char*>> variables =
-          is_package
-              ? std::vector<std::pair<const char*, const char*>>{{"ROS_PACKAGE_PATH", ""},
-                                                                 {"AMENT_PREFIX_PATH", "/share"}}
-              : std::vector<std::pair<const char*, const char*>>{{"SDF_PATH", ""},
-                                                                 {"GZ_SIM_RESOURCE_PATH", ""},
-                                                                 {"IGN_GAZEBO_RESOURCE_PATH", ""},
-                                                                 {"GAZEBO_MODEL_PATH", ""}};
-      for (const auto& [variable, suffix] : variables) {
-        for (auto& folder : SplitEnvironmentPath(variable, suffix)) folders.push_back(folder);
-      }
+    if (name.empty()) {  // package:///rest (onshape-to-robot): beside the description file
+      std::optional<std::string> path =
+          CheckFile(BaseFolder(options) / std::string(rest), uri, error);
+      if (path && found_by) *found_by = MeshFoundBy::kBesideFile;
+      if (!path && error) *error += " (package:/// names a file beside the description)";
+      return path;
     }
-    std::vector<std::string> found_without_file;
-    for (const auto& folder : folders) {
-      std::vector<fs::path> roots;
-      if (is_package) {
-        roots = PackageRootsIn(folder, name);
-      } else if (IsDirectory(fs::path(folder) / name)) {
-        roots.push_back(fs::path(folder) / name);
-      }
-      for (const auto& root : roots) {
-        const fs::path candidate = root / rest;
-        if (IsRegularFile(candidate)) return candidate.lexically_normal().string();
-        found_without_file.push_back(candidate.string());
-      }
-    }
-    if (error) {
-      const char* kind = is_package ? "package" : "model";
-      if (!found_without_file.empty()) {
-        *error = "mesh '" + uri + "': " + kind + " '" + name +
-                 "' found but the file is not there: " + JoinList(found_without_file);
-      } else {
-        *error =
-            "mesh '" + uri + "': " + kind + " '" + name + "' not found in " + JoinList(folders);
-      }
-    }
-    return std::nullopt;
+    return ResolveSearchedUri(uri, is_package, name, rest, options, error, found_by);
   }
   if (StartsWith(uri, "file://")) {
     fs::path path(uri.substr(7));
-    if (path.is_relative()) path = BaseFolder(options) / path;
-    return CheckFile(path, uri, error);
+    const bool relative = path.is_relative();
+    if (relative) path = BaseFolder(options) / path;
+    std::optional<std::string> found = CheckFile(path, uri, error);
+    if (found && found_by) *found_by = relative ? MeshFoundBy::kRelative : MeshFoundBy::kAbsolute;
+    return found;
   }
   const std::size_t scheme_end = uri.find("://");
   if (scheme_end != std::string::npos && scheme_end > 0 &&
@@ -199,8 +271,23 @@ std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshReso
     return std::nullopt;
   }
   fs::path path(uri);
-  if (path.is_relative()) path = BaseFolder(options) / path;
-  return CheckFile(path, uri, error);
+  const bool relative = path.is_relative();
+  if (relative) path = BaseFolder(options) / path;
+  std::optional<std::string> found = CheckFile(path, uri, error);
+  if (found && found_by) *found_by = relative ? MeshFoundBy::kRelative : MeshFoundBy::kAbsolute;
+  return found;
+}
+
+std::optional<std::string> ResolveGeometryMeshUri(const Geometry& geometry,
+                                                  const MeshResolveOptions& options,
+                                                  std::string* error, MeshFoundBy* found_by) {
+  MeshResolveOptions where = options;
+  const std::string& holder = geometry.location.file;
+  if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
+    where.model_file = holder;
+  }
+  if (where.cache != nullptr) return where.cache->Resolve(geometry.uri, where, error, found_by);
+  return ResolveMeshUri(geometry.uri, where, error, found_by);
 }
 
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error) {
@@ -303,24 +390,27 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
 }
 
 std::optional<std::string> MeshCache::Resolve(const std::string& uri,
-                                              const MeshResolveOptions& options,
-                                              std::string* error) {
-  // package:// and model:// URIs do not depend on the model's folder: one lookup per run.
-  const bool searched = StartsWith(uri, "package://") || StartsWith(uri, "model://");
-  std::string key = uri + '\n' + (searched ? std::string() : BaseFolder(options).string()) + '\n' +
-                    (options.use_environment ? "env" : "") + '\n';
+                                              const MeshResolveOptions& options, std::string* error,
+                                              MeshFoundBy* found_by) {
+  // model:// URIs do not depend on the description's folder: one lookup per run. package://
+  // ones do (its repository, its ancestors, package:///).
+  const bool same_everywhere = StartsWith(uri, "model://");
+  std::string key = uri + '\n' + (same_everywhere ? std::string() : BaseFolder(options).string()) +
+                    '\n' + (options.use_environment ? "env" : "") +
+                    (options.search_repository ? "repo" : "") + '\n';
   for (const auto& p : options.package_paths) key += p + '\n';
   key += '\n';
   for (const auto& p : options.model_paths) key += p + '\n';
   std::lock_guard<std::mutex> lock(mutex_);
   auto found = resolved_.find(key);
   if (found == resolved_.end()) {
-    std::string reason;
-    std::optional<std::string> path = ResolveMeshUri(uri, options, &reason);
-    found = resolved_.emplace(key, std::make_pair(std::move(path), std::move(reason))).first;
+    Resolved resolved;
+    resolved.path = ResolveMeshUri(uri, options, &resolved.error, &resolved.found_by);
+    found = resolved_.emplace(key, std::move(resolved)).first;
   }
-  if (!found->second.first && error) *error = found->second.second;
-  return found->second.first;
+  if (!found->second.path && error) *error = found->second.error;
+  if (found_by) *found_by = found->second.found_by;
+  return found->second.path;
 }
 
 int MeshCache::files_loaded() const {
@@ -385,21 +475,6 @@ double CalcPrimitiveVolume(const Geometry& geometry, RotationalInertia<double>* 
   return volume;
 }
 
-// The file of a mesh geometry: a relative URI is relative to the file that holds the geometry
-// (for an SDF model included from another folder, that is the included model's file, not
-// options.model_file). Nothing, with the reason, if it cannot be resolved.
-std::optional<std::string> ResolveGeometryMesh(const Geometry& geometry,
-                                               const MeshResolveOptions& options,
-                                               std::string* reason) {
-  MeshResolveOptions where = options;
-  const std::string& holder = geometry.location.file;
-  if (!holder.empty() && holder != "-" && holder != "<stdin>" && holder != "<input>") {
-    where.model_file = holder;
-  }
-  if (where.cache != nullptr) return where.cache->Resolve(geometry.uri, where, reason);
-  return ResolveMeshUri(geometry.uri, where, reason);
-}
-
 // Loads the mesh at `path` (through the cache when there is one): its mass properties at
 // density 1 once scaled, and its unscaled vertices (for the bounding box). Either may be null
 // on failure, with the reason.
@@ -426,7 +501,9 @@ bool CalcMeshGeometry(const Geometry& geometry, const MeshResolveOptions& option
                       GeometryMassProperties* result, Eigen::Vector3d* p_GoGcm_G,
                       RotationalInertia<double>* I_GGcm_G, std::string* error) {
   std::string reason;
-  const std::optional<std::string> path = ResolveGeometryMesh(geometry, options, &reason);
+  MeshFoundBy found_by = MeshFoundBy::kNone;
+  const std::optional<std::string> path =
+      ResolveGeometryMeshUri(geometry, options, &reason, &found_by);
   if (!path) {
     if (error) *error = Describe(geometry) + ": " + reason;
     return false;
@@ -450,6 +527,7 @@ bool CalcMeshGeometry(const Geometry& geometry, const MeshResolveOptions& option
   *p_GoGcm_G = mesh->p_GoGcm_G;
   *I_GGcm_G = mesh->I_GGcm_G;
   result->mesh_path = *path;
+  result->mesh_found_by = found_by;
   result->mesh_diagnostics = mesh->diagnostics;
   return true;
 }
@@ -520,7 +598,7 @@ std::optional<Eigen::AlignedBox3d> CalcGeometryBounds(const Geometry& geometry,
   }
   try {
     std::string reason;
-    const std::optional<std::string> path = ResolveGeometryMesh(geometry, options, &reason);
+    const std::optional<std::string> path = ResolveGeometryMeshUri(geometry, options, &reason);
     if (!path) {
       if (error) *error = Describe(geometry) + ": " + reason;
       return std::nullopt;

@@ -122,6 +122,7 @@ void WriteJson(std::ostream& out, const std::vector<ModelMassReport>& reports,
             const MeshDiagnostics& d = mesh.diagnostics;
             meshes.push_back({{"uri", mesh.uri},
                               {"path", mesh.path},
+                              {"found_by", ToString(mesh.found_by)},
                               {"triangles", d.num_triangles},
                               {"model", ToString(d.model)},
                               {"winding_inverted", d.winding_inverted},

@@ -183,11 +183,24 @@ ReportSummary Summarize(const std::vector<FileResult>& results) {
     if (summary.first_unresolved_mesh.empty()) {
       summary.first_unresolved_mesh = result.first_unresolved_mesh;
     }
+    for (const MeshUriResolution& mesh : result.mesh_uris) {
+      ++summary.mesh_resolution.at(static_cast<std::size_t>(mesh.found_by));
+    }
   }
   return summary;
 }
 
 namespace {
+
+// How many mesh URIs resolved each way: {"flag": n, ..., "unresolved": n}.
+json MeshResolutionJson(const std::vector<int>& counts) {
+  json out = json::object();
+  for (std::size_t i = 1; i < counts.size(); ++i) {
+    out[ToString(static_cast<MeshFoundBy>(i))] = counts[i];
+  }
+  out["unresolved"] = counts.at(0);
+  return out;
+}
 
 // The summary's line on meshes that did not resolve; empty when there are none.
 std::string UnresolvedMeshesLine(const ReportSummary& s) {
@@ -272,11 +285,23 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                         {"element", ShortenLongWords(error.element)},
                         {"message", ShortenLongWords(error.message)}});
     }
+    std::vector<int> counts(8, 0);
+    json mesh_uris = json::array();
+    for (const MeshUriResolution& mesh : result.mesh_uris) {
+      ++counts.at(static_cast<std::size_t>(mesh.found_by));
+      mesh_uris.push_back({{"uri", mesh.uri},
+                           {"found_by", ToString(mesh.found_by)},
+                           {"path", mesh.path.empty() ? json(nullptr) : json(mesh.path)}});
+    }
     files.push_back({{"path", result.path},
                      {"format", result.format.empty() ? json(nullptr) : json(result.format)},
                      {"models", result.models},
                      {"findings", findings},
-                     {"errors", errors}});
+                     {"errors", errors},
+                     {"mesh_links", result.mesh_links},
+                     {"mesh_links_unresolved", result.mesh_links_unresolved},
+                     {"mesh_resolution", MeshResolutionJson(counts)},
+                     {"mesh_uris", mesh_uris}});
   }
   const ReportSummary s = Summarize(results);
   const json document = {
@@ -292,7 +317,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
         {"mesh_links", s.mesh_links},
         {"mesh_links_unresolved", s.mesh_links_unresolved},
         {"first_unresolved_mesh",
-         s.first_unresolved_mesh.empty() ? json(nullptr) : json(s.first_unresolved_mesh)}}}};
+         s.first_unresolved_mesh.empty() ? json(nullptr) : json(s.first_unresolved_mesh)},
+        {"mesh_resolution", MeshResolutionJson(s.mesh_resolution)}}}};
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
@@ -367,7 +393,8 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
         {"mesh_links", s.mesh_links},
         {"mesh_links_unresolved", s.mesh_links_unresolved},
         {"first_unresolved_mesh",
-         s.first_unresolved_mesh.empty() ? json(nullptr) : json(s.first_unresolved_mesh)}};
+         s.first_unresolved_mesh.empty() ? json(nullptr) : json(s.first_unresolved_mesh)},
+        {"mesh_resolution", MeshResolutionJson(s.mesh_resolution)}};
   }
   const json log = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
                     {"version", "2.1.0"},

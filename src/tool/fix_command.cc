@@ -178,8 +178,8 @@ bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup)
   // Meshes' mass properties are read only when asked: --geometry (the checks and repairs use
   // them) or --from-geometry (the inertials it replaces may come from meshes). Each file is read
   // once.
-  setup->resolve =
-      MakeResolveOptions(args.package_paths, args.model_paths, args.file, &setup->mesh_cache);
+  setup->resolve = MakeResolveOptions(WithConfigPackagePaths(args.package_paths, args.file),
+                                      args.model_paths, args.file, &setup->mesh_cache);
   if (args.geometry || args.from_geometry) {
     options.shape = MakeLinkShapeFunction(setup->resolve);
     if (args.geometry) setup->check.shape = options.shape;

@@ -1,10 +1,14 @@
 // The `massprops check` options of the geometry rules (see src/tool/geometry_cli.h).
 #include <algorithm>
 #include <memory>
+#include <optional>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry_cli.h"
+#include "massprops/analysis/config.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/mesh/mesh_loader.h"
 #include "massprops/output/reporters.h"
@@ -23,6 +27,33 @@ struct GeometryArgs {
 GeometryArgs& Args() {
   static GeometryArgs args;
   return args;
+}
+
+// --package-path, then the configuration's package-paths.
+std::vector<std::string> PackagePaths(const std::vector<std::string>& config_package_paths) {
+  std::vector<std::string> paths = Args().package_paths;
+  paths.insert(paths.end(), config_package_paths.begin(), config_package_paths.end());
+  return paths;
+}
+
+// How each distinct mesh URI of the model's links resolved; a URI that another model of the
+// same file (an SDF world's) resolved to the same file is listed once.
+void RecordMeshUris(const Model& model, const MeshResolveOptions& resolve, FileResult* result) {
+  std::set<std::pair<std::string, std::string>> holders;  // (uri, file holding the geometry)
+  std::set<std::pair<std::string, std::string>> listed;   // (uri, path found)
+  for (const MeshUriResolution& known : result->mesh_uris) listed.insert({known.uri, known.path});
+  for (const Link& link : model.links) {
+    for (const Geometry& geometry : link.geometries) {
+      if (geometry.type != Geometry::Type::kMesh) continue;
+      if (!holders.insert({geometry.uri, geometry.location.file}).second) continue;
+      MeshUriResolution mesh;
+      mesh.uri = geometry.uri;
+      std::string error;
+      mesh.path = ResolveGeometryMeshUri(geometry, resolve, &error, &mesh.found_by).value_or("");
+      if (!listed.insert({mesh.uri, mesh.path}).second) continue;
+      result->mesh_uris.push_back(std::move(mesh));
+    }
+  }
 }
 
 }  // namespace
@@ -45,6 +76,16 @@ MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_pa
   resolve.model_file = model_file;
   resolve.cache = cache;
   return resolve;
+}
+
+std::vector<std::string> WithConfigPackagePaths(std::vector<std::string> package_paths,
+                                                const std::string& model_file) {
+  if (const std::optional<std::string> path = FindConfigFor(model_file)) {
+    const Config config = LoadConfig(*path);
+    package_paths.insert(package_paths.end(), config.package_paths.begin(),
+                         config.package_paths.end());
+  }
+  return package_paths;
 }
 
 void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted) {
@@ -75,22 +116,26 @@ void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted) {
 }
 
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
-                       CheckOptions* options) {
+                       CheckOptions* options,
+                       const std::vector<std::string>& config_package_paths) {
   GeometryArgs& args = Args();
   if (args.no_geometry) return;
   const MeshResolveOptions resolve =
-      MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache);
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
   if (args.enabled) options->shape = MakeLinkShapeFunction(resolve);
   options->box = MakeLinkBoxFunction(resolve);
   options->points = MakeLinkPointsFunction(resolve);
 }
 
 void CountMeshLinks(const Model& model, const std::vector<std::string>& model_paths,
-                    FileResult* result) {
+                    FileResult* result, const std::vector<std::string>& config_package_paths) {
   GeometryArgs& args = Args();
-  if (args.no_geometry || args.enabled) return;
-  const LinkBoxFunction box = MakeLinkBoxFunction(
-      MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache));
+  if (args.no_geometry) return;
+  const MeshResolveOptions resolve =
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
+  RecordMeshUris(model, resolve, result);
+  if (args.enabled) return;
+  const LinkBoxFunction box = MakeLinkBoxFunction(resolve);
   for (const Link& link : model.links) {
     const bool has_mesh =
         std::any_of(link.geometries.begin(), link.geometries.end(),
@@ -107,13 +152,15 @@ void CountMeshLinks(const Model& model, const std::vector<std::string>& model_pa
 
 void AddGeometryFindings(const Model& model, const CheckOptions& options,
                          const std::vector<std::string>& model_paths,
-                         std::vector<Finding>* findings) {
+                         std::vector<Finding>* findings,
+                         const std::vector<std::string>& config_package_paths) {
   GeometryArgs& args = Args();
   if (!args.enabled) return;
   GeometryCheckOptions geometry;
   geometry.enabled = true;
   geometry.factor = args.factor;
-  geometry.resolve = MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache);
+  geometry.resolve =
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
   geometry.check = options;
   const std::vector<Finding> found = CheckModelGeometry(model, geometry);
   findings->insert(findings->end(), found.begin(), found.end());

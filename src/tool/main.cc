@@ -273,6 +273,7 @@ struct Settings {
   CheckOptions options;
   Severity fail_on = Severity::kError;
   std::vector<std::string> model_paths;
+  std::vector<std::string> package_paths;  // the configuration's, after --package-path
 };
 
 // The rule overrides and fail level given on the command line; they win over the configuration.
@@ -311,6 +312,7 @@ Settings SettingsFor(const CheckArgs& args, const CliOverrides& cli, const Confi
     massprops::ApplyConfig(*config, settings.options);
     if (config->fail_on) settings.fail_on = *config->fail_on;
     settings.model_paths = config->model_paths;
+    settings.package_paths = config->package_paths;
   }
   if (args.tolerance_given) settings.options.tolerance = args.tolerance;
   for (const auto& [rule, level] : cli.rules) settings.options.overrides[rule] = level;
@@ -410,10 +412,12 @@ FileResult CheckFile(const std::string& file, const Settings& settings) {
     result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
     result.models.push_back(model.name);
     CheckOptions check_options = settings.options;
-    massprops::cli::UseGeometryShapes(model, settings.model_paths, &check_options);
+    massprops::cli::UseGeometryShapes(model, settings.model_paths, &check_options,
+                                      settings.package_paths);
     std::vector<Finding> findings = massprops::CheckModel(model, check_options);
-    massprops::cli::AddGeometryFindings(model, settings.options, settings.model_paths, &findings);
-    massprops::cli::CountMeshLinks(model, settings.model_paths, &result);
+    massprops::cli::AddGeometryFindings(model, settings.options, settings.model_paths, &findings,
+                                        settings.package_paths);
+    massprops::cli::CountMeshLinks(model, settings.model_paths, &result, settings.package_paths);
     if (settings.target != massprops::Target::kGeneric) {
       const std::string text = massprops::cli::ReadTextForTarget(file);
       massprops::AddTargetFindings(model, settings.target, check_options,

@@ -149,8 +149,8 @@ void ReportFile(const std::string& file, const ReportArgs& args, const ReadOptio
                        e.element.empty() ? e.message : e.element + ": " + e.message});
   }
   // One mesh cache per run; relative mesh paths are relative to this file.
-  const MeshResolveOptions geometry =
-      MakeResolveOptions(args.package_paths, args.model_paths, file, mesh_cache);
+  const MeshResolveOptions geometry = MakeResolveOptions(
+      WithConfigPackagePaths(args.package_paths, file), args.model_paths, file, mesh_cache);
   options.geometry = args.geometry ? &geometry : nullptr;
   for (const Model& model : read.models) {
     ModelMassReport report;

@@ -314,6 +314,7 @@ void AddBodyJson(const BodyMassProperties& body, const Pose& X_WF, json* out) {
 struct Settings {
   CheckOptions options;
   std::vector<std::string> model_paths;
+  std::vector<std::string> package_paths;  // the configuration's (after --package-path)
 };
 
 // The check options of a file, as `massprops check` takes them: --config, else the nearest
@@ -329,6 +330,7 @@ Settings SettingsFor(const ViewArgs& args, const std::string& file) {
   if (config) {
     ApplyConfig(*config, settings.options);
     settings.model_paths = config->model_paths;
+    settings.package_paths = config->package_paths;
   }
   settings.model_paths.insert(settings.model_paths.begin(), args.model_paths.begin(),
                               args.model_paths.end());
@@ -357,8 +359,11 @@ std::vector<Repair> CheckAndPlan(const Model& model, const CheckOptions& options
 
 json ModelJson(const Model& model, const std::vector<Finding>& reader_findings,
                const Settings& settings, const ViewArgs& args, MeshTable* meshes) {
+  std::vector<std::string> package_paths = args.package_paths;
+  package_paths.insert(package_paths.end(), settings.package_paths.begin(),
+                       settings.package_paths.end());
   const MeshResolveOptions resolve =
-      MakeResolveOptions(args.package_paths, settings.model_paths, model.file, meshes->cache());
+      MakeResolveOptions(package_paths, settings.model_paths, model.file, meshes->cache());
   std::vector<Finding> findings = reader_findings;
   const std::vector<Repair> repairs = CheckAndPlan(model, settings.options, resolve, &findings);
   AttachRepairs(repairs, findings);

@@ -6,6 +6,7 @@
 /// tolerance = 1e-6             # relative validity tolerance, 0 <= t < 1
 /// target = "mujoco"            # generic (default) | mujoco | drake | gazebo (target_profile.h)
 /// model-paths = ["models"]     # folders searched for SDF model:// URIs (relative to the file)
+/// package-paths = ["../src"]  # folders searched first for package:// mesh URIs (likewise)
 /// [rules]
 /// units-suspect = "off"        # off | note | warning | error
 /// com-outside-geometry = "note"
@@ -38,6 +39,9 @@ struct Config {
   /// `model-paths`, each made absolute against the folder of the config file (when read from a
   /// file), else as written.
   std::vector<std::string> model_paths;
+  /// `package-paths`, made absolute the same way: searched for package:// mesh URIs after
+  /// --package-path and before the description's repository (mesh_loader.h).
+  std::vector<std::string> package_paths;
   /// `[rules]`: a severity, or nullopt for "off". Same meaning as CheckOptions::overrides.
   std::map<std::string, std::optional<Severity>> overrides;
 };
@@ -64,7 +68,8 @@ class ConfigError : public std::runtime_error {
 /// value of the wrong type or out of range.
 Config ParseConfig(std::string_view text, const std::string& source_name);
 
-/// Reads and parses the file at `path` (relative model-paths are resolved against its folder).
+/// Reads and parses the file at `path` (relative model-paths and package-paths are resolved
+/// against its folder).
 /// Throws ConfigError when it cannot be read or is not valid (see ParseConfig).
 Config LoadConfig(const std::string& path);
 

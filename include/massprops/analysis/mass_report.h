@@ -109,6 +109,7 @@ struct LinkGeometryComparison {
     std::string uri;   ///< As written in the model file.
     std::string path;  ///< As resolved.
     MeshDiagnostics diagnostics;
+    MeshFoundBy found_by = MeshFoundBy::kNone;  ///< How `path` was found (JSON "found_by").
   };
   std::vector<Mesh> meshes;
 };

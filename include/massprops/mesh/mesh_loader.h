@@ -22,6 +22,7 @@
 
 #include "massprops/core/rotational_inertia.h"
 #include "massprops/mesh/mesh_inertia.h"
+#include "massprops/mesh/repository_packages.h"
 #include "massprops/model/model.h"
 
 namespace massprops {
@@ -30,16 +31,23 @@ class MeshCache;
 
 /// Where mesh URIs are looked up, and how meshes are modelled.
 struct MeshResolveOptions {
-  /// `package://NAME/rest`: these folders first (e.g. from --package-path), then the folders of
-  /// ROS_PACKAGE_PATH, then DIR/share for each DIR of AMENT_PREFIX_PATH (when use_environment).
-  /// In each folder P the package is P/NAME, or P itself or a child folder of P whose
-  /// package.xml has <name>NAME</name>.
+  /// `package://NAME/rest` is looked up, in this order, in: these folders (from --package-path
+  /// or a configuration's package-paths; in each folder P the package is P/NAME, or P itself or
+  /// a child folder of P whose package.xml has <name>NAME</name>); the package named NAME in
+  /// the description's repository (RepositoryPackages, when search_repository); an ancestor
+  /// folder of the description named NAME without a package.xml naming another package
+  /// (FindAncestorNamed, when search_repository); then, when use_environment, the folders of
+  /// ROS_PACKAGE_PATH and DIR/share for each DIR of AMENT_PREFIX_PATH, as in the first step.
+  /// The first package that holds the file wins. `package:///rest` (no name) is the file `rest`
+  /// beside the description, as onshape-to-robot writes it.
   std::vector<std::string> package_paths;
   /// `model://NAME/rest`: these folders first, then SDF_PATH, GZ_SIM_RESOURCE_PATH,
   /// IGN_GAZEBO_RESOURCE_PATH and GAZEBO_MODEL_PATH (when use_environment); the model is P/NAME.
   std::vector<std::string> model_paths;
   /// Read the environment variables above.
   bool use_environment = true;
+  /// Look for packages in the description's repository and among its ancestor folders.
+  bool search_repository = true;
   /// The model file that references the meshes: relative paths (and `file://` relative paths)
   /// are relative to its folder (to the current directory when empty or "-"). A geometry whose
   /// location names another file (a model included by an SDF world) is resolved relative to
@@ -53,12 +61,40 @@ struct MeshResolveOptions {
   MeshCache* cache = nullptr;
 };
 
-/// The path of the file a mesh URI names, checked to exist as a regular file. Returns nullopt
-/// and sets *error (if not null) when the scheme is not supported (http://, ...), the package or
-/// model is not found on any search path (the message lists the paths searched), or the file is
-/// not there. Cost: a few file-system queries per search path (package.xml files are read).
+/// How a mesh URI was resolved (MeshResolveOptions says the order).
+enum class MeshFoundBy {
+  kNone,               ///< Not resolved.
+  kFlag,               ///< package_paths / model_paths (--package-path, --model-path, config).
+  kRepositoryPackage,  ///< A package.xml naming the package in the description's repository.
+  kAncestor,           ///< An ancestor folder of the description named as the package.
+  kEnvironment,        ///< ROS_PACKAGE_PATH, AMENT_PREFIX_PATH, SDF_PATH and the like.
+  kBesideFile,         ///< `package:///rest`: beside the description file.
+  kRelative,           ///< A relative path (or relative file://): from the description's folder.
+  kAbsolute,           ///< An absolute path or file:///abs/path.
+};
+
+/// "none", "flag", "repository-package", "ancestor", "environment", "beside-file", "relative",
+/// "absolute": the names JSON uses.
+const char* ToString(MeshFoundBy found_by);
+
+/// The path of the file a mesh URI names, checked to exist as a regular file; *found_by (if not
+/// null) says how it was found. Returns nullopt (found_by kNone) and sets *error (if not null)
+/// when the scheme is not supported (http://, ...), the package or model is not found where it
+/// is looked for (the message lists where), or the file is not there. Packages in the
+/// description's repository are crawled through options.cache's RepositoryPackages (once per
+/// run), or a fresh one when there is no cache. Cost: a few file-system queries per search
+/// path (package.xml files are read), plus the repository crawl when a package is not found
+/// by the search paths (RepositoryPackages::Find).
 std::optional<std::string> ResolveMeshUri(const std::string& uri, const MeshResolveOptions& options,
-                                          std::string* error);
+                                          std::string* error, MeshFoundBy* found_by = nullptr);
+
+/// ResolveMeshUri for a mesh geometry: through options.cache when there is one, and from the
+/// file that holds the geometry (geometry.location.file, e.g. a model an SDF world includes)
+/// rather than options.model_file when it is known.
+std::optional<std::string> ResolveGeometryMeshUri(const Geometry& geometry,
+                                                  const MeshResolveOptions& options,
+                                                  std::string* error,
+                                                  MeshFoundBy* found_by = nullptr);
 
 /// Loads a mesh file (format chosen by assimp from the content and extension: STL ascii or
 /// binary, OBJ, DAE, ...) as one triangle mesh in the file's length unit converted to meters
@@ -103,11 +139,14 @@ class MeshCache {
   /// sets *error on failure.
   std::optional<Eigen::AlignedBox3d> Bounds(const std::string& path, std::string* error);
 
-  /// ResolveMeshUri(uri, options, error), remembered per (uri, the folder relative URIs start
-  /// from, the search paths, use_environment): a model references the same mesh from many links
-  /// and a package lookup lists folders and reads package.xml files.
+  /// ResolveMeshUri(uri, options, error, found_by), remembered per (uri, the description's
+  /// folder, the search paths, use_environment, search_repository): a model references the same
+  /// mesh from many links and a package lookup lists folders and reads package.xml files.
   std::optional<std::string> Resolve(const std::string& uri, const MeshResolveOptions& options,
-                                     std::string* error);
+                                     std::string* error, MeshFoundBy* found_by = nullptr);
+
+  /// The packages crawled in the descriptions' repositories this run.
+  RepositoryPackages& packages() { return packages_; }
 
   /// How many times a file was actually read (for tests and statistics).
   int files_loaded() const;
@@ -131,7 +170,13 @@ class MeshCache {
     std::string error;
   };
   std::map<std::string, BoundsEntry> bounds_;
-  std::map<std::string, std::pair<std::optional<std::string>, std::string>> resolved_;
+  struct Resolved {
+    std::optional<std::string> path;
+    std::string error;
+    MeshFoundBy found_by = MeshFoundBy::kNone;
+  };
+  std::map<std::string, Resolved> resolved_;
+  RepositoryPackages packages_;
   int files_bounded_ = 0;
 };
 
@@ -148,8 +193,10 @@ struct GeometryMassProperties {
   /// Axis-aligned bounding box in B: of the posed shape for primitives (CalcPrimitiveBounds), of
   /// the scaled and posed vertices for meshes.
   Eigen::AlignedBox3d box_B;
-  /// Meshes only: the resolved path and what the mesh looked like (model used, defects).
+  /// Meshes only: the resolved path, how it was found, and what the mesh looked like (model
+  /// used, defects).
   std::string mesh_path;
+  MeshFoundBy mesh_found_by = MeshFoundBy::kNone;
   std::optional<MeshDiagnostics> mesh_diagnostics;
 };
 

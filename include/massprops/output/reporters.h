@@ -11,9 +11,17 @@
 #include <vector>
 
 #include "massprops/analysis/checks.h"
+#include "massprops/mesh/mesh_loader.h"
 #include "massprops/model/model.h"
 
 namespace massprops {
+
+/// How one mesh URI of a checked file resolved.
+struct MeshUriResolution {
+  std::string uri;   ///< As written.
+  std::string path;  ///< The file found; empty when it did not resolve.
+  MeshFoundBy found_by = MeshFoundBy::kNone;
+};
 
 /// Everything `check` learned about one input file.
 struct FileResult {
@@ -29,6 +37,9 @@ struct FileResult {
   /// unknown: said once in the summary, not per link), and the first such mesh's URI.
   int mesh_links_unresolved = 0;
   std::string first_unresolved_mesh;
+  /// Each distinct mesh URI of the file's links (per file holding it), in file order, with how
+  /// it resolved, when `check` read meshes (not with --no-geometry).
+  std::vector<MeshUriResolution> mesh_uris;
 };
 
 /// Counts over a list of results. `errors`, `warnings` and `notes` count findings by severity;
@@ -42,6 +53,9 @@ struct ReportSummary {
   int mesh_links = 0;                 ///< Sum of FileResult::mesh_links.
   int mesh_links_unresolved = 0;      ///< Sum of FileResult::mesh_links_unresolved.
   std::string first_unresolved_mesh;  ///< The first file's first_unresolved_mesh that is set.
+  /// FileResult::mesh_uris counted by found_by (index: the MeshFoundBy value; kNone counts those
+  /// that did not resolve).
+  std::vector<int> mesh_resolution = std::vector<int>(8, 0);
 };
 
 enum class ReportFormat { kText, kJson, kSarif, kGithub };
@@ -88,7 +102,11 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
 /// "link", "file", "line", "column", "message", "values": {name: number}}], "errors": [{"file",
 /// "line", "column", "element", "message"}]}], "summary": {"files", "errors", "warnings", "notes",
 /// "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
-/// "first_unresolved_mesh" (a string, or null when none)}}. Non-finite values are written as null.
+/// "first_unresolved_mesh" (a string, or null when none), "mesh_resolution"}}. Each file also
+/// has "mesh_links", "mesh_links_unresolved", "mesh_resolution" ({"flag", "repository-package",
+/// "ancestor", "environment", "beside-file", "relative", "absolute", "unresolved"}: its distinct
+/// mesh URIs counted by how they resolved; the summary's sums them) and "mesh_uris" ([{"uri",
+/// "found_by", "path"}], path null when unresolved). Non-finite values are written as null.
 /// Indented by two spaces.
 std::string RenderJson(const std::vector<FileResult>& results, const ReportOptions& options = {});
 
@@ -97,7 +115,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
 /// each finding and ReadError is a result with ruleId, ruleIndex, level, message and a physical
 /// location (artifact URI relative to the working directory when the path is relative, a
 /// file:// URI when absolute; region only when the line is known). When meshes were read, the
-/// run's "properties" hold "mesh_links", "mesh_links_unresolved" and "first_unresolved_mesh".
+/// run's "properties" hold "mesh_links", "mesh_links_unresolved", "first_unresolved_mesh" and
+/// "mesh_resolution" (as in JSON's summary).
 std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options = {});
 
 /// One GitHub Actions workflow command per finding and ReadError:
