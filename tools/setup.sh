@@ -8,6 +8,8 @@ build_dir=${BUILD_DIR:-$here/build}
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
           nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev
           pybind11-dev python3-dev python3-numpy python3-pytest)
+# The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
+packages+=(libyaml-cpp-dev)
 # The MuJoCo differential test (tests/target_profile_mujoco_test.cc): libmujoco 2.2.2.
 packages+=(libmujoco-dev)
 # The HTML view (`massprops view`): three.js, embedded at build time; its browser test: headless

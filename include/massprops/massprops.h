@@ -16,6 +16,7 @@
 
 // model
 #include "massprops/model/model.h"
+#include "massprops/model/source_place.h"
 
 // mesh
 #include "massprops/mesh/mesh_inertia.h"
@@ -26,6 +27,7 @@
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/urdf_reader.h"
+#include "massprops/io/xacro_trace.h"
 
 // analysis
 #include "massprops/analysis/checks.h"

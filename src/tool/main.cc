@@ -37,6 +37,7 @@
 #include "option_filter.h"
 #include "safe_write.h"
 #include "target_cli.h"
+#include "xacro_cli.h"
 
 namespace {
 
@@ -629,6 +630,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddReportCommands(app, &run);
     massprops::cli::AddFixCommands(app, &run);
     massprops::cli::AddViewCommands(app, &run);
+    massprops::cli::AddTraceCommand(app, &run);
   }
 
   try {
