@@ -220,7 +220,7 @@ int EnclosingMacro(const SourceIndex& index, int node) {
 
 SourceIndex IndexSources(const std::vector<std::string>& roots,
                          const std::map<std::string, std::string>& args,
-                         const std::vector<std::string>& exclude) {
+                         const std::vector<std::string>& exclude, std::string_view generated) {
   SourceIndex index;
   auto excluded = [&](const fs::path& path) {
     for (const std::string& e : exclude) {
@@ -268,6 +268,7 @@ SourceIndex IndexSources(const std::vector<std::string>& roots,
       index.errors.push_back(MakeReadError(shown, 0, "", "cannot read the file"));
       continue;
     }
+    if (!generated.empty() && file.text == generated) continue;
     const int id = static_cast<int>(index.files.size());
     index.files.push_back(std::move(file));
     const std::string ext = Lower(real.extension().string());

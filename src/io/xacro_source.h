@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "massprops/model/model.h"
@@ -59,10 +60,12 @@ struct SourceIndex {
 /// Reads every .xacro, .urdf, .gazebo, .yaml and .yml file below each root (hidden folders
 /// skipped; at most 20 000 files of at most 16 MB each). `args` overrides xacro:arg defaults.
 /// Never throws: unreadable files become errors.
-/// Files in `exclude` (the same file by another path too) are not read.
+/// Files in `exclude` (the same file by another path too), and files whose bytes are exactly
+/// `generated` (the expansion itself, saved below a root), are not read.
 SourceIndex IndexSources(const std::vector<std::string>& roots,
                          const std::map<std::string, std::string>& args,
-                         const std::vector<std::string>& exclude = {});
+                         const std::vector<std::string>& exclude = {},
+                         std::string_view generated = {});
 
 /// The macro a call element calls ("xacro:husarion.wheel" → "wheel"); empty when the element is
 /// a xacro directive (macro, property, arg, include, if, unless, insert_block, ...) or not xacro.

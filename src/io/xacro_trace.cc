@@ -541,7 +541,7 @@ XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_nam
     return trace;
   }
   std::vector<ExpandedNumber> numbers = ReadExpanded(doc);
-  const SourceIndex index = xacro::IndexSources(options.source_roots, options.args, options.exclude_files);
+  const SourceIndex index = xacro::IndexSources(options.source_roots, options.args, options.exclude_files, expanded);
   trace.errors = index.errors;
   trace.source_files = static_cast<int>(index.files.size());
   const Tracer tracer(index);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -189,6 +190,60 @@ std::optional<std::string> ReExpand(const XacroOptions& options, const std::stri
   argv.push_back(top);
   argv.insert(argv.end(), options.xacro_args.begin(), options.xacro_args.end());
   return RunCapture(argv, error);
+}
+
+std::optional<XacroRun> StartXacroRun(const XacroOptions& options, const std::string& top,
+                                      std::string* error) {
+  std::optional<Expansion> expansion = MakeExpansion(options, top, error);
+  if (!expansion) return std::nullopt;
+  XacroRun run;
+  run.expansion = std::move(*expansion);
+  if (!options.expanded.empty()) {
+    run.checked_file = options.expanded;
+    return run;
+  }
+  std::string pattern = (fs::temp_directory_path() / "massprops-expansion-XXXXXX").string();
+  const int fd = mkstemp(pattern.data());
+  if (fd < 0) {
+    *error = std::string("cannot write the expansion to a temporary file: ") + std::strerror(errno);
+    return std::nullopt;
+  }
+  const std::string& text = run.expansion.text;
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    written += static_cast<std::size_t>(n);
+  }
+  close(fd);
+  run.checked_file = pattern;
+  run.temporary = true;
+  if (written != text.size()) {
+    std::remove(pattern.c_str());
+    *error = "cannot write the expansion to a temporary file";
+    return std::nullopt;
+  }
+  return run;
+}
+
+void FinishXacroRun(XacroRun* run, FileResult* result) {
+  const std::string& name = run->expansion.name;
+  if (run->temporary) {
+    std::remove(run->checked_file.c_str());
+    result->path = name;
+    for (Finding& f : result->findings) {
+      if (f.location.file.empty() || f.location.file == run->checked_file) f.location.file = name;
+    }
+    for (ReadError& e : result->errors) {
+      if (e.location.file.empty() || e.location.file == run->checked_file) e.location.file = name;
+    }
+  }
+  const XacroTrace trace = TraceXacro(run->expansion.text, name, run->expansion.trace);
+  for (const ReadError& e : trace.errors) {
+    std::cerr << "massprops: warning: " << e.ToString() << " (the trace goes on without it)\n";
+  }
+  AttachSources(trace, name, result);
 }
 
 void AttachSources(const XacroTrace& trace, const std::string& generated_name, FileResult* result) {

@@ -43,6 +43,23 @@ std::optional<Expansion> MakeExpansion(const XacroOptions& options, const std::s
 std::optional<std::string> ReExpand(const XacroOptions& options, const std::string& top,
                                     std::string* error);
 
+/// A `check` of a xacro package: the file that is checked (--expanded, or a temporary file that
+/// holds the expansion, removed by FinishXacroRun) and the expansion.
+struct XacroRun {
+  Expansion expansion;
+  std::string checked_file;
+  bool temporary = false;
+};
+
+/// Makes the expansion (MakeExpansion) and the file to check. nullopt with *error on failure.
+std::optional<XacroRun> StartXacroRun(const XacroOptions& options, const std::string& top,
+                                      std::string* error);
+
+/// After the check: names the generated text as Expansion::name in `result`, traces it, attaches
+/// the sources to the findings (AttachSources), says on standard error which source files could
+/// not be read, and removes the temporary file.
+void FinishXacroRun(XacroRun* run, FileResult* result);
+
 /// Gives each finding of `result` the source place of the numbers it is about (see
 /// FindingSource): the numbers of its link at the finding's line (the <inertia>, <mass> or
 /// <origin> element), or the link's inertia, then mass, when the line is the <inertial>.

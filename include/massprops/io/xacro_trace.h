@@ -43,7 +43,8 @@ struct XacroTrace {
 };
 
 /// Traces every inertial number of `expanded` (the text of an expanded URDF; `expanded_name`
-/// names it in the result). Never throws; an expanded text that is not XML gives no numbers and
+/// names it in the result; a source file with exactly its bytes is not read as a source). Never
+/// throws; an expanded text that is not XML gives no numbers and
 /// one error.
 XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_name,
                       const XacroTraceOptions& options);
