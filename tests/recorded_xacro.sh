@@ -5,8 +5,8 @@
 # as the nearest folder upward that holds an expanded.urdf. Further arguments (NAME:=VALUE) are
 # ignored: the recorded expansion was made with the arguments of the package's SOURCE.md.
 set -eu
-dir=$(dirname "$1")
-while [ "$dir" != "/" ] && [ "$dir" != "." ]; do
+dir=$(cd "$(dirname "$1")" && pwd)
+while [ "$dir" != "/" ]; do
   if [ -f "$dir/expanded.urdf" ]; then
     exec cat "$dir/expanded.urdf"
   fi
