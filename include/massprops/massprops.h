@@ -32,6 +32,7 @@
 // analysis
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
+#include "massprops/analysis/finding_sources.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/mass_report.h"

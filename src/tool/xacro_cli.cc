@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "massprops/analysis/finding_sources.h"
 #include "safe_write.h"
 
 namespace massprops::cli {
@@ -247,29 +248,7 @@ void FinishXacroRun(XacroRun* run, FileResult* result) {
 }
 
 void AttachSources(const XacroTrace& trace, const std::string& generated_name, FileResult* result) {
-  for (Finding& finding : result->findings) {
-    if (finding.link.empty()) continue;
-    const TracedNumber* chosen = nullptr;
-    // The numbers of the finding's link on its line first; then inertia, mass, origin.
-    for (const char* element : {"", "inertia", "mass", "origin"}) {
-      for (const TracedNumber& n : trace.numbers) {
-        if (n.link != finding.link || n.places.empty()) continue;
-        const bool on_line = *element == '\0' && n.expanded_line == finding.location.line;
-        if (on_line || (*element != '\0' && n.element == element)) {
-          chosen = &n;
-          break;
-        }
-      }
-      if (chosen) break;
-    }
-    if (!chosen) continue;
-    FindingSource source;
-    source.number = NumberName(*chosen);
-    source.places = chosen->places;
-    source.generated = finding.location;
-    source.generated.file = generated_name;
-    finding.source = std::move(source);
-  }
+  AttachXacroSources(trace, generated_name, &result->findings);
 }
 
 void AddTraceCommand(CLI::App& app, std::function<int()>* run) {
