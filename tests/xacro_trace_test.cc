@@ -188,6 +188,31 @@ TEST_F(SmallPackage, TracesLiteralsParametersComputedAndYaml) {
   EXPECT_TRUE(body.places[0].editable);
 }
 
+TEST(XacroTraceTest, PropertiesThatDoubleAtEachStepEndInTimeUntraced) {
+  // p_k = p_(k-1) + p_(k-1): evaluating p40 naively takes 2^40 look-ups. The trace gives up after
+  // its budget and leaves the mass untraced (it would be 2^40 = 1099511627776).
+  const fs::path dir =
+      fs::temp_directory_path() / ("massprops_xacro_doubling_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string xacro = "<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+                      "<xacro:property name=\"p0\" value=\"1\"/>\n";
+  for (int k = 1; k <= 40; ++k) {
+    xacro += "<xacro:property name=\"p" + std::to_string(k) + "\" value=\"${p" +
+             std::to_string(k - 1) + "+p" + std::to_string(k - 1) + "}\"/>\n";
+  }
+  xacro += "<link name=\"a\"><inertial><mass value=\"${p40}\"/></inertial></link></robot>\n";
+  std::ofstream(dir / "r.urdf.xacro") << xacro;
+  XacroTraceOptions options;
+  options.source_roots = {dir.string()};
+  const XacroTrace trace = TraceXacro(
+      "<robot name=\"r\"><link name=\"a\"><inertial><mass value=\"1099511627776.0\"/>"
+      "</inertial></link></robot>",
+      "x.urdf", options);
+  fs::remove_all(dir);
+  ASSERT_EQ(trace.numbers.size(), 1u);
+  EXPECT_TRUE(trace.numbers[0].places.empty());
+}
+
 TEST(XacroTraceTest, AnExpansionThatIsNotXmlGivesOneErrorAndNoNumbers) {
   const XacroTrace trace = TraceXacro("<robot", "bad.urdf", {});
   EXPECT_TRUE(trace.numbers.empty());

@@ -34,6 +34,7 @@ using xacro::XNode;
 constexpr std::size_t kMaxChains = 512;  // per site: macro calls multiply
 constexpr int kMaxChainDepth = 12;
 constexpr int kMaxLookupDepth = 40;
+constexpr int kMaxLookups = 20000;  // per evaluation of one attribute
 
 // One level of a chain of calls: the macro a node is in, and the call that expanded it.
 struct Level {
@@ -171,13 +172,17 @@ class Tracer {
 
   std::optional<Value> Evaluate(const std::string& text, const Chain& chain, std::size_t level,
                                 int depth = 0) const {
-    if (depth > kMaxLookupDepth) return std::nullopt;
+    // A budget of name look-ups per evaluation: properties that each read another twice would
+    // otherwise take 2^depth steps.
+    if (depth == 0) lookups_left_ = kMaxLookups;
+    if (depth > kMaxLookupDepth || lookups_left_ <= 0) return std::nullopt;
     xacro::NameLookup lookup = [&](const std::string& name) -> std::optional<Value> {
       if (name.rfind("$(arg ", 0) == 0) {
         auto arg = index_.args.find(name.substr(6, name.size() - 7));
         if (arg == index_.args.end()) return std::nullopt;
         return EvaluateText(arg->second, [](const std::string&) { return std::nullopt; });
       }
+      if (--lookups_left_ < 0) return std::nullopt;
       std::optional<Binding> b = Bind(name, chain, level);
       if (!b) return std::nullopt;
       std::optional<Value> v = Evaluate(b->text, chain, b->level, depth + 1);
@@ -321,6 +326,7 @@ class Tracer {
   }
 
   const SourceIndex& index_;
+  mutable int lookups_left_ = 0;
   std::map<std::string, std::vector<int>> global_properties_;
   std::map<std::pair<int, std::string>, std::vector<int>> macro_properties_;
 };
