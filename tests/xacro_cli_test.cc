@@ -196,6 +196,43 @@ TEST_F(XacroFixTest, FixEditsOnlyTheRepairedLiteralsInTheSource) {
   // the sources. Its numbers then no longer trace, and fix says so instead of editing.)
 }
 
+// franka_fr3's fingers: products-sign-suspect on both (their collision boxes imply iyz > 0, the
+// YAML writes yz: -0.00000106). Both fingers read the same YAML lines (rightfinger: *finger, an
+// alias), and both are repaired to the same negated value: the one YAML value is edited (line 25
+// of end_effectors/franka_hand/inertials.yaml) and nothing else in the package.
+TEST_F(XacroCliTest, FixEditsAYamlValueThatOnlyTheRepairedLinksRead) {
+  const fs::path copy =
+      fs::temp_directory_path() / ("massprops_xacro_fix_yaml_" + std::to_string(getpid()));
+  fs::remove_all(copy);
+  fs::copy(kXacroDir / "franka_fr3", copy, fs::copy_options::recursive);
+  for (const auto& entry : fs::recursive_directory_iterator(copy)) {
+    fs::permissions(entry.path(), fs::perms::owner_write, fs::perm_options::add);
+  }
+  const RunResult r = RunTool("fix src/robots/fr3/fr3.urdf.xacro --source-root . --apply "
+                              "products-sign-suspect --in-place --xacro-command " + Quote(kRecorded),
+                              copy.string());
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const fs::path yaml = "src/end_effectors/franka_hand/inertials.yaml";
+  for (const auto& entry : fs::recursive_directory_iterator(kXacroDir / "franka_fr3")) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), kXacroDir / "franka_fr3");
+    if (relative == yaml) continue;
+    EXPECT_EQ(ReadAll(entry.path()), ReadAll(copy / relative)) << relative;
+  }
+  const std::vector<std::string> before = Lines(ReadAll(kXacroDir / "franka_fr3" / yaml));
+  const std::vector<std::string> after = Lines(ReadAll(copy / yaml));
+  ASSERT_EQ(before.size(), after.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    if (i + 1 == 25) {
+      EXPECT_EQ(before[i], "    yz: -0.00000106");
+      EXPECT_EQ(after[i], "    yz: 1.06e-06");  // negated, written as FormatShortest writes it
+    } else {
+      EXPECT_EQ(before[i], after[i]) << "line " << i + 1;
+    }
+  }
+  fs::remove_all(copy);
+}
+
 // A package written here: legs share the literal ixx="0.01" and take izz as a macro argument; the
 // body's inertia is its own literal, and the arm's izz is computed.
 TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {

@@ -173,7 +173,8 @@ void WalkYaml(const YAML::Node& node, std::vector<std::string>* path, int depth,
     scalar.text = node.Scalar();
     scalar.length = scalar.text.size();
     const std::string& text = index->files[static_cast<std::size_t>(file)].text;
-    scalar.editable = text.compare(offset, scalar.length, scalar.text) == 0;
+    scalar.editable = offset + scalar.length <= text.size() &&
+                      text.compare(offset, scalar.length, scalar.text) == 0;
     scalar.paths.push_back(*path);
     (*by_offset)[offset] = index->yaml.size();
     index->yaml.push_back(std::move(scalar));

@@ -385,7 +385,8 @@ SourcePlace PlaceAt(const SourceIndex& index, const XNode& node, const XAttr& at
   place.offset = attr.offset;
   place.length = attr.length;
   const std::string& text = index.files[static_cast<std::size_t>(node.file)].text;
-  place.editable = attr.length > 0 && text.compare(attr.offset, attr.length, attr.value) == 0;
+  place.editable = attr.length > 0 && attr.offset + attr.length <= text.size() &&
+                   text.compare(attr.offset, attr.length, attr.value) == 0;
   return place;
 }
 
@@ -581,12 +582,19 @@ XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_nam
     }
   }
 
+  // Instances by (element, attribute), so that each number looks only at its own kind.
+  std::map<std::pair<std::string, std::string>, std::vector<const Instance*>> by_kind;
+  for (const Instance& instance : instances) {
+    by_kind[{index.nodes[static_cast<std::size_t>(instance.site)].tag, instance.attr->name}]
+        .push_back(&instance);
+  }
+  const std::vector<const Instance*> no_instances;
   for (ExpandedNumber& expanded_number : numbers) {
     TracedNumber& number = expanded_number.number;
     std::vector<Candidate> candidates;
-    for (const Instance& instance : instances) {
-      const XNode& node = index.nodes[static_cast<std::size_t>(instance.site)];
-      if (node.tag != number.element || instance.attr->name != number.attribute) continue;
+    auto kind = by_kind.find({number.element, number.attribute});
+    for (const Instance* instance_ptr : kind == by_kind.end() ? no_instances : kind->second) {
+      const Instance& instance = *instance_ptr;
       if (instance.link && *instance.link != number.link) continue;
       if (!SameNumbers(instance.values, expanded_number.values)) continue;
       Candidate candidate;

@@ -185,7 +185,7 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
     std::string after = text;
     std::sort(list.begin(), list.end(), [](const Edit& a, const Edit& b) { return a.offset > b.offset; });
     for (const Edit& e : list) {
-      if (after.compare(e.offset, e.length, e.old_text) != 0) {
+      if (e.offset + e.length > after.size() || after.compare(e.offset, e.length, e.old_text) != 0) {
         std::cerr << "massprops: error: " << file << ":" << e.line << " no longer holds '"
                   << e.old_text << "'; nothing written\n";
         return 2;
