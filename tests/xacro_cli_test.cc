@@ -234,7 +234,8 @@ TEST_F(XacroCliTest, FixEditsAYamlValueThatOnlyTheRepairedLinksRead) {
 }
 
 // A package written here: legs share the literal ixx="0.01" and take izz as a macro argument; the
-// body's inertia is its own literal, and the arm's izz is computed.
+// body's inertia is its own literal; the arm's ixx and iyy are its own literals but its izz is
+// computed (m·5), so no part of its repair is written.
 TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
   const fs::path dir =
       fs::temp_directory_path() / ("massprops_xacro_refusal_" + std::to_string(getpid()));
@@ -257,6 +258,15 @@ TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
       <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="5"/>
     </inertial>
   </link>
+  <xacro:macro name="arm" params="m">
+    <link name="arm">
+      <inertial>
+        <mass value="${m}"/>
+        <inertia ixx="0.02" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="${m*5}"/>
+      </inertial>
+    </link>
+  </xacro:macro>
+  <xacro:arm m="1"/>
 </robot>
 )";
   std::ofstream(dir / "robot.urdf.xacro") << source;
@@ -281,6 +291,12 @@ TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
       <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="5"/>
     </inertial>
   </link>
+  <link name="arm">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="0.02" ixy="0" ixz="0" iyy="0.03" iyz="0" izz="5"/>
+    </inertial>
+  </link>
 </robot>
 )";
   // right_leg: 0.01 + 0.01 < 0.5 and body: 1 + 1 < 5 break the triangle inequality.
@@ -294,6 +310,12 @@ TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
   EXPECT_TRUE(Contains(r.out, "robot.urdf.xacro:12: link 'right_leg': change inertia izz to"))
       << r.out;
   EXPECT_TRUE(Contains(r.out, "is a macro argument or property (0.5)")) << r.out;
+  // arm: izz = m·5 = 5 at the call on line 27 (m = 1), and 0.02 + 0.03 < 5.
+  EXPECT_TRUE(Contains(r.out, "robot.urdf.xacro:27: link 'arm': change inertia izz to")) << r.out;
+  EXPECT_TRUE(Contains(r.out, "the value is computed (from m=1), not written: change its inputs"))
+      << r.out;
+  EXPECT_TRUE(Contains(r.out, "robot.urdf.xacro:23: link 'arm': change inertia ixx to")) << r.out;
+  EXPECT_TRUE(Contains(r.out, "a part of a repair is not written")) << r.out;
   // The body's literals are its own: edited in place (line 16), nothing else in the file.
   const std::vector<std::string> before = Lines(source);
   const std::vector<std::string> after = Lines(ReadAll(dir / "robot.urdf.xacro"));

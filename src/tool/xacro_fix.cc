@@ -104,6 +104,9 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
                    "it by hand\n";
       continue;
     }
+    // A repair is written whole or not at all: a part of it could leave the link worse.
+    const int refused_before = by_hand;
+    std::vector<std::pair<Edit, const FieldChange*>> planned;
     for (const FieldChange& c : r.changes) {
       const TracedNumber* n = FindNumber(trace, r.link, c.element, c.attribute);
       const std::string generated =
@@ -164,6 +167,15 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
       edit.how = place.how;
       edit.link = r.link;
       edit.number = NumberName(*n);
+      planned.emplace_back(edit, &c);
+    }
+    for (const auto& [edit, change] : planned) {
+      if (by_hand > refused_before) {
+        refuse(r, *change, edit.file + ":" + std::to_string(edit.line),
+               "the other numbers of this repair cannot be written, and a part of a repair is "
+               "not written");
+        continue;
+      }
       const bool duplicate = std::any_of(edits.begin(), edits.end(), [&](const Edit& e) {
         return e.file == edit.file && e.offset == edit.offset;
       });
