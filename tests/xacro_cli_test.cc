@@ -44,13 +44,14 @@ std::string ReadAll(const fs::path& path) {
 RunResult RunTool(const std::string& args, const std::string& dir, const std::string& env = "") {
   const std::string err_path =
       ::testing::TempDir() + "massprops_xacro_cli_stderr_" + std::to_string(getpid()) + ".txt";
-  const std::string command = "cd " + Quote(dir) + " && " + env + " " + Quote(kTool) + " " +
-                              args + " 2> " + Quote(err_path);
+  const std::string command = "cd " + Quote(dir) + " && " + env + " " + Quote(kTool) + " " + args +
+                              " 2> " + Quote(err_path);
   RunResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
   char buffer[4096];
-  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) result.out.append(buffer, n);
+  for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    result.out.append(buffer, n);
   const int status = pclose(pipe);
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   result.err = ReadAll(err_path);
@@ -74,22 +75,26 @@ class XacroCliTest : public ::testing::Test {
 // the products exceed the moments, so no mass distribution has them (inertia-not-physical); the
 // expanded lines are 445 and 474 (expanded.urdf).
 TEST_F(XacroCliTest, CheckThroughTheExpanderPointsAtTheSourceLineFirst) {
-  const RunResult r = RunTool("check pmb2/src/robots/pmb2.urdf.xacro --source-root pmb2 "
-                          "--no-geometry --xacro-command " + Quote(kRecorded),
-                          kXacroDir.string());
+  const RunResult r = RunTool(
+      "check pmb2/src/robots/pmb2.urdf.xacro --source-root pmb2 "
+      "--no-geometry --xacro-command " +
+          Quote(kRecorded),
+      kXacroDir.string());
   EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_TRUE(Contains(r.out, "pmb2/src/urdf/objects/antenna.urdf.xacro:26: error: link "
-                              "'base_antenna_left_link'"))
+  EXPECT_TRUE(Contains(r.out,
+                       "pmb2/src/urdf/objects/antenna.urdf.xacro:26: error: link "
+                       "'base_antenna_left_link'"))
       << r.out;
-  EXPECT_TRUE(Contains(r.out, "(inertia ixx: literal; generated <expansion of "
-                              "pmb2/src/robots/pmb2.urdf.xacro>:445)"))
+  EXPECT_TRUE(Contains(r.out,
+                       "(inertia ixx: literal; generated <expansion of "
+                       "pmb2/src/robots/pmb2.urdf.xacro>:445)"))
       << r.out;
   EXPECT_TRUE(Contains(r.out, "antenna.urdf.xacro:26: error: link 'base_antenna_right_link'"));
 }
 
 TEST_F(XacroCliTest, WithoutAnExpanderCheckSaysHowToGiveTheExpansion) {
-  const RunResult r = RunTool("check pmb2/src/robots/pmb2.urdf.xacro", kXacroDir.string(),
-                          "PATH=/nonexistent");
+  const RunResult r =
+      RunTool("check pmb2/src/robots/pmb2.urdf.xacro", kXacroDir.string(), "PATH=/nonexistent");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Contains(r.err, "no xacro program found on PATH")) << r.err;
   EXPECT_TRUE(Contains(r.err, "--expanded robot.urdf --source-root PKG_DIR")) << r.err;
@@ -155,9 +160,11 @@ std::vector<std::string> Lines(const std::string& text) {
 }
 
 TEST_F(XacroFixTest, FixEditsOnlyTheRepairedLiteralsInTheSource) {
-  const RunResult r = RunTool("fix src/robots/pmb2.urdf.xacro --source-root . --no-geometry "
-                          "--in-place --xacro-command " + Quote(kRecorded),
-                          copy_.string());
+  const RunResult r = RunTool(
+      "fix src/robots/pmb2.urdf.xacro --source-root . --no-geometry "
+      "--in-place --xacro-command " +
+          Quote(kRecorded),
+      copy_.string());
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   // Only antenna.urdf.xacro changed, and in it only lines 26-28 (the six inertia values).
   for (const auto& entry : fs::recursive_directory_iterator(kXacroDir / "pmb2")) {
@@ -168,7 +175,8 @@ TEST_F(XacroFixTest, FixEditsOnlyTheRepairedLiteralsInTheSource) {
   }
   const std::vector<std::string> before =
       Lines(ReadAll(kXacroDir / "pmb2/src/urdf/objects/antenna.urdf.xacro"));
-  const std::vector<std::string> after = Lines(ReadAll(copy_ / "src/urdf/objects/antenna.urdf.xacro"));
+  const std::vector<std::string> after =
+      Lines(ReadAll(copy_ / "src/urdf/objects/antenna.urdf.xacro"));
   ASSERT_EQ(before.size(), after.size());
   for (std::size_t i = 0; i < before.size(); ++i) {
     if (i + 1 >= 26 && i + 1 <= 28) {
@@ -179,7 +187,8 @@ TEST_F(XacroFixTest, FixEditsOnlyTheRepairedLiteralsInTheSource) {
   }
   // The values written are those `fix` writes into the expanded URDF itself (the tested URDF
   // route): a second, independent path to the same repair.
-  const RunResult urdf = RunTool("fix expanded.urdf -o - --no-geometry", (kXacroDir / "pmb2").string());
+  const RunResult urdf =
+      RunTool("fix expanded.urdf -o - --no-geometry", (kXacroDir / "pmb2").string());
   const std::vector<std::string> fixed = Lines(urdf.out);
   ASSERT_GT(fixed.size(), 446u);
   // expanded.urdf line 445: <inertia ixx=".." ixy=".." ixz=".." iyy=".." iyz=".." izz=".."/>
@@ -208,9 +217,11 @@ TEST_F(XacroCliTest, FixEditsAYamlValueThatOnlyTheRepairedLinksRead) {
   for (const auto& entry : fs::recursive_directory_iterator(copy)) {
     fs::permissions(entry.path(), fs::perms::owner_write, fs::perm_options::add);
   }
-  const RunResult r = RunTool("fix src/robots/fr3/fr3.urdf.xacro --source-root . --apply "
-                              "products-sign-suspect --in-place --xacro-command " + Quote(kRecorded),
-                              copy.string());
+  const RunResult r = RunTool(
+      "fix src/robots/fr3/fr3.urdf.xacro --source-root . --apply "
+      "products-sign-suspect --in-place --xacro-command " +
+          Quote(kRecorded),
+      copy.string());
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   const fs::path yaml = "src/end_effectors/franka_hand/inertials.yaml";
   for (const auto& entry : fs::recursive_directory_iterator(kXacroDir / "franka_fr3")) {
@@ -300,8 +311,8 @@ TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
 </robot>
 )";
   // right_leg: 0.01 + 0.01 < 0.5 and body: 1 + 1 < 5 break the triangle inequality.
-  const RunResult r = RunTool("fix --expanded robot.urdf --source-root . --no-geometry --in-place",
-                          dir.string());
+  const RunResult r =
+      RunTool("fix --expanded robot.urdf --source-root . --no-geometry --in-place", dir.string());
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;  // repairs left to do by hand
   EXPECT_TRUE(Contains(r.out, "robot.urdf.xacro:7: link 'right_leg': change inertia ixx to"))
       << r.out;
@@ -335,8 +346,9 @@ TEST_F(XacroCliTest, TraceSummaryCountsEveryInertialNumber) {
   // pmb2: 21 links with <inertial> (README.md), each with mass, origin xyz and rpy, six inertia
   // entries except where an attribute is absent: the expanded text has 188 such numbers
   // (grep -c of the attributes in expanded.urdf's inertials, see docs/xacro.md).
-  const RunResult r = RunTool("trace --expanded pmb2/expanded.urdf --source-root pmb2 --format summary",
-                          kXacroDir.string());
+  const RunResult r =
+      RunTool("trace --expanded pmb2/expanded.urdf --source-root pmb2 --format summary",
+              kXacroDir.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream in(r.out);
   int total = 0, one = 0, several = 0, computed = 0, none = 0;

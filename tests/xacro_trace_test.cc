@@ -5,12 +5,11 @@
 #include "massprops/io/xacro_trace.h"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -194,8 +193,9 @@ TEST(XacroTraceTest, PropertiesThatDoubleAtEachStepEndInTimeUntraced) {
   const fs::path dir =
       fs::temp_directory_path() / ("massprops_xacro_doubling_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  std::string xacro = "<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
-                      "<xacro:property name=\"p0\" value=\"1\"/>\n";
+  std::string xacro =
+      "<robot name=\"r\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n"
+      "<xacro:property name=\"p0\" value=\"1\"/>\n";
   for (int k = 1; k <= 40; ++k) {
     xacro += "<xacro:property name=\"p" + std::to_string(k) + "\" value=\"${p" +
              std::to_string(k - 1) + "+p" + std::to_string(k - 1) + "}\"/>\n";

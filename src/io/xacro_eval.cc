@@ -267,7 +267,8 @@ class Parser {
       out.number = std::pow(args[0], args[1]);
     } else if (n >= 1 && (name == "min" || name == "max")) {
       out.number = args[0];
-      for (double a : args) out.number = name == "min" ? std::fmin(out.number, a) : std::fmax(out.number, a);
+      for (double a : args)
+        out.number = name == "min" ? std::fmin(out.number, a) : std::fmax(out.number, a);
     } else {
       return std::nullopt;
     }

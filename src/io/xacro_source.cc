@@ -203,7 +203,7 @@ std::string CalledMacro(const std::string& tag) {
   if (tag.rfind("xacro:", 0) != 0) return "";
   std::string name = tag.substr(6);
   static const std::set<std::string> kDirectives = {
-      "macro", "property", "arg",     "include", "if",        "unless", "insert_block",
+      "macro",   "property",  "arg",  "include",       "if",       "unless", "insert_block",
       "element", "attribute", "call", "eval-comments", "load_yaml"};
   if (kDirectives.count(name)) return "";
   const std::size_t dot = name.rfind('.');
@@ -236,7 +236,8 @@ SourceIndex IndexSources(const std::vector<std::string>& roots,
     std::error_code ec;
     fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec);
     if (ec) {
-      index.errors.push_back(MakeReadError(root, 0, "", "cannot read the source folder: " + ec.message()));
+      index.errors.push_back(
+          MakeReadError(root, 0, "", "cannot read the source folder: " + ec.message()));
       continue;
     }
     std::vector<std::pair<std::string, fs::path>> here;
@@ -255,8 +256,8 @@ SourceIndex IndexSources(const std::vector<std::string>& roots,
       }
       if (!it->is_regular_file(type_ec) || it->file_size(type_ec) > kMaxFileBytes) continue;
       if (excluded(path)) continue;
-      here.emplace_back((fs::path(root) / path.lexically_relative(root)).lexically_normal().string(),
-                        path);
+      here.emplace_back(
+          (fs::path(root) / path.lexically_relative(root)).lexically_normal().string(), path);
       if (found.size() + here.size() >= kMaxFiles) break;
     }
     std::sort(here.begin(), here.end());
@@ -282,7 +283,8 @@ SourceIndex IndexSources(const std::vector<std::string>& roots,
         int visits = 0;
         WalkYaml(root, &path, 0, &by_offset, &index, id, &visits);
       } catch (const std::exception& error) {
-        index.errors.push_back(MakeReadError(shown, 0, "", std::string("YAML not read: ") + error.what()));
+        index.errors.push_back(
+            MakeReadError(shown, 0, "", std::string("YAML not read: ") + error.what()));
       }
       continue;
     }

@@ -16,10 +16,10 @@ namespace massprops::xacro {
 
 struct XAttr {
   std::string name;
-  std::string value;        ///< As written (the trace needs no entities in numbers).
-  int line = 0;             ///< 1-based line of the value's first character.
-  std::size_t offset = 0;   ///< Byte offset of the value (inside the quotes) in the file.
-  std::size_t length = 0;   ///< Its length in bytes.
+  std::string value;       ///< As written (the trace needs no entities in numbers).
+  int line = 0;            ///< 1-based line of the value's first character.
+  std::size_t offset = 0;  ///< Byte offset of the value (inside the quotes) in the file.
+  std::size_t length = 0;  ///< Its length in bytes.
 };
 
 struct XNode {
@@ -34,7 +34,7 @@ struct XNode {
 
 struct YamlScalar {
   int file = 0;
-  int line = 0;  ///< 1-based
+  int line = 0;                        ///< 1-based
   std::size_t offset = 0, length = 0;  ///< Byte range of the text in the file (plain scalars).
   bool editable = false;               ///< The byte range holds exactly `text`.
   std::string text;

@@ -3,9 +3,9 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <functional>
 #include <optional>
 #include <set>
@@ -269,9 +269,8 @@ class Tracer {
     auto calls = name ? index_.calls.find(name->value) : index_.calls.end();
     if (calls == index_.calls.end()) return;  // a macro nobody calls writes nothing
     for (int call : calls->second) {
-      if (std::find_if(chain->begin(), chain->end(), [&](const Level& l) {
-            return l.call == call;
-          }) != chain->end()) {
+      if (std::find_if(chain->begin(), chain->end(),
+                       [&](const Level& l) { return l.call == call; }) != chain->end()) {
         continue;  // recursion
       }
       chain->push_back({macro, call});
@@ -436,8 +435,8 @@ SourcePlace Explain(const Tracer& tracer, int site, const XAttr& attr, const Cha
     bool supplies = false;
     bool any_param = false;
     for (const std::string& n : wanted) {
-      const bool is_param = std::any_of(params.begin(), params.end(),
-                                        [&](const Param& p) { return p.name == n; });
+      const bool is_param =
+          std::any_of(params.begin(), params.end(), [&](const Param& p) { return p.name == n; });
       if (!is_param) continue;
       any_param = true;
       const XAttr* arg = tracer.Node(chain[l].call).Attr(n);
@@ -548,7 +547,8 @@ XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_nam
     return trace;
   }
   std::vector<ExpandedNumber> numbers = ReadExpanded(doc);
-  const SourceIndex index = xacro::IndexSources(options.source_roots, options.args, options.exclude_files, expanded);
+  const SourceIndex index =
+      xacro::IndexSources(options.source_roots, options.args, options.exclude_files, expanded);
   trace.errors = index.errors;
   trace.source_files = static_cast<int>(index.files.size());
   const Tracer tracer(index);
@@ -563,7 +563,8 @@ XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_nam
                origin = node.tag == "origin" && tracer.InInertial(static_cast<int>(n));
     if (!mass && !inertia && !origin) continue;
     for (const XAttr& attr : node.attrs) {
-      const bool wanted = (mass && attr.name == "value") || (inertia && kInertiaNames.count(attr.name)) ||
+      const bool wanted = (mass && attr.name == "value") ||
+                          (inertia && kInertiaNames.count(attr.name)) ||
                           (origin && (attr.name == "xyz" || attr.name == "rpy"));
       if (!wanted) continue;
       if (chains_of[n].empty()) chains_of[n] = tracer.ChainsOf(static_cast<int>(n));
@@ -608,9 +609,11 @@ XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_nam
       for (const std::vector<std::string>& path : scalar.paths) {
         if (path.empty() || !KeyMatches(path.back(), number.element, number.attribute)) continue;
         key_ok = true;
-        for (std::size_t k = 0; k + 1 < path.size(); ++k) link_ok |= KeyNamesLink(path[k], number.link);
+        for (std::size_t k = 0; k + 1 < path.size(); ++k)
+          link_ok |= KeyNamesLink(path[k], number.link);
       }
-      if (!key_ok || !SameNumbers(xacro::ParseNumbers(scalar.text), expanded_number.values)) continue;
+      if (!key_ok || !SameNumbers(xacro::ParseNumbers(scalar.text), expanded_number.values))
+        continue;
       Candidate candidate;
       candidate.place.file = index.files[static_cast<std::size_t>(scalar.file)].path;
       candidate.place.line = scalar.line;
@@ -626,9 +629,10 @@ XacroTrace TraceXacro(std::string_view expanded, const std::string& expanded_nam
     for (const Candidate& c : candidates) best = std::max(best, c.score);
     for (const Candidate& c : candidates) {
       if (c.score != best) continue;
-      const bool seen = std::any_of(number.places.begin(), number.places.end(), [&](const SourcePlace& p) {
-        return p.file == c.place.file && p.line == c.place.line && p.how == c.place.how;
-      });
+      const bool seen =
+          std::any_of(number.places.begin(), number.places.end(), [&](const SourcePlace& p) {
+            return p.file == c.place.file && p.line == c.place.line && p.how == c.place.how;
+          });
       if (!seen) number.places.push_back(c.place);
     }
     trace.numbers.push_back(std::move(number));

@@ -395,8 +395,7 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
         // The source file is the artifact; the generated line and any other candidate place are
         // related locations.
         const FindingSource& source = *finding.source;
-        entry["locations"] =
-            location(source.places.front().file, source.places.front().line, 0);
+        entry["locations"] = location(source.places.front().file, source.places.front().line, 0);
         json related = json::array();
         json generated = location(FileOf(finding.location, result), finding.location.line,
                                   finding.location.column)[0];

@@ -32,9 +32,9 @@
 #include "massprops/output/reporters.h"
 #include "massprops/output/xml_patch.h"
 #include "safe_write.h"
+#include "target_cli.h"
 #include "xacro_cli.h"
 #include "xacro_fix.h"
-#include "target_cli.h"
 
 namespace massprops::cli {
 namespace {

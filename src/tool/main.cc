@@ -474,9 +474,8 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
     xacro = massprops::cli::StartXacroRun(args.xacro, top, &error);
     if (!xacro) throw UsageError{error};
   }
-  const CheckInputs inputs =
-      xacro ? CheckInputs{{xacro->checked_file}, 0, false}
-            : ExpandInputs(args, InputsOrExample(args, argv0));
+  const CheckInputs inputs = xacro ? CheckInputs{{xacro->checked_file}, 0, false}
+                                   : ExpandInputs(args, InputsOrExample(args, argv0));
   const std::vector<std::string>& files = inputs.files;
   const std::vector<Settings> settings = LoadSettings(args, cli, explicit_config, files);
 

@@ -263,7 +263,8 @@ void AddTraceCommand(CLI::App& app, std::function<int()>* run) {
       "Show where each <inertial> number of a xacro package was written (file, line, how): "
       "expands FILE.xacro, or reads --expanded with --source-root");
   trace->add_option("FILE", args->file, "The package's top .xacro file");
-  trace->add_option("--format", args->format, "text, json, or summary (the shares of docs/xacro.md)")
+  trace
+      ->add_option("--format", args->format, "text, json, or summary (the shares of docs/xacro.md)")
       ->check(CLI::IsMember({"text", "json", "summary"}))
       ->capture_default_str();
   AddXacroOptions(trace, &args->xacro);
@@ -288,12 +289,19 @@ void AddTraceCommand(CLI::App& app, std::function<int()>* run) {
         for (const TracedNumber& n : result.numbers) {
           nlohmann::ordered_json places = nlohmann::ordered_json::array();
           for (const SourcePlace& p : n.places) {
-            places.push_back({{"file", p.file}, {"line", p.line}, {"how", p.how},
-                              {"text", p.text}, {"inputs", p.inputs}, {"editable", p.editable}});
+            places.push_back({{"file", p.file},
+                              {"line", p.line},
+                              {"how", p.how},
+                              {"text", p.text},
+                              {"inputs", p.inputs},
+                              {"editable", p.editable}});
           }
-          numbers.push_back({{"link", n.link}, {"element", n.element},
-                             {"attribute", n.attribute}, {"value", n.expanded_value},
-                             {"generated_line", n.expanded_line}, {"places", places}});
+          numbers.push_back({{"link", n.link},
+                             {"element", n.element},
+                             {"attribute", n.attribute},
+                             {"value", n.expanded_value},
+                             {"generated_line", n.expanded_line},
+                             {"places", places}});
         }
         std::cout << nlohmann::ordered_json{{"generated", expansion->name},
                                             {"source_files", result.source_files},

@@ -14,9 +14,9 @@ namespace massprops::cli {
 
 /// The options of a xacro package, shared by check, fix and trace.
 struct XacroOptions {
-  std::vector<std::string> xacro_args;  ///< --xacro-arg NAME:=VALUE (repeatable)
-  std::string xacro_command;            ///< --xacro-command CMD (default: `xacro` on PATH)
-  std::string expanded;                 ///< --expanded FILE: an expansion made elsewhere
+  std::vector<std::string> xacro_args;    ///< --xacro-arg NAME:=VALUE (repeatable)
+  std::string xacro_command;              ///< --xacro-command CMD (default: `xacro` on PATH)
+  std::string expanded;                   ///< --expanded FILE: an expansion made elsewhere
   std::vector<std::string> source_roots;  ///< --source-root DIR (repeatable)
 };
 

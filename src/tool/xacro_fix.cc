@@ -126,7 +126,8 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
       if (place.how == "computed") {
         std::string inputs;
         for (const std::string& i : place.inputs) inputs += (inputs.empty() ? "" : ", ") + i;
-        refuse(r, c, where, "the value is computed (from " + inputs + "), not written: change its inputs");
+        refuse(r, c, where,
+               "the value is computed (from " + inputs + "), not written: change its inputs");
         continue;
       }
       if (place.how == "parameter") {
@@ -195,9 +196,11 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
       return 2;
     }
     std::string after = text;
-    std::sort(list.begin(), list.end(), [](const Edit& a, const Edit& b) { return a.offset > b.offset; });
+    std::sort(list.begin(), list.end(),
+              [](const Edit& a, const Edit& b) { return a.offset > b.offset; });
     for (const Edit& e : list) {
-      if (e.offset + e.length > after.size() || after.compare(e.offset, e.length, e.old_text) != 0) {
+      if (e.offset + e.length > after.size() ||
+          after.compare(e.offset, e.length, e.old_text) != 0) {
         std::cerr << "massprops: error: " << file << ":" << e.line << " no longer holds '"
                   << e.old_text << "'; nothing written\n";
         return 2;
@@ -238,8 +241,7 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
   // the same text, as a recorded expansion does): the expected expansion (the repairs written
   // into the old one) must trace each edited number to its edited place.
   std::string error;
-  std::optional<std::string> again =
-      edits.empty() ? std::nullopt : ReExpand(options, top, &error);
+  std::optional<std::string> again = edits.empty() ? std::nullopt : ReExpand(options, top, &error);
   std::string checked = patched_expansion;
   std::string how_checked;
   if (again && *again != run.expansion.text) {
@@ -247,8 +249,8 @@ int FixXacroSources(const XacroOptions& options, const std::string& top, const X
     const LineChanges expected = DiffLines(run.expansion.text, patched_expansion);
     if (changes.removed != expected.removed) {
       std::cerr << "massprops: error: the new expansion changed other lines than those of the "
-                   "repaired numbers (" << UnifiedDiff(run.expansion.text, *again, "expansion")
-                << ")\n";
+                   "repaired numbers ("
+                << UnifiedDiff(run.expansion.text, *again, "expansion") << ")\n";
       return 2;
     }
     checked = *again;

@@ -17,8 +17,8 @@ namespace massprops {
 /// One inertial number of the expanded URDF and where it was written.
 struct TracedNumber {
   std::string link;
-  std::string element;    ///< "mass", "origin" or "inertia".
-  std::string attribute;  ///< "value", "xyz", "rpy", "ixx", ... "izz".
+  std::string element;         ///< "mass", "origin" or "inertia".
+  std::string attribute;       ///< "value", "xyz", "rpy", "ixx", ... "izz".
   std::string expanded_value;  ///< The attribute's text in the expanded URDF.
   int expanded_line = 0;
   /// Empty: not traced. One: traced. Several: each writes the number and none is closer to the
