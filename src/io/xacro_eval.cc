@@ -12,6 +12,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxDepth = 64;  // nesting of parentheses and unary operators
+constexpr std::size_t kMaxExpressionBytes = 4096;
 
 bool IsIdentStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool IsIdentChar(char c) {
@@ -290,6 +291,9 @@ std::string FormatNumber(double value) {
 }  // namespace
 
 std::optional<Value> EvaluateExpression(std::string_view expression, const NameLookup& lookup) {
+  // Inertial expressions are short; a longer one is not evaluated (each number read copies the
+  // rest of the text: a hostile megabyte-long sum would take quadratic time).
+  if (expression.size() > kMaxExpressionBytes) return std::nullopt;
   return Parser(expression, lookup).Run();
 }
 

@@ -25,7 +25,8 @@ struct Value {
 using NameLookup = std::function<std::optional<Value>(const std::string& name)>;
 
 /// Evaluates one expression (the text inside `${...}`). Returns nullopt when the expression uses
-/// something outside the subset above or a name the lookup does not know. Never throws.
+/// something outside the subset above or a name the lookup does not know, or is longer than
+/// 4096 bytes. Never throws.
 std::optional<Value> EvaluateExpression(std::string_view expression, const NameLookup& lookup);
 
 /// Evaluates an attribute's text: literal text with `${...}` and `$(arg NAME)` parts, as xacro
