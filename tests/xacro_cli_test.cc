@@ -133,6 +133,20 @@ TEST_F(XacroCliTest, JsonSarifAndGithubCarryBothPlaces) {
   EXPECT_TRUE(Contains(g.out, "generated pmb2/expanded.urdf:445")) << g.out;
 }
 
+// A products-sign-suspect finding points at the product it is about: franka's fingers write
+// yz: -0.00000106 on line 25 of end_effectors/franka_hand/inertials.yaml (xx is on line 20).
+TEST_F(XacroCliTest, AProductsSignFindingPointsAtTheProductsLine) {
+  const RunResult r = RunTool(
+      "check --expanded franka_fr3/expanded.urdf --source-root franka_fr3 -q", kXacroDir.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;  // warnings only
+  EXPECT_TRUE(Contains(r.out,
+                       "franka_fr3/src/end_effectors/franka_hand/inertials.yaml:25: "
+                       "warning: link 'fr3_leftfinger'"))
+      << r.out;
+  EXPECT_TRUE(Contains(r.out, "(inertia iyz: yaml; generated franka_fr3/expanded.urdf:300)"))
+      << r.out;
+}
+
 class XacroFixTest : public XacroCliTest {
  protected:
   void SetUp() override {
