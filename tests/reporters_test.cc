@@ -324,5 +324,68 @@ TEST(ReportersTest, RenderDispatchesOnTheFormat) {
   EXPECT_EQ(Render(ReportFormat::kGithub, results), RenderGithub(results));
 }
 
+// A finding of an expanded xacro package whose ixx was written at two places (docs/xacro.md):
+// every format names the first source place first and the generated line as well.
+std::vector<FileResult> TracedResults() {
+  Finding f;
+  f.rule = "inertia-not-physical";
+  f.link = "arm";
+  f.location = {"gen.urdf", 40, 7};
+  f.message = "bad";
+  FindingSource source;
+  source.number = "inertia ixx";
+  SourcePlace a;
+  a.file = "pkg/urdf/arm.xacro";
+  a.line = 12;
+  a.how = "literal";
+  a.text = "0.25";
+  SourcePlace b = a;
+  b.file = "pkg/urdf/other.xacro";
+  b.line = 3;
+  source.places = {a, b};
+  source.generated = {"gen.urdf", 40, 0};
+  f.source = source;
+  FileResult result;
+  result.path = "gen.urdf";
+  result.format = "urdf";
+  result.findings = {f};
+  return {result};
+}
+
+TEST(ReportersTest, TracedFindingsNameTheSourceFirstAndTheGeneratedLineToo) {
+  ReportOptions quiet;
+  quiet.quiet = true;
+  EXPECT_EQ(RenderText(TracedResults(), quiet),
+            "pkg/urdf/arm.xacro:12: error: bad [inertia-not-physical] (inertia ixx: literal at 2 "
+            "places: pkg/urdf/arm.xacro:12, pkg/urdf/other.xacro:3; generated gen.urdf:40)\n");
+
+  const json finding = json::parse(RenderJson(TracedResults())).at("files")[0].at("findings")[0];
+  EXPECT_EQ(finding.at("file"), "gen.urdf");
+  EXPECT_EQ(finding.at("line"), 40);
+  EXPECT_EQ(finding.at("source").at("file"), "pkg/urdf/arm.xacro");
+  EXPECT_EQ(finding.at("source").at("line"), 12);
+  EXPECT_EQ(finding.at("source").at("how"), "literal");
+  EXPECT_EQ(finding.at("source").at("places").size(), 2u);
+  EXPECT_EQ(finding.at("source").at("generated").at("line"), 40);
+
+  const json result = json::parse(RenderSarif(TracedResults())).at("runs")[0].at("results")[0];
+  EXPECT_EQ(result.at("locations")[0].at("physicalLocation").at("artifactLocation").at("uri"),
+            "pkg/urdf/arm.xacro");
+  const json& related = result.at("relatedLocations");
+  ASSERT_EQ(related.size(), 2u);
+  EXPECT_EQ(related[0].at("id"), 1);
+  EXPECT_EQ(related[0].at("physicalLocation").at("region").at("startLine"), 40);
+  EXPECT_EQ(related[1].at("id"), 2);
+  EXPECT_EQ(related[1].at("physicalLocation").at("artifactLocation").at("uri"),
+            "pkg/urdf/other.xacro");
+
+  const std::string github = RenderGithub(TracedResults());
+  EXPECT_EQ(github.rfind("::error file=pkg/urdf/arm.xacro,line=12,title=inertia-not-physical::bad "
+                         "(inertia ixx: literal at 2 places",
+                         0),
+            0u)
+      << github;
+}
+
 }  // namespace
 }  // namespace massprops

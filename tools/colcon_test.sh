@@ -27,7 +27,7 @@ fi
 # keys of package.xml's <depend> and <exec_depend> (without colcon-ros it would have taken the
 # package for a plain CMake one, with none).
 run_deps=$(cat "$ws/install/massprops/share/colcon-core/packages/massprops")
-[[ $run_deps == "assimp:eigen:libqhull:python3-numpy:tinyxml2:urdfdom" ]] ||
+[[ $run_deps == "assimp:eigen:libqhull:python3-numpy:tinyxml2:urdfdom:yaml-cpp" ]] ||
   fail "colcon's run dependencies of massprops: '$run_deps', not those of package.xml"
 version=$(sed -n 's/^project(massprops VERSION \([0-9.]*\).*/\1/p' "$here/CMakeLists.txt")
 "$ws/install/massprops/bin/massprops" --version | grep -qx "massprops $version" ||

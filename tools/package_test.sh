@@ -25,7 +25,7 @@ version=$(sed -n 's/^project(massprops VERSION \([0-9.]*\).*/\1/p' "$here/CMakeL
 dpkg-deb -I "$deb"
 depends=$(dpkg-deb -f "$deb" Depends)
 # What the binaries link, as Debian names it (dpkg-shlibdeps): each must be in Depends.
-for package in libtinyxml2 liburdfdom-model libconsole-bridge libassimp libqhull-r libstdc++6 \
+for package in libtinyxml2 liburdfdom-model libconsole-bridge libassimp libqhull-r libyaml-cpp libstdc++6 \
                libc6; do
   [[ $depends == *"$package"* ]] || fail "Depends lacks $package: $depends"
 done

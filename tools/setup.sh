@@ -8,6 +8,8 @@ build_dir=${BUILD_DIR:-$here/build}
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
           nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev
           pybind11-dev python3-dev python3-numpy libjs-three)
+# The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
+packages+=(libyaml-cpp-dev)
 # The Debian package (tools/package.sh): the man page is written by help2man, cpack's Depends:
 # by dpkg-shlibdeps (dpkg-dev).
 packages+=(help2man dpkg-dev)

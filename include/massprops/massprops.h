@@ -16,6 +16,7 @@
 
 // model
 #include "massprops/model/model.h"
+#include "massprops/model/source_place.h"
 
 // mesh
 #include "massprops/mesh/mesh_inertia.h"
@@ -27,10 +28,12 @@
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/urdf_reader.h"
+#include "massprops/io/xacro_trace.h"
 
 // analysis
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
+#include "massprops/analysis/finding_sources.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/mass_report.h"

@@ -99,8 +99,9 @@ def _strings(value: Iterable[str], name: str) -> list:
     return items
 
 
-def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None,
-          **kwargs) -> list:
+def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None, *,
+          source_root: Union[None, str, "os.PathLike[str]", Sequence[str]] = None,
+          xacro_args: Optional[Mapping[str, str]] = None, **kwargs) -> list:
     """Checks a URDF or SDF model and returns its findings (list of Finding).
 
     The findings are those `massprops check --format json FILE` reports, in the same order:
@@ -110,8 +111,14 @@ def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None,
     file cannot be read, ValueError for an unknown rule or a bad value, TypeError for a wrong
     type.
 
+    source_root: for an expanded xacro package, the folder(s) of its sources (as `massprops check
+    --expanded FILE --source-root DIR`): each finding's `source` then says where its numbers were
+    written ({file, line, how, ...}, docs/xacro.md); xacro_args: the arguments of the expansion.
+
     >>> for f in massprops.check("robot.urdf", disable=["units-suspect"]):
     ...     print(f.severity, f.link, f.line, f.message)
+    >>> f = massprops.check("robot.urdf", source_root="robot_description")[0]
+    >>> f.source["file"], f.source["line"], f.source["how"]
     """
     if options is None:
         options = CheckOptions()
@@ -132,7 +139,17 @@ def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None,
         bool(options.geometry),
         float(options.geometry_factor),
         _strings(options.package_paths, "package_paths"),
+        _source_roots(source_root),
+        {str(k): str(v) for k, v in (xacro_args or {}).items()},
     )
+
+
+def _source_roots(value) -> list:
+    if value is None:
+        return []
+    if isinstance(value, (str, os.PathLike)):
+        return [os.fspath(value)]
+    return [os.fspath(v) for v in value]
 
 
 def report(path_or_text: PathOrText, *, joints: Optional[Mapping[str, float]] = None,

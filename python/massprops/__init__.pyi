@@ -293,6 +293,7 @@ class Finding:
     message: str
     values: Dict[str, float]
     repair: Optional[Repair]
+    source: Optional[Dict[str, Any]]
     def to_dict(self) -> Dict[str, Any]: ...
 
 class PatchError:
@@ -330,6 +331,8 @@ class CheckOptions:
 def read(path_or_text: PathOrText, *, model_paths: Sequence[str] = ...) -> Model: ...
 def read_all(path_or_text: PathOrText, *, model_paths: Sequence[str] = ...) -> List[Model]: ...
 def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None, *,
+          source_root: Union[None, str, os.PathLike[str], Sequence[str]] = ...,
+          xacro_args: Optional[Mapping[str, str]] = ...,
           tolerance: Optional[float] = ..., disable: Sequence[str] = ...,
           severity: Mapping[str, str] = ..., config: Optional[Union[str, os.PathLike[str]]] = ...,
           model_paths: Sequence[str] = ..., geometry: bool = ..., geometry_factor: float = ...,

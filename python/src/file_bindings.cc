@@ -20,6 +20,7 @@
 #include "bindings.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
+#include "massprops/analysis/finding_sources.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/mass_report.h"
 #include "massprops/analysis/repair.h"
@@ -27,6 +28,7 @@
 #include "massprops/core/rotational_inertia.h"
 #include "massprops/core/spatial_inertia.h"
 #include "massprops/io/model_reader.h"
+#include "massprops/io/xacro_trace.h"
 #include "massprops/mesh/mesh_loader.h"
 #include "massprops/model/model.h"
 #include "massprops/output/report_format.h"
@@ -285,7 +287,9 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
                            const std::map<std::string, std::string>& severity,
                            const py::object& config, const std::vector<std::string>& model_paths,
                            bool geometry, double geometry_factor,
-                           const std::vector<std::string>& package_paths) {
+                           const std::vector<std::string>& package_paths,
+                           const std::vector<std::string>& source_roots,
+                           const std::map<std::string, std::string>& xacro_args) {
   const Source source = ToSource(source_arg, "check");
   if (tolerance && !(*tolerance >= 0 && *tolerance < 1)) {
     throw py::value_error("check: tolerance must be at least 0 and less than 1, got " +
@@ -381,7 +385,50 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
   for (Finding& f : findings) {
     if (f.location.file.empty()) f.location.file = source.path;
   }
+  // An expanded xacro package: each finding gets the place its numbers were written
+  // (docs/xacro.md).
+  if (!source_roots.empty()) {
+    XacroTraceOptions trace_options;
+    trace_options.source_roots = source_roots;
+    trace_options.args = xacro_args;
+    std::string text = source.text;
+    if (!source.is_text) {
+      trace_options.exclude_files.push_back(source.path);
+      if (std::optional<ReadError> error = ReadInputFile(source.path, kMaxModelFileBytes, &text)) {
+        RaiseReadError({*error});
+      }
+    }
+    const XacroTrace trace = TraceXacro(text, source.path, trace_options);
+    AttachXacroSources(trace, source.path, &findings);
+  }
   return findings;
+}
+
+// A FindingSource as a dict: the first place's file, line, how, text, inputs; "places" when
+// there are several; "number" and "generated" ({file, line}).
+py::object SourceDict(const std::optional<FindingSource>& source) {
+  if (!source || source->places.empty()) return py::none();
+  auto place_dict = [](const SourcePlace& p) {
+    py::dict d;
+    d["file"] = p.file;
+    d["line"] = p.line;
+    d["how"] = p.how;
+    d["text"] = p.text;
+    d["inputs"] = p.inputs;
+    return d;
+  };
+  py::dict d = place_dict(source->places.front());
+  d["number"] = source->number;
+  if (source->places.size() > 1) {
+    py::list places;
+    for (const SourcePlace& p : source->places) places.append(place_dict(p));
+    d["places"] = places;
+  }
+  py::dict generated;
+  generated["file"] = source->generated.file;
+  generated["line"] = source->generated.line;
+  d["generated"] = generated;
+  return std::move(d);
 }
 
 // -------------------------------------------------------------------------------------- fix
@@ -990,6 +1037,11 @@ void BindFinding(py::module_& m) {
           "values", [](const Finding& f) { return ValuesDict(f.values); },
           "The named measured values, a dict.")
       .def_readonly("repair", &Finding::repair, "Always None from check(); see fix().")
+      .def_property_readonly(
+          "source", [](const Finding& f) { return SourceDict(f.source); },
+          "check(..., source_root=DIR) on an expanded xacro package: where the numbers were "
+          "written, a dict {file, line, how, text, inputs, number, generated: {file, line}} "
+          "(and places: [...] when several); None otherwise.")
       .def(
           "to_dict",
           [](const Finding& f) {
@@ -1003,6 +1055,7 @@ void BindFinding(py::module_& m) {
             d["column"] = f.location.column;
             d["message"] = f.message;
             d["values"] = ValuesDict(f.values);
+            if (f.source) d["source"] = SourceDict(f.source);
             return d;
           },
           "The finding as the dict `massprops check --format json` writes for it (NaN where "
@@ -1116,8 +1169,8 @@ file cannot be read or parsed.
       "As read(), every model of the file (an SDF world may hold several).");
   m.def("_check", &Check, py::arg("path_or_text"), py::arg("tolerance"), py::arg("disable"),
         py::arg("severity"), py::arg("config"), py::arg("model_paths"), py::arg("geometry"),
-        py::arg("geometry_factor"), py::arg("package_paths"),
-        "The engine of massprops.check (use that).");
+        py::arg("geometry_factor"), py::arg("package_paths"), py::arg("source_roots"),
+        py::arg("xacro_args"), "The engine of massprops.check (use that).");
   m.def("_fix", &Fix, py::arg("path_or_text"), py::arg("apply"), py::arg("repair"),
         py::arg("fix_units"), py::arg("density"), py::arg("from_geometry"), py::arg("tolerance"),
         py::arg("geometry"), py::arg("package_paths"), py::arg("model_paths"),

@@ -150,6 +150,33 @@ std::string GithubLine(const char* command, const std::string& file, int line, i
   return out;
 }
 
+// Where a traced finding's numbers were written, for the text formats: " (mass: literal; generated
+// F:L)", " (inertia ixx: computed from mass=0.17, y=0.1 by the call here; ...)", or with several
+// places " (mass: literal at 2 places: a:1, b:2; ...)".
+std::string SourceNote(const FindingSource& source) {
+  const SourcePlace& first = source.places.front();
+  std::string out = " (" + source.number + ": " + first.how;
+  if (first.how == "computed" && !first.inputs.empty()) {
+    out += " from ";
+    for (std::size_t i = 0; i < first.inputs.size(); ++i) out += (i ? ", " : "") + first.inputs[i];
+    out += " by the call here";
+  }
+  if (source.places.size() > 1) {
+    out += " at " + std::to_string(source.places.size()) + " places:";
+    for (std::size_t i = 0; i < source.places.size(); ++i) {
+      out += (i ? ", " : " ") + source.places[i].file + ":" + std::to_string(source.places[i].line);
+    }
+  }
+  out += "; generated " + FormatLocation(source.generated.file, source.generated.line, 0) + ")";
+  return out;
+}
+
+json SourcePlaceJson(const SourcePlace& place) {
+  json out = {{"file", place.file}, {"line", place.line}, {"how", place.how}, {"text", place.text}};
+  if (!place.inputs.empty()) out["inputs"] = place.inputs;
+  return out;
+}
+
 }  // namespace
 
 std::optional<ReportFormat> ParseReportFormat(std::string_view text) {
@@ -233,16 +260,22 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
       out += "\n";
     }
     for (const Finding& finding : result.findings) {
-      const std::string where = FormatLocation(FileOf(finding.location, result),
-                                               finding.location.line, finding.location.column);
+      // A finding traced to xacro sources points at the source first (docs/xacro.md).
+      const bool traced = finding.source && !finding.source->places.empty();
+      const std::string where =
+          traced ? FormatLocation(finding.source->places.front().file,
+                                  finding.source->places.front().line, 0)
+                 : FormatLocation(FileOf(finding.location, result), finding.location.line,
+                                  finding.location.column);
+      const std::string note = traced ? ShortenLongWords(SourceNote(*finding.source)) : "";
       const std::string severity = std::string(ToString(finding.severity)) + ":";
       if (color) {
         out += std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
                severity + kReset + " " + ShortenLongWords(finding.message) + " " + kDim + "[" +
-               finding.rule + "]" + kReset + "\n";
+               finding.rule + "]" + note + kReset + "\n";
       } else {
         out += where + ": " + severity + " " + ShortenLongWords(finding.message) + " [" +
-               finding.rule + "]\n";
+               finding.rule + "]" + note + "\n";
       }
     }
   }
@@ -276,6 +309,19 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                           {"column", finding.location.column},
                           {"message", ShortenLongWords(finding.message)},
                           {"values", values}});
+      if (finding.source && !finding.source->places.empty()) {
+        const FindingSource& source = *finding.source;
+        json entry = SourcePlaceJson(source.places.front());
+        entry["number"] = source.number;
+        if (source.places.size() > 1) {
+          entry["places"] = json::array();
+          for (const SourcePlace& place : source.places) {
+            entry["places"].push_back(SourcePlaceJson(place));
+          }
+        }
+        entry["generated"] = {{"file", source.generated.file}, {"line", source.generated.line}};
+        findings.back()["source"] = entry;
+      }
     }
     json errors = json::array();
     for (const ReadError& error : result.errors) {
@@ -371,13 +417,38 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
       if (index >= 0) entry["ruleIndex"] = index;
       entry["level"] = SarifLevel(finding.severity);
       entry["message"] = {{"text", ShortenLongWords(finding.message)}};
-      entry["locations"] = location(FileOf(finding.location, result), finding.location.line,
-                                    finding.location.column);
+      if (finding.source && !finding.source->places.empty()) {
+        // The source file is the artifact; the generated line and any other candidate place are
+        // related locations.
+        const FindingSource& source = *finding.source;
+        entry["locations"] = location(source.places.front().file, source.places.front().line, 0);
+        json related = json::array();
+        json generated = location(FileOf(finding.location, result), finding.location.line,
+                                  finding.location.column)[0];
+        generated["id"] = 1;
+        generated["message"] = {{"text", "generated " + source.number}};
+        related.push_back(generated);
+        for (std::size_t i = 1; i < source.places.size(); ++i) {
+          json other = location(source.places[i].file, source.places[i].line, 0)[0];
+          other["id"] = static_cast<int>(i) + 1;
+          other["message"] = {{"text", "also writes " + source.number}};
+          related.push_back(other);
+        }
+        entry["relatedLocations"] = related;
+      } else {
+        entry["locations"] = location(FileOf(finding.location, result), finding.location.line,
+                                      finding.location.column);
+      }
       if (!finding.values.empty()) {
         json values = json::object();
         for (const auto& [name, value] : finding.values) values[name] = Number(value);
         entry["properties"] = {
             {"model", finding.model}, {"link", finding.link}, {"values", values}};
+      }
+      if (finding.source && !finding.source->places.empty()) {
+        entry["properties"]["source"] = {{"number", finding.source->number},
+                                         {"how", finding.source->places.front().how},
+                                         {"places", finding.source->places.size()}};
       }
       sarif_results.push_back(entry);
     }
@@ -412,6 +483,12 @@ std::string RenderGithub(const std::vector<FileResult>& results, const ReportOpt
                      error.location.column, kReadErrorRule, ShortenLongWords(ReadErrorText(error)));
     }
     for (const Finding& finding : result.findings) {
+      if (finding.source && !finding.source->places.empty()) {
+        const SourcePlace& place = finding.source->places.front();
+        out += GithubLine(GithubCommand(finding.severity), place.file, place.line, 0, finding.rule,
+                          ShortenLongWords(finding.message + SourceNote(*finding.source)));
+        continue;
+      }
       out += GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
                         finding.location.line, finding.location.column, finding.rule,
                         ShortenLongWords(finding.message));

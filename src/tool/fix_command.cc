@@ -33,6 +33,8 @@
 #include "massprops/output/xml_patch.h"
 #include "safe_write.h"
 #include "target_cli.h"
+#include "xacro_cli.h"
+#include "xacro_fix.h"
 
 namespace massprops::cli {
 namespace {
@@ -63,6 +65,7 @@ struct FixArgs {
   std::vector<std::string> package_paths;
   std::string target;  // --target ("" = generic)
   bool include_files = false;
+  XacroOptions xacro;  // a xacro package: the sources are repaired (xacro_fix.h)
 };
 
 // The file each repaired link is defined in: the top-level file, or (SDF) the file of an
@@ -508,10 +511,30 @@ int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
   return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
 }
 
-int RunFix(const FixArgs& args) {
-  if (!CheckFixArgs(args)) return kExitError;
+int RunFix(const FixArgs& given) {
+  if (!CheckFixArgs(given)) return kExitError;
+  // A xacro package: the repairs are planned on its expansion and written into its sources.
+  FixArgs args = given;
+  std::optional<XacroRun> xacro;
+  if (IsXacroRun(given.xacro, given.file)) {
+    if (!given.output.empty()) {
+      std::cerr << "massprops: error: a xacro package is repaired in its sources: use --in-place "
+                   "or --dry-run, not -o\n";
+      return kExitError;
+    }
+    std::string error;
+    xacro = StartXacroRun(given.xacro, given.file, &error);
+    if (!xacro) {
+      std::cerr << "massprops: error: " << error << "\n";
+      return kExitError;
+    }
+    args.file = xacro->checked_file;
+    args.in_place = args.dry_run = args.diff = false;
+  }
   FixInput input;
-  if (!ReadFixInput(args, &input)) return kExitError;
+  const bool read = ReadFixInput(args, &input);
+  if (xacro && xacro->temporary) std::remove(xacro->checked_file.c_str());
+  if (!read) return kExitError;
   FixSetup setup;
   if (!ConfigureFix(args, input.text, &setup)) return kExitError;
   PrintReaderFindings(input.read, setup.check);
@@ -536,6 +559,14 @@ int RunFix(const FixArgs& args) {
                  "written:\n";
     for (const ReadError& e : reread.errors) std::cerr << "  " << e.ToString() << "\n";
     return kExitError;
+  }
+  if (xacro) {
+    XacroFixRequest request;
+    request.in_place = given.in_place;
+    request.dry_run = given.dry_run;
+    request.diff = given.diff;
+    request.backup = given.backup;
+    return FixXacroSources(given.xacro, given.file, *xacro, plan.repairs, patched.text, request);
   }
   return FinishFix(args, input, setup, plan, patched, reread, included);
 }
@@ -564,7 +595,10 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
       "the origin, masses from geometry) only with --apply RULE,... or --from-geometry. Every "
       "repair is checked again; one that leaves or creates a finding is not written. "
       "Default: the corrected file on standard output.");
-  fix->add_option("FILE", args->file, "URDF or SDF file (detected by content), or '-'");
+  fix->add_option("FILE", args->file,
+                  "URDF or SDF file (detected by content), '-', or a xacro package's top .xacro "
+                  "file (its sources are repaired: docs/xacro.md)");
+  AddXacroOptions(fix, &args->xacro);
   fix->add_flag("--dry-run", args->dry_run,
                 "Print what would change (rule, link, old -> new, why); write nothing");
   fix->add_flag("--diff", args->diff, "Print a unified diff of the changes");
@@ -630,7 +664,7 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
       args->from_geometry_links.pop_back();
     }
     *run = [args] {
-      if (args->file.empty()) {
+      if (args->file.empty() && args->xacro.expanded.empty()) {
         std::cerr << "massprops: error: fix needs a FILE\n";
         return kExitError;
       }

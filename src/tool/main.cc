@@ -37,6 +37,7 @@
 #include "option_filter.h"
 #include "safe_write.h"
 #include "target_cli.h"
+#include "xacro_cli.h"
 
 namespace {
 
@@ -71,6 +72,7 @@ struct CheckArgs {
   bool list_rules = false;
   int jobs = 0;        // 0: one per core
   std::string target;  // --target; "" when not given
+  massprops::cli::XacroOptions xacro;  // a xacro package (docs/xacro.md)
 };
 
 // A command-line mistake found after CLI11 has parsed the arguments.
@@ -467,13 +469,24 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
   const CliOverrides cli = ParseCliOverrides(args);
   std::optional<Config> explicit_config;
   if (!args.config.empty()) explicit_config = massprops::LoadConfig(args.config);
-  const CheckInputs inputs = ExpandInputs(args, InputsOrExample(args, argv0));
+  // A xacro package (docs/xacro.md): its expansion is checked, and findings traced to the sources.
+  const std::string top = args.files.empty() ? "" : args.files.front();
+  std::optional<massprops::cli::XacroRun> xacro;
+  if (massprops::cli::IsXacroRun(args.xacro, top)) {
+    if (args.files.size() > 1) throw UsageError{"check takes one .xacro FILE at a time"};
+    std::string error;
+    xacro = massprops::cli::StartXacroRun(args.xacro, top, &error);
+    if (!xacro) throw UsageError{error};
+  }
+  const CheckInputs inputs = xacro ? CheckInputs{{xacro->checked_file}, 0, false}
+                                   : ExpandInputs(args, InputsOrExample(args, argv0));
   const std::vector<std::string>& files = inputs.files;
   const std::vector<Settings> settings = LoadSettings(args, cli, explicit_config, files);
 
   std::vector<FileResult> results(files.size());
   RunInParallel(files.size(), JobCount(args.jobs, files),
                 [&](std::size_t i) { results[i] = CheckFile(files[i], settings[i]); });
+  if (xacro) massprops::cli::FinishXacroRun(&*xacro, &results.front());
 
   const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
   massprops::WriteReport(std::cout, format, results, MakeReportOptions(args, inputs.skipped_files));
@@ -584,6 +597,9 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
                     "List the rules and their default severities");
   }
   massprops::cli::AddGeometryCheckOptions(check, wanted);
+  if (wanted.Wants({"--xacro-arg", "--xacro-command", "--expanded", "--source-root"})) {
+    massprops::cli::AddXacroOptions(check, &args->xacro);
+  }
   return given;
 }
 
@@ -633,6 +649,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddReportCommands(app, &run);
     massprops::cli::AddFixCommands(app, &run);
     massprops::cli::AddViewCommands(app, &run);
+    massprops::cli::AddTraceCommand(app, &run);
   }
 
   try {

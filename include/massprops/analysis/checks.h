@@ -13,6 +13,7 @@
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/model/model.h"
+#include "massprops/model/source_place.h"
 
 namespace massprops {
 
@@ -37,6 +38,9 @@ struct Finding {
   /// The remedy `massprops fix` would apply (set by AttachRepairs in repair.h; CheckModel leaves
   /// it empty).
   std::optional<Repair> repair;
+  /// Where the numbers were written when the model was expanded from xacro (set by the tool from
+  /// the xacro trace, io/xacro_trace.h); empty otherwise.
+  std::optional<FindingSource> source;
 };
 
 /// What a rule is: its id, default severity, whether it runs by default, and a one-line summary.
