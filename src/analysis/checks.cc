@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/analysis/density_rules.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/analysis/welded_groups.h"
@@ -1331,13 +1332,16 @@ const std::vector<RuleInfo>& AllRules() {
     std::vector<RuleInfo> all = kRules;
     all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
+    all.insert(all.end(), DensityRules().begin(), DensityRules().end());  // density_rules.h
     return all;
   }();
   return kAll;
 }
 
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {
-  return Checker(model, options).Run();
+  std::vector<Finding> findings = Checker(model, options).Run();
+  AddDensityFindings(model, options, &findings);  // density_rules.h
+  return findings;
 }
 
 std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& options) {

@@ -77,6 +77,61 @@ LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve) {
   };
 }
 
+LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve) {
+  MeshResolveOptions closed = resolve;
+  // An open mesh is refused below: no convex hull (qhull) is computed for it.
+  closed.inertia.open_mesh_model = MeshSolidModel::kClosedSolid;
+  return [closed](const Link& link) -> std::optional<LinkShape> {
+    for (const bool collision : {false, true}) {
+      std::vector<GeometryMassProperties> parts;
+      bool usable = true;
+      for (const Geometry& geometry : link.geometries) {
+        if (geometry.is_collision != collision) continue;
+        if (geometry.type != Geometry::Type::kMesh) {
+          usable = false;
+          break;
+        }
+        std::optional<GeometryMassProperties> part =
+            CalcGeometryMassProperties(geometry, closed, nullptr);
+        // Watertight: a closed manifold, or a surface that encloses its volume despite
+        // T-junctions or cracks of no area (its integral does not depend on the reference point),
+        // as CAD exports' STL files are (every mesh of TheRobotStudio/SO-ARM100's raw export).
+        const bool watertight =
+            part && part->mesh_diagnostics &&
+            (part->mesh_diagnostics->IsClosedManifold() ||
+             part->mesh_diagnostics->reference_point_sensitivity <=
+                 closed.inertia.closure_tolerance);
+        if (!watertight || !(part->volume > 0) || !std::isfinite(part->volume)) {
+          usable = false;
+          break;
+        }
+        parts.push_back(std::move(*part));
+      }
+      if (!usable || parts.empty()) continue;
+      LinkShape shape;
+      shape.from_collision = collision;
+      shape.kind = "mesh";
+      Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+      for (const GeometryMassProperties& part : parts) {
+        shape.volume += part.volume;
+        moment += part.volume * part.p_BoGcm_B;
+        shape.box_B.extend(part.box_B);
+      }
+      shape.p_BoBcm_B = moment / shape.volume;
+      Eigen::Matrix3d I = Eigen::Matrix3d::Zero();  // at density 1: mass = volume
+      for (const GeometryMassProperties& part : parts) {
+        const Eigen::Vector3d d = part.p_BoGcm_B - shape.p_BoBcm_B;
+        I += part.I_GGcm_B.CopyToFullMatrix3() +
+             part.volume * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+      }
+      shape.G_BBcm_B = I / shape.volume;
+      if (!shape.G_BBcm_B.allFinite() || !shape.p_BoBcm_B.allFinite()) return std::nullopt;
+      return shape;
+    }
+    return std::nullopt;
+  };
+}
+
 const std::vector<RuleInfo>& GeometryRules() {
   static const std::vector<RuleInfo> rules = {
       {kInertiaDisagreesWithGeometryRule, Severity::kWarning, false,

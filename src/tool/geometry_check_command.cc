@@ -82,6 +82,7 @@ void UseGeometryShapes(const Model& model, const std::vector<std::string>& model
       MakeResolveOptions(args.package_paths, model_paths, model.file, &args.cache);
   if (args.enabled) options->shape = MakeLinkShapeFunction(resolve);
   options->box = MakeLinkBoxFunction(resolve);
+  options->closed_mesh = MakeClosedMeshShapeFunction(resolve);  // the density rules
 }
 
 void CountMeshLinks(const Model& model, const std::vector<std::string>& model_paths,

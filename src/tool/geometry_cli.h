@@ -29,7 +29,8 @@ void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted);
 
 /// By default sets options->box to the meshes' bounding boxes (MakeLinkBoxFunction, the run's
 /// mesh cache), so that CheckModel judges mesh-only links against their size; with --geometry
-/// also options->shape to a mesh-reading LinkShapeFunction (the meshes' mass properties). With
+/// also options->shape to a mesh-reading LinkShapeFunction (the meshes' mass properties); and
+/// options->closed_mesh (MakeClosedMeshShapeFunction) for the density rules. With
 /// --no-geometry leaves `options` unchanged.
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
                        CheckOptions* options);
