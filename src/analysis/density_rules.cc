@@ -89,7 +89,7 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
                         Num(d.volume) + " m³ of " + what + " is a density of " + Num(rho) +
                         " kg/m³, ";
   if (rho < kMinSolidDensity) {
-    message += "below " + Num(kMinSolidDensity) +
+    message += "below 100"
                " kg/m³: only foams and aerogels are that light (a placeholder mass?)";
     const double millimetres = rho * 1e9;
     if (millimetres >= kMinSolidDensity && millimetres <= kMaxSolidDensity) {
@@ -97,7 +97,7 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
                  "would be " + Num(millimetres) + " kg/m³";
     }
   } else {
-    message += "above " + Num(kMaxSolidDensity) +
+    message += "above 22 590"
                " kg/m³ (osmium, the densest element): no material is that dense; the link may "
                "carry mass its mesh does not show (a motor, a payload lumped onto it), or the "
                "mass is in the wrong unit";
