@@ -54,7 +54,7 @@ LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve);
 /// two triangles wound in opposite directions; or a surface that encloses its volume despite
 /// T-junctions or cracks of no area: reference_point_sensitivity <= closure_tolerance, 1e-6, as
 /// the STL files of CAD exports are), as one uniform solid (volumes summed, overlaps
-/// counted twice; LinkShape::kind "mesh"). The visual set comes first because a CAD export's
+/// counted twice; LinkShape::kind "mesh", box_B left empty). The visual set comes first: a CAD export's
 /// visual mesh is the part's own surface (the solid its mass was computed from), where collision
 /// meshes are often simplified. nullopt when neither set qualifies (a primitive, an open mesh, a
 /// mesh that does not resolve). For the density rules (CheckOptions::closed_mesh) and
