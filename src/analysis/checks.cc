@@ -1330,9 +1330,9 @@ const std::vector<RuleInfo>& AllRules() {
   // rule id is known to the tool, the configuration file and SARIF.
   static const std::vector<RuleInfo> kAll = [] {
     std::vector<RuleInfo> all = kRules;
+    all.insert(all.end(), DensityRules().begin(), DensityRules().end());  // density_rules.h
     all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
-    all.insert(all.end(), DensityRules().begin(), DensityRules().end());  // density_rules.h
     return all;
   }();
   return kAll;
