@@ -181,6 +181,16 @@ TEST_F(FixMassCliTest, BareFixAndABareDensityChangeNothingHere) {
   }
 }
 
+TEST_F(FixMassCliTest, AMassThatDrawsAWarningIsWrittenAndSaidSo) {
+  // 6 kg to 0.006 kg: upper gets 0.002 kg on its 0.006 m³ mesh, 0.33 kg/m³ (below 100).
+  const ToolRun run = Run("fix --total-mass 0.006 -o '" + Path("light.urdf") + "' '" +
+                          Path("arm.urdf") + "'");
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("note: after the repairs asked for, warning [density-implausible]"),
+            std::string::npos)
+      << run.err;
+}
+
 TEST_F(FixMassCliTest, WrongOptionsExitTwoWithTheReason) {
   const std::string file = Path("arm.urdf");
   struct Case {

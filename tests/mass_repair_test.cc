@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "massprops/analysis/checks.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/materials.h"
 #include "massprops/io/model_reader.h"
@@ -165,6 +166,43 @@ TEST(MassRepairTest, WrongRequestsAreRefusedWithTheReason) {
   no_mesh.link_densities = {{"base", 1000, ""}};
   EXPECT_FALSE(PlanMassRepairs(model, no_mesh, &repairs, &error));
   EXPECT_NE(error.find("no closed mesh"), std::string::npos) << error;
+}
+
+// A link with both a mass repair and an error repair gets one repair, from the file's numbers to
+// the projected scaled inertia (the way massprops fix plans them: mass first, then the errors).
+TEST(MassRepairTest, ChainedWithTheProjectionOfAnInvalidInertia) {
+  const ReadResult read = ReadModelString(
+      "<robot name='r'><link name='a'><inertial><mass value='1'/>"
+      "<inertia ixx='0.1' iyy='0.2' izz='0.5' ixy='0' ixz='0' iyz='0'/></inertial></link>"
+      "<link name='b'><inertial><mass value='1'/>"
+      "<inertia ixx='0.1' iyy='0.1' izz='0.1' ixy='0' ixz='0' iyz='0'/></inertial></link>"
+      "<joint name='j' type='revolute'><parent link='a'/><child link='b'/><axis xyz='0 0 1'/>"
+      "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint></robot>",
+      "chain.urdf");
+  ASSERT_TRUE(read.ok());
+  const Model& model = read.models[0];
+  MassRepairOptions options;
+  options.total_mass = 4;  // 2 kg to 4 kg: k = 2
+  std::vector<Repair> mass;
+  std::string error;
+  ASSERT_TRUE(PlanMassRepairs(model, options, &mass, &error)) << error;
+  const Model scaled = ApplyRepairs(model, mass);
+  const std::vector<Repair> errors = PlanRepairs(scaled, CheckModel(scaled));
+  const std::vector<Repair> chained = ChainRepairs(model, mass, errors);
+  ASSERT_EQ(chained.size(), 2u);
+  const Repair& a = chained[0];
+  EXPECT_EQ(a.link, "a");
+  EXPECT_EQ(a.rule, "--total-mass");
+  EXPECT_EQ(a.method, "scale+project");
+  EXPECT_EQ(a.before->ixx, 0.1);  // from the file's numbers
+  EXPECT_EQ(a.after.mass, 2);
+  // diag(0.2, 0.4, 1.0) fails 0.2 + 0.4 >= 1.0 by 0.4: the nearest valid inertia moves each
+  // moment by 0.4/3 along (1, 1, -1) (docs/fix.md): 0.333333, 0.533333, 0.866667.
+  EXPECT_NEAR(a.after.ixx, 0.2 + 0.4 / 3, 1e-6);
+  EXPECT_NEAR(a.after.iyy, 0.4 + 0.4 / 3, 1e-6);
+  EXPECT_NEAR(a.after.izz, 1.0 - 0.4 / 3, 1e-6);
+  EXPECT_EQ(chained[1].method, "scale");
+  EXPECT_EQ(chained[1].after.ixx, 0.2);
 }
 
 TEST(MaterialsTest, TableHoldsTheCitedValuesAndOtherSpellings) {

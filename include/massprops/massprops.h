@@ -30,14 +30,19 @@
 // analysis
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
+#include "massprops/analysis/density_rules.h"
+#include "massprops/analysis/fix_effect.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/link_shape.h"
+#include "massprops/analysis/mass_repair.h"
 #include "massprops/analysis/mass_report.h"
+#include "massprops/analysis/materials.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/analysis/welded_groups.h"
 
 // output
+#include "massprops/output/fix_report.h"
 #include "massprops/output/merge_fixed.h"
 #include "massprops/output/report_format.h"
 #include "massprops/output/reporters.h"

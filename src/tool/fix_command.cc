@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -575,10 +576,26 @@ bool WriteFixOutputs(const FixArgs& args, const FixInput& input, const PatchResu
 // The effect of the repairs on the whole robot (fix_effect.h), for the mass repairs or
 // --format json: JSON on standard output; text on standard output with --dry-run, else on
 // standard error (standard output may carry the file or its diff).
-void PrintFixEffect(const FixArgs& args, const FixInput& input, const RepairPlan& plan,
-                    const ReadResult& reread, bool changed) {
+void PrintFixEffect(const FixArgs& args, const FixInput& input, const FixSetup& setup,
+                    const RepairPlan& plan, const ReadResult& reread, bool changed) {
   const bool json = args.format == "json";
   if (!json && !args.mass.any()) return;
+  // A mass asked for by name is written even when the result draws a warning the file did not
+  // have (e.g. density-implausible for a total no material reaches): the engineer's number wins,
+  // and this says so.
+  if (args.mass.any()) {
+    for (std::size_t i = 0; i < input.read.models.size() && i < reread.models.size(); ++i) {
+      std::set<std::pair<std::string, std::string>> before;
+      for (const Finding& f : CheckModel(input.read.models[i], setup.check)) {
+        before.insert({f.link, f.rule});
+      }
+      for (const Finding& f : CheckModel(reread.models[i], setup.check)) {
+        if (f.severity == Severity::kNote || before.count({f.link, f.rule})) continue;
+        std::cerr << "massprops: note: after the repairs asked for, " << ToString(f.severity)
+                  << " [" << f.rule << "]: " << f.message << "\n";
+      }
+    }
+  }
   std::vector<std::string> changed_links;
   for (const Repair& r : plan.repairs) changed_links.push_back(r.link);
   std::vector<FixEffect> effects;
@@ -653,7 +670,7 @@ int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
     }
     for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
-  PrintFixEffect(args, input, plan, reread, changed);
+  PrintFixEffect(args, input, setup, plan, reread, changed);
   std::cout.flush();
   PrintFixSummary(args, input.name, plan, patched, changed, included, remaining_errors);
   return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
