@@ -130,8 +130,7 @@ TEST(DensityRulesTest, SilentOnTheCorpusDoublePendulumWhoseMaterialsWereSet) {
   if (!std::filesystem::exists(file)) GTEST_SKIP() << "no corpus at " << corpus;
   MeshCache cache;
   const Model model = Read(file);
-  const std::vector<Finding> findings =
-      CheckWithMeshes(model, {corpus}, &cache);
+  const std::vector<Finding> findings = CheckWithMeshes(model, {corpus}, &cache);
   EXPECT_TRUE(Of(findings, kCadDefaultDensityRule).empty());
   EXPECT_TRUE(Of(findings, kDensityImplausibleRule).empty());
   // The densities over the STL volumes, as the issue measured them (and a separate numpy-free

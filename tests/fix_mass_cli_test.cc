@@ -93,8 +93,8 @@ class FixMassCliTest : public ::testing::Test {
     EXPECT_NE(fixed, ReadFile(file));
     const auto before = Findings(file);
     for (const auto& finding : Findings(out)) {
-      EXPECT_TRUE(before.count(finding)) << "new finding " << finding.first << " on '"
-                                         << finding.second << "'";
+      EXPECT_TRUE(before.count(finding))
+          << "new finding " << finding.first << " on '" << finding.second << "'";
     }
     const std::string again = (dir_ / "mass" / "again.urdf").string();
     const ToolRun second = Run("fix " + options + " -o '" + again + "' '" + out + "'");
@@ -162,8 +162,7 @@ TEST_F(FixMassCliTest, CadDefaultDensityIsGoneAfterTheMaterialsAreSet) {
   const std::string file = Path("cad_default.urdf");
   EXPECT_TRUE(Findings(file).count({"cad-default-density", ""}));
   const std::string out = Path("pla.urdf");
-  const ToolRun run =
-      Run("fix --material a=pla --material b=pla -o '" + out + "' '" + file + "'");
+  const ToolRun run = Run("fix --material a=pla --material b=pla -o '" + out + "' '" + file + "'");
   ASSERT_EQ(run.code, 0) << run.err;
   EXPECT_TRUE(Findings(out).empty());
   // --density LINK=RHO is the same as a material of that density.
@@ -183,8 +182,8 @@ TEST_F(FixMassCliTest, BareFixAndABareDensityChangeNothingHere) {
 
 TEST_F(FixMassCliTest, AMassThatDrawsAWarningIsWrittenAndSaidSo) {
   // 6 kg to 0.006 kg: upper gets 0.002 kg on its 0.006 m³ mesh, 0.33 kg/m³ (below 100).
-  const ToolRun run = Run("fix --total-mass 0.006 -o '" + Path("light.urdf") + "' '" +
-                          Path("arm.urdf") + "'");
+  const ToolRun run =
+      Run("fix --total-mass 0.006 -o '" + Path("light.urdf") + "' '" + Path("arm.urdf") + "'");
   EXPECT_EQ(run.code, 0) << run.err;
   EXPECT_NE(run.err.find("note: after the repairs asked for, warning [density-implausible]"),
             std::string::npos)

@@ -79,8 +79,7 @@ TEST(MassRepairTest, MassOfOneLinkWithTotalMassGivesTheOthersOneCommonFactor) {
   std::string error;
   ASSERT_TRUE(PlanMassRepairs(model, options, &repairs, &error)) << error;
   ASSERT_EQ(repairs.size(), 3u);
-  ExpectScaled(*model.links[model.FindLink("tool")].inertial, RepairOf(repairs, "tool")->after,
-               2);
+  ExpectScaled(*model.links[model.FindLink("tool")].inertial, RepairOf(repairs, "tool")->after, 2);
   EXPECT_EQ(RepairOf(repairs, "tool")->rule, "--mass");
   ExpectScaled(*model.links[model.FindLink("base")].inertial, RepairOf(repairs, "base")->after,
                1.5);

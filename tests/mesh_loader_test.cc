@@ -474,7 +474,8 @@ TEST(MeshLoaderTest, StlReadDirectlyGivesTheSameMassProperties) {
   const std::string corpus = std::string(MASSPROPS_CORPUS_DIR) +
                              "/example-robot-data/robots/double_pendulum_description/meshes/";
   if (fs::exists(corpus)) {
-    for (const char* name : {"base_link.stl", "link1.stl", "link2.stl"}) files.push_back(corpus + name);
+    for (const char* name : {"base_link.stl", "link1.stl", "link2.stl"})
+      files.push_back(corpus + name);
   }
   for (const std::string& file : files) {
     MeshCache cache;
@@ -493,7 +494,8 @@ TEST(MeshLoaderTest, StlReadDirectlyGivesTheSameMassProperties) {
     EXPECT_EQ(d->diagnostics.num_triangles, a->diagnostics.num_triangles) << file;
     EXPECT_EQ(d->diagnostics.boundary_edges, a->diagnostics.boundary_edges) << file;
     EXPECT_EQ(d->diagnostics.reference_point_sensitivity == 0,
-              a->diagnostics.reference_point_sensitivity == 0) << file;
+              a->diagnostics.reference_point_sensitivity == 0)
+        << file;
     if (file == files[0]) {
       EXPECT_EQ(d->diagnostics.num_vertices, 36);
       EXPECT_EQ(d->diagnostics.duplicate_vertices_merged, 28);

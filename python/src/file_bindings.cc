@@ -603,9 +603,10 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
   std::vector<Repair> mass_repairs;
   if (mass.any()) {
     if (models.size() != 1) {
-      throw py::value_error("fix: total_mass, mass, density={link: ...} and material work on a "
-                            "file with one model; " + source.path + " has " +
-                            std::to_string(models.size()));
+      throw py::value_error(
+          "fix: total_mass, mass, density={link: ...} and material work on a "
+          "file with one model; " +
+          source.path + " has " + std::to_string(models.size()));
     }
     mass.closed_mesh = MakeClosedMeshShapeFunction(resolve);
     check_options.closed_mesh = mass.closed_mesh;

@@ -1331,7 +1331,7 @@ const std::vector<RuleInfo>& AllRules() {
   static const std::vector<RuleInfo> kAll = [] {
     std::vector<RuleInfo> all = kRules;
     all.insert(all.end(), DensityRules().begin(), DensityRules().end());  // density_rules.h
-    all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
+    all.insert(all.end(), TargetRules().begin(), TargetRules().end());    // --target (issue 16)
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
     return all;
   }();

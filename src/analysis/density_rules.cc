@@ -52,8 +52,8 @@ struct LinkDensity {
 std::string MassesAt(double volume, double other_mass = 0) {
   std::string text;
   for (const Material& m : CommonMaterials()) {
-    text += (text.empty() ? "" : ", ") + m.label + " " + Num(m.density * volume + other_mass) +
-            " kg";
+    text +=
+        (text.empty() ? "" : ", ") + m.label + " " + Num(m.density * volume + other_mass) + " kg";
   }
   return text;
 }
@@ -89,18 +89,22 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
                         Num(d.volume) + " m³ of " + what + " is a density of " + Num(rho) +
                         " kg/m³, ";
   if (rho < kMinSolidDensity) {
-    message += "below 100"
-               " kg/m³: only foams and aerogels are that light (a placeholder mass?)";
+    message +=
+        "below 100"
+        " kg/m³: only foams and aerogels are that light (a placeholder mass?)";
     const double millimetres = rho * 1e9;
     if (millimetres >= kMinSolidDensity && millimetres <= kMaxSolidDensity) {
-      message += "; were the mesh in millimetres without scale=\"0.001 0.001 0.001\", the part "
-                 "would be " + Num(millimetres) + " kg/m³";
+      message +=
+          "; were the mesh in millimetres without scale=\"0.001 0.001 0.001\", the part "
+          "would be " +
+          Num(millimetres) + " kg/m³";
     }
   } else {
-    message += "above 22 590"
-               " kg/m³ (osmium, the densest element): no material is that dense; the link may "
-               "carry mass its mesh does not show (a motor, a payload lumped onto it), or the "
-               "mass is in the wrong unit";
+    message +=
+        "above 22 590"
+        " kg/m³ (osmium, the densest element): no material is that dense; the link may "
+        "carry mass its mesh does not show (a motor, a payload lumped onto it), or the "
+        "mass is in the wrong unit";
   }
   message += "; at common densities the mesh's volume says: " + MassesAt(d.volume) +
              " (massprops fix --material " + link.name + "=NAME sets one, or --mass " + link.name +
@@ -135,8 +139,11 @@ std::optional<Finding> CheckCadDefault(const Model& model, const std::vector<Lin
   const double others = std::max(0.0, total - counted_mass);
   std::string message =
       "no material was assigned in the CAD export (SolidWorks' default density of 1000 kg/m³): "
-      "the " + std::to_string(counted.size()) + " links with closed meshes all have mass = mesh "
-      "volume × 1000 kg/m³ (" + Num(lowest) + " to " + Num(highest) + " kg/m³, within " +
+      "the " +
+      std::to_string(counted.size()) +
+      " links with closed meshes all have mass = mesh "
+      "volume × 1000 kg/m³ (" +
+      Num(lowest) + " to " + Num(highest) + " kg/m³, within " +
       Num(100 * kCadDefaultDensityTolerance) + "%), so the model's " + Num(total) +
       " kg is what it would weigh made of water; made of one material it would weigh " +
       MassesAt(volume, others) +

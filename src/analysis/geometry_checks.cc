@@ -119,11 +119,10 @@ LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve)
         // Watertight: a closed manifold, or a surface that encloses its volume despite
         // T-junctions or cracks of no area (its integral does not depend on the reference point),
         // as CAD exports' STL files are (every mesh of TheRobotStudio/SO-ARM100's raw export).
-        const bool watertight =
-            part && part->mesh_diagnostics &&
-            (part->mesh_diagnostics->IsClosedManifold() ||
-             part->mesh_diagnostics->reference_point_sensitivity <=
-                 closed.inertia.closure_tolerance);
+        const bool watertight = part && part->mesh_diagnostics &&
+                                (part->mesh_diagnostics->IsClosedManifold() ||
+                                 part->mesh_diagnostics->reference_point_sensitivity <=
+                                     closed.inertia.closure_tolerance);
         if (!watertight || !(part->volume > 0) || !std::isfinite(part->volume)) {
           usable = false;
           break;

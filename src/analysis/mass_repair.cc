@@ -89,13 +89,12 @@ bool FromClosedMesh(const Model& model, const Link& link, const Request& request
   after.ixz = std::abs(I(0, 2)) <= noise ? 0 : 0.5 * (I(0, 2) + I(2, 0));
   after.iyz = std::abs(I(1, 2)) <= noise ? 0 : 0.5 * (I(1, 2) + I(2, 1));
   ScaleInertia(1, &after);
-  const std::string what =
-      (request.material.empty() ? "density " : request.material + " (") + Short(request.value) +
-      " kg/m³" + (request.material.empty() ? "" : ")");
+  const std::string what = (request.material.empty() ? "density " : request.material + " (") +
+                           Short(request.value) + " kg/m³" + (request.material.empty() ? "" : ")");
   *repair = MakeRepair(model, link, option, "from-closed-mesh", after,
-                       "mass = " + what + " × volume " + Short(shape->volume) + " m³ of its closed " +
-                           (shape->from_collision ? "collision" : "visual") + " mesh = " +
-                           Short(after.mass) +
+                       "mass = " + what + " × volume " + Short(shape->volume) +
+                           " m³ of its closed " + (shape->from_collision ? "collision" : "visual") +
+                           " mesh = " + Short(after.mass) +
                            " kg, with the mesh's center of mass and inertia (solid, uniform)");
   return true;
 }
@@ -139,8 +138,8 @@ bool PlanMassRepairs(const Model& model, const MassRepairOptions& options,
   }
 
   std::map<std::string, Repair> by_link;
-  double fixed = 0;      // the mass of the links --total-mass does not scale
-  double scalable = 0;   // the mass of those it scales
+  double fixed = 0;     // the mass of the links --total-mass does not scale
+  double scalable = 0;  // the mass of those it scales
   for (const Link& link : model.links) {
     const auto it = requests.find(link.name);
     const double mass = LinkMassProperties(link, model.format).mass;
@@ -185,14 +184,14 @@ bool PlanMassRepairs(const Model& model, const MassRepairOptions& options,
     const double total = *options.total_mass;
     const double rest = total - fixed;
     if (!(rest > 0)) {
-      *error = "--total-mass " + Short(total) + " kg: the links whose masses are fixed (by --mass, "
-               "--density, --material, or SDF's default 1 kg) already weigh " + Short(fixed) +
-               " kg";
+      *error = "--total-mass " + Short(total) +
+               " kg: the links whose masses are fixed (by --mass, "
+               "--density, --material, or SDF's default 1 kg) already weigh " +
+               Short(fixed) + " kg";
       return false;
     }
     if (!(scalable > 0)) {
-      *error = "--total-mass " + Short(total) +
-               " kg: no other link has a positive mass to scale";
+      *error = "--total-mass " + Short(total) + " kg: no other link has a positive mass to scale";
       return false;
     }
     const double k = rest / scalable;

@@ -10,8 +10,7 @@ const std::vector<Material>& CommonMaterials() {
       {"aluminium-6061", "aluminium 6061", 2700,
        "Aluminum Association typical value for 6061-T6 (2.70 g/cm³, ASM/MatWeb data sheet "
        "'Aluminum 6061-T6; 6061-T651')"},
-      {"steel", "steel", 7850,
-       "EN 1993-1-1 (Eurocode 3) §3.2.6: structural steel, 7850 kg/m³"},
+      {"steel", "steel", 7850, "EN 1993-1-1 (Eurocode 3) §3.2.6: structural steel, 7850 kg/m³"},
       {"pla", "PLA", 1240, "NatureWorks Ingeo 4043D technical data sheet: specific gravity 1.24"},
       {"abs", "ABS", 1040, "Stratasys ABS-M30 data sheet: specific gravity 1.04"},
       {"petg", "PETG", 1270, "Eastman Eastar copolyester 6763 data sheet: 1.27 g/cm³"},

@@ -260,10 +260,9 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
                                                             const MeshInertiaOptions& options,
                                                             std::string* error) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto key = std::make_tuple(path, scale.x(), scale.y(), scale.z(),
-                                   static_cast<int>(options.open_mesh_model),
-                                   options.shell_thickness, options.closure_tolerance,
-                                   options.read_stl_directly);
+  const auto key = std::make_tuple(
+      path, scale.x(), scale.y(), scale.z(), static_cast<int>(options.open_mesh_model),
+      options.shell_thickness, options.closure_tolerance, options.read_stl_directly);
   if (auto found = properties_.find(key); found != properties_.end()) return found->second;
   std::shared_ptr<const TriangleMesh> mesh;
   if (options.read_stl_directly) {

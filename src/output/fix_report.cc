@@ -70,8 +70,7 @@ std::string RenderFixEffectText(const FixEffect& effect) {
   return text;
 }
 
-std::string RenderFixJson(const std::string& file, bool changed,
-                          const std::vector<Repair>& repairs,
+std::string RenderFixJson(const std::string& file, bool changed, const std::vector<Repair>& repairs,
                           const std::vector<FixEffect>& effects) {
   json doc;
   doc["file"] = file;
@@ -103,10 +102,10 @@ std::string RenderFixJson(const std::string& file, bool changed,
                         {"before", Body(g.before)},
                         {"after", Body(g.after)}});
     }
-    doc["effects"].push_back({{"model", e.model},
-                              {"total", {{"before", Body(e.total.before)},
-                                         {"after", Body(e.total.after)}}},
-                              {"groups", groups}});
+    doc["effects"].push_back(
+        {{"model", e.model},
+         {"total", {{"before", Body(e.total.before)}, {"after", Body(e.total.after)}}},
+         {"groups", groups}});
   }
   return doc.dump(2) + "\n";
 }

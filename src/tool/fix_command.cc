@@ -63,11 +63,11 @@ struct FixArgs {
   double density = kDefaultDensity;
   // --density RHO (a bare number: the density above) or LINK=RHO (repeatable), as written.
   std::vector<std::string> density_args;
-  std::optional<double> total_mass;      // --total-mass KG
-  std::vector<std::string> mass_args;    // --mass LINK=KG
+  std::optional<double> total_mass;        // --total-mass KG
+  std::vector<std::string> mass_args;      // --mass LINK=KG
   std::vector<std::string> material_args;  // --material LINK=NAME
-  std::string format = "text";           // --format text|json
-  MassRepairOptions mass;                // filled from the four above by ParseMassOptions
+  std::string format = "text";             // --format text|json
+  MassRepairOptions mass;                  // filled from the four above by ParseMassOptions
   bool from_geometry = false;
   std::vector<std::string> from_geometry_links;
   double tolerance = 1e-6;
@@ -118,7 +118,8 @@ bool ParseMassOptions(FixArgs* args) {
       const std::optional<double> rho = ParsePositive(text);
       if (!rho || ++bare > 1) {
         std::cerr << "massprops: error: --density must be a positive number of kg/m³ (given once) "
-                     "or LINK=KG_PER_M3, got '" << text << "'\n";
+                     "or LINK=KG_PER_M3, got '"
+                  << text << "'\n";
         return false;
       }
       args->density = *rho;
@@ -167,7 +168,7 @@ bool ParseMassOptions(FixArgs* args) {
     return false;
   }
   if (args->format == "json" && (args->diff || (!args->dry_run && !args->in_place &&
-                                                 (args->output.empty() || args->output == "-")))) {
+                                                (args->output.empty() || args->output == "-")))) {
     std::cerr << "massprops: error: --format json prints on standard output: use it with "
                  "--dry-run, -o OUT or --in-place, and without --diff\n";
     return false;
@@ -777,7 +778,8 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
       ->allow_extra_args(false);
   fix->add_option("--material", args->material_args,
                   "That link's mass and inertia from its closed mesh at the material's density "
-                  "(repeatable): " + MaterialNames())
+                  "(repeatable): " +
+                      MaterialNames())
       ->type_name("LINK=NAME")
       ->allow_extra_args(false);
   fix->add_option("--format", args->format,

@@ -43,9 +43,9 @@ struct LinkDensityRequest {
 };
 
 struct MassRepairOptions {
-  std::optional<double> total_mass;                        ///< kg, > 0 (--total-mass).
+  std::optional<double> total_mass;                         ///< kg, > 0 (--total-mass).
   std::vector<std::pair<std::string, double>> link_masses;  ///< (link, kg > 0) (--mass).
-  std::vector<LinkDensityRequest> link_densities;          ///< --density LINK=, --material.
+  std::vector<LinkDensityRequest> link_densities;           ///< --density LINK=, --material.
   /// The link's closed meshes as a solid (MakeClosedMeshShapeFunction); needed by
   /// link_densities.
   LinkShapeFunction closed_mesh;

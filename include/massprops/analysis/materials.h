@@ -12,10 +12,10 @@ namespace massprops {
 
 /// One material: its name on the command line, its density and the source of that value.
 struct Material {
-  std::string name;     ///< Lower-case, e.g. "aluminium-6061".
-  std::string label;    ///< For messages, e.g. "aluminium 6061".
-  double density = 0;   ///< kg/m³.
-  std::string source;   ///< Where the value comes from (a data sheet or a standard).
+  std::string name;    ///< Lower-case, e.g. "aluminium-6061".
+  std::string label;   ///< For messages, e.g. "aluminium 6061".
+  double density = 0;  ///< kg/m³.
+  std::string source;  ///< Where the value comes from (a data sheet or a standard).
 };
 
 /// The table, in a stable order: aluminium-6061 2700, steel 7850, pla 1240, abs 1040, petg 1270,

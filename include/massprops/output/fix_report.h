@@ -21,8 +21,7 @@ std::string RenderFixEffectText(const FixEffect& effect);
 /// "new"}]}], "effects": [{"model", "total": {"before", "after"}, "groups": [{"root_link",
 /// "links", "before", "after"}]}]}; a body is {"frame", "mass", "com", "inertia_about_com",
 /// "principal_moments"} as in `massprops report --format json` (numbers round-trip exactly).
-std::string RenderFixJson(const std::string& file, bool changed,
-                          const std::vector<Repair>& repairs,
+std::string RenderFixJson(const std::string& file, bool changed, const std::vector<Repair>& repairs,
                           const std::vector<FixEffect>& effects);
 
 }  // namespace massprops
