@@ -18,7 +18,7 @@ from __future__ import annotations
 import dataclasses
 import os
 import tempfile
-from typing import Iterable, Mapping, Optional, Sequence, Union
+from typing import Dict, Iterable, Mapping, Optional, Sequence, Union
 
 from ._massprops import (  # noqa: F401  (re-exported)
     DEFAULT_VALIDITY_TOLERANCE,
@@ -198,10 +198,12 @@ def _write_atomically(path: str, text: str, mode: Optional[int]) -> None:
 
 def fix(path_or_text: PathOrText, apply: Iterable[str] = (), dry_run: bool = True, *,
         output: Optional[Union[str, "os.PathLike[str]"]] = None, backup: Optional[str] = None,
-        repair: str = "project", fix_units: bool = False, density: float = 1000.0,
+        repair: str = "project", fix_units: bool = False,
+        density: Union[float, Mapping[str, float]] = 1000.0,
         from_geometry: Union[bool, str, Sequence[str]] = False, tolerance: float = 1e-6,
         geometry: bool = False, package_paths: Sequence[str] = (),
-        model_paths: Sequence[str] = ()) -> FixResult:
+        model_paths: Sequence[str] = (), total_mass: Optional[float] = None,
+        mass: Mapping[str, float] = {}, material: Mapping[str, str] = {}) -> FixResult:
     """Repairs the mass properties that have a known remedy; returns a FixResult.
 
     Physics decides by default: every error finding with a remedy is repaired
@@ -209,6 +211,14 @@ def fix(path_or_text: PathOrText, apply: Iterable[str] = (), dry_run: bool = Tru
     units-suspect, products-sign-suspect, inertia-about-origin-suspect) runs only when its rule
     id is named in `apply`. from_geometry: True (every link with usable geometry) or link names:
     replace their inertials by their geometry's (`fix --from-geometry`).
+
+    The mass repairs of `massprops fix` (docs/fix.md), each only when given: total_mass (kg,
+    `--total-mass`: every link's mass and inertia times one factor), mass ({link: kg},
+    `--mass LINK=KG`), density as {link: kg/m³} (`--density LINK=RHO`; a number keeps its old
+    meaning: the density of masses computed from geometry) and material ({link: name},
+    `--material LINK=NAME`: aluminium-6061, steel, pla, abs, petg, nylon, carbon-fibre).
+
+    >>> massprops.fix("arm.urdf", total_mass=10.5, mass={"tool": 6.0})
 
     Nothing is written unless dry_run=False: then the repaired text goes to `output` when given,
     else over the input file (through a temporary file renamed when complete, keeping the
@@ -221,10 +231,17 @@ def fix(path_or_text: PathOrText, apply: Iterable[str] = (), dry_run: bool = Tru
     """
     if isinstance(apply, str):
         apply = [a for a in apply.split(",") if a]
+    link_densities: Dict[str, float] = {}
+    if isinstance(density, Mapping):
+        link_densities = {str(k): float(v) for k, v in density.items()}
+        density = 1000.0
     result = _massprops._fix(
         path_or_text, _strings(apply, "apply"), repair, bool(fix_units), float(density),
         from_geometry, float(tolerance), bool(geometry), _strings(package_paths, "package_paths"),
-        _strings(model_paths, "model_paths"))
+        _strings(model_paths, "model_paths"),
+        None if total_mass is None else float(total_mass),
+        {str(k): float(v) for k, v in mass.items()}, link_densities,
+        {str(k): str(v) for k, v in material.items()})
     if dry_run:
         if output is not None or backup is not None:
             raise ValueError("fix: output and backup need dry_run=False")

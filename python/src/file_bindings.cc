@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -22,7 +23,9 @@
 #include "massprops/analysis/config.h"
 #include "massprops/analysis/finding_sources.h"
 #include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/mass_repair.h"
 #include "massprops/analysis/mass_report.h"
+#include "massprops/analysis/materials.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/rotational_inertia.h"
@@ -583,12 +586,43 @@ void RecheckFixedText(const std::string& path, const std::vector<std::string>& m
   }
 }
 
+// The mass repairs asked for (fix --total-mass, --mass, --density LINK=, --material); raises
+// ValueError for a number that is not positive or a material not in the table.
+MassRepairOptions MakeMassOptions(const std::optional<double>& total_mass,
+                                  const std::map<std::string, double>& link_masses,
+                                  const std::map<std::string, double>& link_densities,
+                                  const std::map<std::string, std::string>& materials) {
+  MassRepairOptions mass;
+  if (total_mass) {
+    if (!(*total_mass > 0) || !std::isfinite(*total_mass)) {
+      throw py::value_error("fix: total_mass must be a positive number of kg, got " +
+                            Repr(*total_mass));
+    }
+    mass.total_mass = *total_mass;
+  }
+  for (const auto& [link, kg] : link_masses) mass.link_masses.emplace_back(link, kg);
+  for (const auto& [link, rho] : link_densities) mass.link_densities.push_back({link, rho, ""});
+  for (const auto& [link, name] : materials) {
+    const Material* material = FindMaterial(name);
+    if (material == nullptr) {
+      throw py::value_error("fix: material['" + link + "'] = '" + name + "' is not one of " +
+                            MaterialNames());
+    }
+    mass.link_densities.push_back({link, material->density, material->label});
+  }
+  return mass;
+}
+
 // The engine of massprops.fix: checks the arguments, plans and writes the repairs, re-checks.
 FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& apply,
               const std::string& repair, bool fix_units, double density,
               const py::object& from_geometry_arg, double tolerance, bool geometry,
               const std::vector<std::string>& package_paths,
-              const std::vector<std::string>& model_paths) {
+              const std::vector<std::string>& model_paths, const std::optional<double>& total_mass,
+              const std::map<std::string, double>& link_masses,
+              const std::map<std::string, double>& link_densities,
+              const std::map<std::string, std::string>& materials) {
+  MassRepairOptions mass = MakeMassOptions(total_mass, link_masses, link_densities, materials);
   const Source source = ToSource(source_arg, "fix");
   const FromGeometry from_geometry =
       CheckFixArguments(apply, repair, density, tolerance, from_geometry_arg);
@@ -613,8 +647,29 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
   options.box = MakeLinkBoxFunction(resolve);  // as `massprops fix` by default
   check_options.box = options.box;
 
+  // The mass repairs asked for by name first; the others are planned on their result.
+  std::vector<Model> planned_models = models;
+  std::vector<Repair> mass_repairs;
+  if (mass.any()) {
+    if (models.size() != 1) {
+      throw py::value_error(
+          "fix: total_mass, mass, density={link: ...} and material work on a "
+          "file with one model; " +
+          source.path + " has " + std::to_string(models.size()));
+    }
+    mass.closed_mesh = MakeClosedMeshShapeFunction(resolve);
+    check_options.closed_mesh = mass.closed_mesh;
+    std::string error;
+    if (!PlanMassRepairs(models.front(), mass, &mass_repairs, &error)) {
+      throw py::value_error("fix: " + error);
+    }
+    planned_models.front() = ApplyRepairs(models.front(), mass_repairs);
+  }
   const std::vector<std::string> known_links =
-      PlanFixRepairs(models, apply, check_options, options, &result);
+      PlanFixRepairs(planned_models, apply, check_options, options, &result);
+  if (!mass_repairs.empty()) {
+    result.changes = ChainRepairs(models.front(), mass_repairs, result.changes);
+  }
   WarnUnrepairedGeometryLinks(models, known_links, from_geometry.links, resolve, source.path,
                               &result);
   PatchFixedText(models.front().format, &result);
@@ -1174,7 +1229,8 @@ file cannot be read or parsed.
   m.def("_fix", &Fix, py::arg("path_or_text"), py::arg("apply"), py::arg("repair"),
         py::arg("fix_units"), py::arg("density"), py::arg("from_geometry"), py::arg("tolerance"),
         py::arg("geometry"), py::arg("package_paths"), py::arg("model_paths"),
-        "The engine of massprops.fix (use that).");
+        py::arg("total_mass"), py::arg("link_masses"), py::arg("link_densities"),
+        py::arg("materials"), "The engine of massprops.fix (use that).");
   m.def("_report", &Report, py::arg("path_or_text"), py::arg("joints"), py::arg("frame"),
         py::arg("only"), py::arg("subtree"), py::arg("geometry"), py::arg("package_paths"),
         py::arg("model_paths"), "The engine of massprops.report (use that).");

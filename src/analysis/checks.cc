@@ -11,6 +11,7 @@
 
 #include "analysis/rules/rule_context.h"
 #include "analysis/rules/rules.h"
+#include "massprops/analysis/density_rules.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/analysis/welded_groups.h"
@@ -126,7 +127,8 @@ const std::vector<RuleInfo>& AllRules() {
   // rule id is known to the tool, the configuration file and SARIF.
   static const std::vector<RuleInfo> kAll = [] {
     std::vector<RuleInfo> all = kRules;
-    all.insert(all.end(), TargetRules().begin(), TargetRules().end());  // --target (issue 16)
+    all.insert(all.end(), DensityRules().begin(), DensityRules().end());  // density_rules.h
+    all.insert(all.end(), TargetRules().begin(), TargetRules().end());    // --target (issue 16)
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
     return all;
   }();
@@ -148,6 +150,7 @@ std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options)
     if (a.location.line != b.location.line) return a.location.line < b.location.line;
     return a.rule < b.rule;
   });
+  AddDensityFindings(model, options, &findings);  // density_rules.h
   return std::move(findings);
 }
 

@@ -649,6 +649,10 @@ std::optional<PrimitiveMassProperties> CalcPrimitiveMassProperties(const Link& l
   return FromGeometries(link, has_collision, density, mass);
 }
 
+void FillRepairChanges(const Model& model, const Link& link, Repair* repair) {
+  RecomputeChanges(model, link, repair);
+}
+
 const std::vector<std::string>& HeuristicRepairRules() {
   static const std::vector<std::string> kRules = {
       "units-suspect",     "products-sign-suspect", "inertia-about-origin-suspect",

@@ -11,9 +11,11 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "massprops/mesh/mesh_loader.h"
+#include "mesh/stl_direct.h"
 
 namespace massprops {
 namespace {
@@ -194,7 +196,106 @@ Direct ObjBox(const std::string& bytes, Eigen::AlignedBox3d* box) {
   return Direct::kBox;
 }
 
+// The triangles of a binary STL (its size already checked: 84 + 50·count bytes).
+bool BinaryStlTriangles(const std::string& bytes, TriangleMesh* mesh) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, sizeof(count));
+  if (count == 0) return false;
+  mesh->vertices.reserve(3 * static_cast<std::size_t>(count));
+  mesh->triangles.reserve(count);
+  for (std::uint32_t t = 0; t < count; ++t) {
+    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
+    const std::int32_t first = static_cast<std::int32_t>(mesh->vertices.size());
+    for (int v = 0; v < 3; ++v) {
+      float xyz[3];
+      std::memcpy(xyz, facet + 12 * (v + 1), sizeof(xyz));  // after the 12-byte normal
+      const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
+      if (!p.allFinite()) return false;
+      mesh->vertices.push_back(p);
+    }
+    mesh->triangles.push_back({first, first + 1, first + 2});
+  }
+  return true;
+}
+
+// The triangles of an ascii STL: its "vertex" triples in order; as many as its "endfacet"s (a
+// facet of another vertex count is left to assimp).
+bool AsciiStlTriangles(const std::string& bytes, TriangleMesh* mesh) {
+  std::size_t facets = 0;
+  for (std::size_t at = bytes.find("endfacet"); at != std::string::npos;
+       at = bytes.find("endfacet", at + 8)) {
+    ++facets;
+  }
+  const char* const end = bytes.data() + bytes.size();
+  for (const char* at = bytes.data(); at < end;) {
+    const char* found = static_cast<const char*>(std::memchr(at, 'v', end - at));
+    if (found == nullptr) break;
+    const bool word_start =
+        found == bytes.data() || std::isspace(static_cast<unsigned char>(found[-1]));
+    if (!word_start || end - found < 7 || std::strncmp(found, "vertex", 6) != 0 ||
+        !std::isspace(static_cast<unsigned char>(found[6]))) {
+      at = found + 1;
+      continue;
+    }
+    float xyz[3];
+    const char* cursor = found + 6;
+    for (float& c : xyz) {
+      char* next = nullptr;
+      c = std::strtof(cursor, &next);
+      if (next == cursor) return false;
+      cursor = next;
+    }
+    const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
+    if (!p.allFinite()) return false;
+    mesh->vertices.push_back(p);
+    at = cursor;
+  }
+  const std::size_t n = mesh->vertices.size();
+  if (n == 0 || n != 3 * facets) return false;
+  for (std::size_t t = 0; t < facets; ++t) {
+    const std::int32_t first = static_cast<std::int32_t>(3 * t);
+    mesh->triangles.push_back({first, first + 1, first + 2});
+  }
+  return true;
+}
+
 }  // namespace
+
+namespace internal {
+
+bool ReadStlDirect(const std::string& path, TriangleMesh* mesh) {
+  TriangleMesh found;
+  bool ok = false;
+  try {
+    std::string bytes;
+    {
+      std::ifstream in(path, std::ios::binary | std::ios::ate);
+      if (!in) return false;
+      const std::streamoff size = in.tellg();
+      if (size <= 0) return false;
+      bytes.resize(static_cast<std::size_t>(size));
+      in.seekg(0);
+      if (!in.read(bytes.data(), size)) return false;
+    }
+    std::uint32_t count = 0;
+    if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, sizeof(count));
+    if (bytes.size() >= 84 && 84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) {
+      ok = BinaryStlTriangles(bytes, &found);
+    } else {
+      const std::size_t first = bytes.find_first_not_of(" \t\r\n\f\v");
+      ok = first != std::string::npos && bytes.compare(first, 5, "solid") == 0 &&
+           AsciiStlTriangles(bytes, &found);
+    }
+    // Indices are 32-bit: a file of more than 2^31 / 3 triangles is left to assimp.
+    if (ok && found.vertices.size() > 0x7fffffff) ok = false;
+  } catch (const std::exception&) {  // std::bad_alloc on a huge file: assimp's message
+    ok = false;
+  }
+  if (ok) *mesh = std::move(found);
+  return ok;
+}
+
+}  // namespace internal
 
 bool LoadMeshBounds(const std::string& path, Eigen::AlignedBox3d* box, bool* direct,
                     std::string* error) {

@@ -11,6 +11,7 @@
 
 #include "massprops/core/unit_inertia.h"
 #include "mesh/mesh_backend.h"
+#include "mesh/stl_direct.h"
 
 namespace massprops {
 namespace fs = std::filesystem;
@@ -346,11 +347,16 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
                                                             const MeshInertiaOptions& options,
                                                             std::string* error) {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto key = std::make_tuple(path, scale.x(), scale.y(), scale.z(),
-                                   static_cast<int>(options.open_mesh_model),
-                                   options.shell_thickness, options.closure_tolerance);
+  const auto key = std::make_tuple(
+      path, scale.x(), scale.y(), scale.z(), static_cast<int>(options.open_mesh_model),
+      options.shell_thickness, options.closure_tolerance, options.read_stl_directly);
   if (auto found = properties_.find(key); found != properties_.end()) return found->second;
-  const std::shared_ptr<const TriangleMesh> mesh = LoadLocked(path, error);
+  std::shared_ptr<const TriangleMesh> mesh;
+  if (options.read_stl_directly) {
+    auto triangles = std::make_shared<TriangleMesh>();
+    if (internal::ReadStlDirect(path, triangles.get())) mesh = std::move(triangles);
+  }
+  if (!mesh) mesh = LoadLocked(path, error);
   if (!mesh) return std::nullopt;
   MeshInertiaOptions unit_density = options;
   unit_density.density = 1;

@@ -11,6 +11,8 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -18,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -25,10 +28,14 @@
 #include "commands.h"
 #include "geometry_cli.h"
 #include "massprops/analysis/checks.h"
+#include "massprops/analysis/fix_effect.h"
 #include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/mass_repair.h"
+#include "massprops/analysis/materials.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "massprops/output/fix_report.h"
 #include "massprops/output/reporters.h"
 #include "massprops/output/xml_patch.h"
 #include "safe_write.h"
@@ -56,6 +63,13 @@ struct FixArgs {
   bool fix_units = false;
   std::vector<std::string> apply;
   double density = kDefaultDensity;
+  // --density RHO (a bare number: the density above) or LINK=RHO (repeatable), as written.
+  std::vector<std::string> density_args;
+  std::optional<double> total_mass;        // --total-mass KG
+  std::vector<std::string> mass_args;      // --mass LINK=KG
+  std::vector<std::string> material_args;  // --material LINK=NAME
+  std::string format = "text";             // --format text|json
+  MassRepairOptions mass;                  // filled from the four above by ParseMassOptions
   bool from_geometry = false;
   std::vector<std::string> from_geometry_links;
   double tolerance = 1e-6;
@@ -77,6 +91,92 @@ std::string FileOfLink(const std::vector<Model>& models, const std::string& link
     }
   }
   return "";
+}
+
+// A positive finite number written whole in `text` (no trailing characters), or nullopt.
+std::optional<double> ParsePositive(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !(x > 0) || !std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
+// Splits "LINK=VALUE" at its last '='; false when there is none or a side is empty.
+bool SplitAssignment(const std::string& text, std::string* link, std::string* value) {
+  const std::size_t eq = text.rfind('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) return false;
+  *link = text.substr(0, eq);
+  *value = text.substr(eq + 1);
+  return true;
+}
+
+// Reads --density (RHO or LINK=RHO), --mass LINK=KG, --material LINK=NAME and --total-mass into
+// args->density and args->mass; prints the reason and returns false when one is malformed.
+bool ParseMassOptions(FixArgs* args) {
+  int bare = 0;
+  for (const std::string& text : args->density_args) {
+    std::string link, value;
+    if (text.find('=') == std::string::npos) {
+      const std::optional<double> rho = ParsePositive(text);
+      if (!rho || ++bare > 1) {
+        std::cerr << "massprops: error: --density must be a positive number of kg/m³ (given once) "
+                     "or LINK=KG_PER_M3, got '"
+                  << text << "'\n";
+        return false;
+      }
+      args->density = *rho;
+      continue;
+    }
+    const std::optional<double> rho =
+        SplitAssignment(text, &link, &value) ? ParsePositive(value) : std::nullopt;
+    if (!rho) {
+      std::cerr << "massprops: error: --density LINK=KG_PER_M3: '" << text
+                << "' does not name a link and a positive density\n";
+      return false;
+    }
+    args->mass.link_densities.push_back({link, *rho, ""});
+  }
+  for (const std::string& text : args->material_args) {
+    std::string link, name;
+    const Material* material = SplitAssignment(text, &link, &name) ? FindMaterial(name) : nullptr;
+    if (material == nullptr) {
+      std::cerr << "massprops: error: --material LINK=NAME: '" << text
+                << "' does not name a link and one of the materials " << MaterialNames() << "\n";
+      return false;
+    }
+    args->mass.link_densities.push_back({link, material->density, material->label});
+  }
+  for (const std::string& text : args->mass_args) {
+    std::string link, value;
+    const std::optional<double> kg =
+        SplitAssignment(text, &link, &value) ? ParsePositive(value) : std::nullopt;
+    if (!kg) {
+      std::cerr << "massprops: error: --mass LINK=KG: '" << text
+                << "' does not name a link and a positive mass\n";
+      return false;
+    }
+    args->mass.link_masses.emplace_back(link, *kg);
+  }
+  if (args->total_mass) {
+    if (!(*args->total_mass > 0) || !std::isfinite(*args->total_mass)) {
+      std::cerr << "massprops: error: --total-mass must be a positive number of kg\n";
+      return false;
+    }
+    args->mass.total_mass = args->total_mass;
+  }
+  if (!args->mass.link_densities.empty() && args->no_geometry) {
+    std::cerr << "massprops: error: --density LINK=... and --material read the link's meshes: "
+                 "they cannot be combined with --no-geometry\n";
+    return false;
+  }
+  if (args->format == "json" && (args->diff || (!args->dry_run && !args->in_place &&
+                                                (args->output.empty() || args->output == "-")))) {
+    std::cerr << "massprops: error: --format json prints on standard output: use it with "
+                 "--dry-run, -o OUT or --in-place, and without --diff\n";
+    return false;
+  }
+  return true;
 }
 
 // Rejects contradictory or out-of-range options before anything is read; prints the reason and
@@ -194,6 +294,9 @@ bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup)
     setup->check.box = options.box;
     options.points = MakeLinkPointsFunction(setup->resolve);
     setup->check.points = options.points;
+    // The mass repairs asked for by name read the closed meshes (--density LINK=, --material),
+    // and so do the density rules that judge the result; a bare fix does not read them.
+    if (args.mass.any()) setup->check.closed_mesh = MakeClosedMeshShapeFunction(setup->resolve);
   }
   return true;
 }
@@ -207,17 +310,39 @@ struct RepairPlan {
   std::map<std::string, std::vector<Repair>> not_asked;
 };
 
-// Plans the repairs of every model: those asked for (and the target's), and the heuristic ones
-// that were not asked for.
-RepairPlan PlanFix(const ReadResult& read, const FixSetup& setup) {
-  RepairPlan plan;
-  for (const Model& model : read.models) {
-    for (const Link& link : model.links) plan.known_links.push_back(link.name);
+// Plans the repairs of every model: the mass repairs asked for by name (mass_repair.h), then on
+// the model they give those asked for (and the target's), and the heuristic ones that were not
+// asked for. Returns false (with the reason printed) when a mass option cannot be carried out.
+bool PlanFix(const ReadResult& read, const FixSetup& setup, const MassRepairOptions& mass,
+             RepairPlan* result) {
+  RepairPlan& plan = *result;
+  if (mass.any() && read.models.size() != 1) {
+    std::cerr << "massprops: error: --total-mass, --mass, --density LINK=... and --material work "
+                 "on a file with one model; this one has "
+              << read.models.size() << "\n";
+    return false;
+  }
+  for (const Model& file_model : read.models) {
+    for (const Link& link : file_model.links) plan.known_links.push_back(link.name);
+    std::vector<Repair> mass_repairs;
+    Model with_mass;
+    if (mass.any()) {
+      MassRepairOptions options = mass;
+      options.closed_mesh = setup.check.closed_mesh;
+      std::string error;
+      if (!PlanMassRepairs(file_model, options, &mass_repairs, &error)) {
+        std::cerr << "massprops: error: " << error << "\n";
+        return false;
+      }
+      with_mass = ApplyRepairs(file_model, mass_repairs);
+    }
+    const Model& model = mass.any() ? with_mass : file_model;
     const std::vector<Finding> findings = CheckModel(model, setup.check);
     std::vector<Repair> planned = PlanRepairs(model, findings, setup.repair, &plan.refused);
     if (setup.target != Target::kGeneric) {  // what the simulator needs on top (target_profile.h)
       planned = PlanTargetRepairs(model, setup.target, setup.mujoco, planned);
     }
+    if (!mass_repairs.empty()) planned = ChainRepairs(file_model, mass_repairs, planned);
     plan.repairs.insert(plan.repairs.end(), planned.begin(), planned.end());
     RepairOptions every = setup.repair;
     every.apply = {"all"};
@@ -227,7 +352,7 @@ RepairPlan PlanFix(const ReadResult& read, const FixSetup& setup) {
       if (!planned_already) plan.not_asked[r.rule].push_back(std::move(r));
     }
   }
-  return plan;
+  return true;
 }
 
 // Moves the repairs of links defined in an included SDF model out of *repairs; returns them by
@@ -454,6 +579,50 @@ bool WriteFixOutputs(const FixArgs& args, const FixInput& input, const PatchResu
   return true;
 }
 
+// The effect of the repairs on the whole robot (fix_effect.h), for the mass repairs or
+// --format json: JSON on standard output; text on standard output with --dry-run, else on
+// standard error (standard output may carry the file or its diff).
+void PrintFixEffect(const FixArgs& args, const FixInput& input, const FixSetup& setup,
+                    const RepairPlan& plan, const ReadResult& reread, bool changed) {
+  const bool json = args.format == "json";
+  if (!json && !args.mass.any()) return;
+  // A mass asked for by name is written even when the result draws a warning the file did not
+  // have (e.g. density-implausible for a total no material reaches): the engineer's number wins,
+  // and this says so.
+  if (args.mass.any()) {
+    for (std::size_t i = 0; i < input.read.models.size() && i < reread.models.size(); ++i) {
+      std::set<std::pair<std::string, std::string>> before;
+      for (const Finding& f : CheckModel(input.read.models[i], setup.check)) {
+        before.insert({f.link, f.rule});
+      }
+      for (const Finding& f : CheckModel(reread.models[i], setup.check)) {
+        if (f.severity == Severity::kNote || before.count({f.link, f.rule})) continue;
+        std::cerr << "massprops: note: after the repairs asked for, " << ToString(f.severity)
+                  << " [" << f.rule << "]: " << f.message << "\n";
+      }
+    }
+  }
+  std::vector<std::string> changed_links;
+  for (const Repair& r : plan.repairs) changed_links.push_back(r.link);
+  std::vector<FixEffect> effects;
+  for (std::size_t i = 0; i < input.read.models.size() && i < reread.models.size(); ++i) {
+    FixEffect effect;
+    std::string error;
+    if (!CalcFixEffect(input.read.models[i], reread.models[i], changed_links, &effect, &error)) {
+      std::cerr << "massprops: warning: the effect of the fix cannot be computed: " << error
+                << "\n";
+      continue;
+    }
+    effects.push_back(std::move(effect));
+  }
+  if (json) {
+    std::cout << RenderFixJson(input.name, changed, plan.repairs, effects);
+    return;
+  }
+  std::ostream& out = args.dry_run ? std::cout : std::cerr;
+  for (const FixEffect& effect : effects) out << RenderFixEffectText(effect);
+}
+
 // The closing line on standard error: how many links were repaired, and what was not.
 void PrintFixSummary(const FixArgs& args, const std::string& name, const RepairPlan& plan,
                      const PatchResult& patched, bool changed, const IncludedFixes& included,
@@ -493,9 +662,10 @@ int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
   if (args.dry_run || included.outputs.empty()) {
     remaining_errors = ListRemainingErrors(reread, false, included, setup, input.text);
   }
-  if (args.dry_run) {
+  const bool json = args.format == "json";
+  if (args.dry_run && !json) {
     PrintDryRun(input.name, plan, patched, changed);
-  } else {
+  } else if (!args.dry_run) {
     if (args.diff) PrintDiffs(args, input, patched, included);
     std::vector<std::string> notes;
     if (!WriteFixOutputs(args, input, patched, changed, included, &notes)) return kExitError;
@@ -506,6 +676,7 @@ int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
     }
     for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
+  PrintFixEffect(args, input, setup, plan, reread, changed);
   std::cout.flush();
   PrintFixSummary(args, input.name, plan, patched, changed, included, remaining_errors);
   return remaining_errors > 0 ? kExitErrorsRemain : kExitOk;
@@ -539,7 +710,8 @@ int RunFix(const FixArgs& given) {
   if (!ConfigureFix(args, input.text, &setup)) return kExitError;
   PrintReaderFindings(input.read, setup.check);
 
-  RepairPlan plan = PlanFix(input.read, setup);
+  RepairPlan plan;
+  if (!PlanFix(input.read, setup, args.mass, &plan)) return kExitError;
   const std::map<std::string, std::vector<Repair>> included_repairs =
       TakeIncludedRepairs(input, &plan.repairs);
   IncludedFixes included;
@@ -625,9 +797,31 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
   fix->add_flag("--fix-units", args->fix_units,
                 "Same as --apply units-suspect, and repair it even when more than one unit "
                 "mistake fits");
-  fix->add_option("--density", args->density,
-                  "kg/m³ for masses computed from geometry (default 1000, water)")
-      ->type_name("RHO");
+  fix->add_option("--density", args->density_args,
+                  "RHO: kg/m³ for masses computed from geometry (default 1000, water); "
+                  "LINK=RHO (repeatable): that link's mass and inertia from its closed mesh at "
+                  "that density")
+      ->type_name("RHO|LINK=RHO")
+      ->allow_extra_args(false);
+  fix->add_option("--total-mass", args->total_mass,
+                  "The robot weighs KG: every link's mass and inertia scaled by one factor "
+                  "(centers of mass unchanged); links named by --mass, --density LINK=, "
+                  "--material keep theirs and the others share the rest")
+      ->type_name("KG");
+  fix->add_option("--mass", args->mass_args,
+                  "A part weighs KG (repeatable): that link's mass, its inertia scaled with it")
+      ->type_name("LINK=KG")
+      ->allow_extra_args(false);
+  fix->add_option("--material", args->material_args,
+                  "That link's mass and inertia from its closed mesh at the material's density "
+                  "(repeatable): " +
+                      MaterialNames())
+      ->type_name("LINK=NAME")
+      ->allow_extra_args(false);
+  fix->add_option("--format", args->format,
+                  "text (default) or json: what fix says about the repairs and their effect on "
+                  "the whole robot (json on standard output: with --dry-run, -o or --in-place)")
+      ->check(CLI::IsMember({"text", "json"}));
   fix->add_option("--from-geometry", args->from_geometry_links,
                   "Replace the inertial of these links (all links with usable geometry, meshes "
                   "included, when none is named) with the one of their geometry and current "
@@ -668,6 +862,7 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
         std::cerr << "massprops: error: fix needs a FILE\n";
         return kExitError;
       }
+      if (!ParseMassOptions(args.get())) return kExitError;
       return RunFix(*args);
     };
   });

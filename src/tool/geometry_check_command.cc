@@ -125,6 +125,7 @@ void UseGeometryShapes(const Model& model, const std::vector<std::string>& model
   if (args.enabled) options->shape = MakeLinkShapeFunction(resolve);
   options->box = MakeLinkBoxFunction(resolve);
   options->points = MakeLinkPointsFunction(resolve);
+  options->closed_mesh = MakeClosedMeshShapeFunction(resolve);  // the density rules
 }
 
 void CountMeshLinks(const Model& model, const std::vector<std::string>& model_paths,

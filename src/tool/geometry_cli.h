@@ -35,7 +35,8 @@ void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted);
 
 /// By default sets options->box to the meshes' bounding boxes (MakeLinkBoxFunction, the run's
 /// mesh cache), so that CheckModel judges mesh-only links against their size; with --geometry
-/// also options->shape to a mesh-reading LinkShapeFunction (the meshes' mass properties). With
+/// also options->shape to a mesh-reading LinkShapeFunction (the meshes' mass properties); and
+/// options->closed_mesh (MakeClosedMeshShapeFunction) for the density rules. With
 /// --no-geometry leaves `options` unchanged.
 /// `config_package_paths` (the file's .massprops.toml package-paths) are searched after
 /// --package-path, here and in the two functions below.

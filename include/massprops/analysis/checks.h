@@ -77,6 +77,12 @@ struct CheckOptions {
   /// inertia-exceeds-geometry's per-axis bound on links whose geometry includes meshes that
   /// were read. Empty: that bound is not used. Set with `box` by default.
   LinkPointsFunction points;
+  /// The link's closed meshes as a uniform solid (MakeClosedMeshShapeFunction in
+  /// geometry_checks.h: watertight meshes only), for the density rules `density-implausible` and
+  /// `cad-default-density` (density_rules.h), which turn a mass into a density by the volume.
+  /// Empty: those rules find nothing. `massprops check` and `fix` set it by default, as `box`
+  /// (`--no-geometry` leaves it empty); it reads and integrates each mesh file once per run.
+  LinkShapeFunction closed_mesh;
 };
 
 /// Runs every enabled rule on the model. Findings are ordered by location (line), then rule id.

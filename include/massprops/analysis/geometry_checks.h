@@ -53,6 +53,21 @@ LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve);
 /// posed boxes, for every geometry of the link, collision and visual. Never throws.
 LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve);
 
+/// The LinkShapeFunction of a link's closed meshes: the first of its visual geometries, then its
+/// collision geometries, that consists of meshes only, each of which resolves, reads and is
+/// watertight after its scale (MeshDiagnostics::IsClosedManifold: every edge shared by exactly
+/// two triangles wound in opposite directions; or a surface that encloses its volume despite
+/// T-junctions or cracks of no area: reference_point_sensitivity <= closure_tolerance, 1e-6, as
+/// the STL files of CAD exports are), as one uniform solid (volumes summed, overlaps
+/// counted twice; LinkShape::kind "mesh", box_B left empty). The visual set comes first: a CAD
+/// export's visual mesh is the part's own surface (the solid its mass was computed from), where
+/// collision meshes are often simplified. nullopt when neither set qualifies (a primitive, an open
+/// mesh, a mesh that does not resolve). For the density rules (CheckOptions::closed_mesh) and `fix
+/// --density LINK=RHO` / `--material`. Meshes are integrated as closed solids (no convex hull is
+/// computed for an open mesh: it is refused). Each file is read once per `resolve.cache`, which
+/// should be set and outlive the function. Never throws.
+LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve);
+
 /// The two rules above, as RuleInfo (both warnings, both off by default).
 const std::vector<RuleInfo>& GeometryRules();
 

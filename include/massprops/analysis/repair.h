@@ -162,6 +162,10 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
                                 const RepairOptions& options = {},
                                 std::vector<RefusedRepair>* refused = nullptr);
 
+/// Fills repair->changes, inserts_origin and relative_change from `link`'s inertial (the file's
+/// numbers) and repair->after, as the planner does for its own repairs.
+void FillRepairChanges(const Model& model, const Link& link, Repair* repair);
+
 /// Sets `repair` of every finding that a planned repair resolves (same link, rule in `resolves`).
 void AttachRepairs(const std::vector<Repair>& repairs, std::vector<Finding>& findings);
 

@@ -162,7 +162,8 @@ class MeshCache {
 
   mutable std::mutex mutex_;
   std::map<std::string, Entry> meshes_;
-  std::map<std::tuple<std::string, double, double, double, int, double, double>, MeshMassProperties>
+  std::map<std::tuple<std::string, double, double, double, int, double, double, bool>,
+           MeshMassProperties>
       properties_;
   int files_loaded_ = 0;
   struct BoundsEntry {

@@ -1,0 +1,213 @@
+#include "massprops/analysis/density_rules.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "massprops/analysis/materials.h"
+#include "massprops/analysis/welded_groups.h"
+
+namespace massprops {
+namespace {
+
+// A number for a sentence: 4 significant digits.
+std::string Num(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.4g", x);
+  return buffer;
+}
+
+// The severity of `rule` after the overrides, or nullopt when it is off.
+std::optional<Severity> SeverityOf(const char* rule, const CheckOptions& options) {
+  const auto it = options.overrides.find(rule);
+  if (it != options.overrides.end()) return it->second;
+  for (const RuleInfo& info : DensityRules()) {
+    if (info.id == rule) {
+      return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
+                                     : std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+bool Ignores(const Link& link, const char* rule) {
+  return std::any_of(link.ignored_rules.begin(), link.ignored_rules.end(),
+                     [&](const std::string& id) { return id == rule || id == "all"; });
+}
+
+// A link whose mass has a density: its mass over the volume of its closed meshes.
+struct LinkDensity {
+  int index = 0;
+  double mass = 0;
+  double volume = 0;
+  bool from_collision = false;
+  double density() const { return mass / volume; }
+};
+
+// "PLA 0.034 kg, ABS 0.028 kg, ..." for a volume (m³), over the common materials.
+std::string MassesAt(double volume, double other_mass = 0) {
+  std::string text;
+  for (const Material& m : CommonMaterials()) {
+    text +=
+        (text.empty() ? "" : ", ") + m.label + " " + Num(m.density * volume + other_mass) + " kg";
+  }
+  return text;
+}
+
+const SourceLocation& MassLocation(const Link& link) {
+  if (link.inertial->mass_location.line > 0) return link.inertial->mass_location;
+  if (link.inertial->location.line > 0) return link.inertial->location;
+  return link.location;
+}
+
+Finding MakeFinding(const char* rule, Severity severity, const Model& model, std::string link,
+                    const SourceLocation& location, std::string message,
+                    std::vector<std::pair<std::string, double>> values) {
+  Finding f;
+  f.rule = rule;
+  f.severity = severity;
+  f.model = model.name;
+  f.link = std::move(link);
+  f.location = location;
+  f.message = std::move(message);
+  f.values = std::move(values);
+  return f;
+}
+
+// density-implausible on one link.
+std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Severity severity) {
+  const Link& link = model.links[d.index];
+  const double rho = d.density();
+  if (rho >= kMinSolidDensity && rho <= kMaxSolidDensity) return std::nullopt;
+  const std::string what =
+      std::string("its closed ") + (d.from_collision ? "collision" : "visual") + " mesh";
+  std::string message = "link '" + link.name + "': mass " + Num(d.mass) + " kg over the volume " +
+                        Num(d.volume) + " m³ of " + what + " is a density of " + Num(rho) +
+                        " kg/m³, ";
+  if (rho < kMinSolidDensity) {
+    message +=
+        "below 100"
+        " kg/m³: only foams and aerogels are that light (a placeholder mass?)";
+    const double millimetres = rho * 1e9;
+    if (millimetres >= kMinSolidDensity && millimetres <= kMaxSolidDensity) {
+      message +=
+          "; were the mesh in millimetres without scale=\"0.001 0.001 0.001\", the part "
+          "would be " +
+          Num(millimetres) + " kg/m³";
+    }
+  } else {
+    message +=
+        "above 22 590"
+        " kg/m³ (osmium, the densest element): no material is that dense; the link may "
+        "carry mass its mesh does not show (a motor, a payload lumped onto it), or the "
+        "mass is in the wrong unit";
+  }
+  message += "; at common densities the mesh's volume says: " + MassesAt(d.volume) +
+             " (massprops fix --material " + link.name + "=NAME sets one, or --mass " + link.name +
+             "=KG the weighed mass)";
+  return MakeFinding(kDensityImplausibleRule, severity, model, link.name, MassLocation(link),
+                     std::move(message),
+                     {{"mass", d.mass}, {"volume", d.volume}, {"density", rho}});
+}
+
+// cad-default-density on the model: every link with a density at 1000 kg/m³.
+std::optional<Finding> CheckCadDefault(const Model& model, const std::vector<LinkDensity>& all,
+                                       Severity severity) {
+  std::vector<LinkDensity> counted;
+  for (const LinkDensity& d : all) {
+    if (!Ignores(model.links[d.index], kCadDefaultDensityRule)) counted.push_back(d);
+  }
+  if (static_cast<int>(counted.size()) < kCadDefaultDensityMinLinks) return std::nullopt;
+  double lowest = HUGE_VAL, highest = 0, volume = 0, counted_mass = 0;
+  for (const LinkDensity& d : counted) {
+    const double rho = d.density();
+    if (std::abs(rho / kCadDefaultDensity - 1) > kCadDefaultDensityTolerance) return std::nullopt;
+    lowest = std::min(lowest, rho);
+    highest = std::max(highest, rho);
+    volume += d.volume;
+    counted_mass += d.mass;
+  }
+  double total = 0;
+  for (const Link& link : model.links) {
+    const double m = LinkMassProperties(link, model.format).mass;
+    if (m > 0 && std::isfinite(m)) total += m;
+  }
+  const double others = std::max(0.0, total - counted_mass);
+  std::string message =
+      "no material was assigned in the CAD export (SolidWorks' default density of 1000 kg/m³): "
+      "the " +
+      std::to_string(counted.size()) +
+      " links with closed meshes all have mass = mesh "
+      "volume × 1000 kg/m³ (" +
+      Num(lowest) + " to " + Num(highest) + " kg/m³, within " +
+      Num(100 * kCadDefaultDensityTolerance) + "%), so the model's " + Num(total) +
+      " kg is what it would weigh made of water; made of one material it would weigh " +
+      MassesAt(volume, others) +
+      " — set the materials in CAD and export again, or massprops fix --material LINK=NAME, "
+      "--mass LINK=KG, --total-mass KG";
+  const Link* first = &model.links[counted.front().index];
+  const SourceLocation& location = model.location.line > 0 ? model.location : first->location;
+  return MakeFinding(kCadDefaultDensityRule, severity, model, "", location, std::move(message),
+                     {{"links", static_cast<double>(counted.size())},
+                      {"total_mass", total},
+                      {"volume", volume},
+                      {"density_min", lowest},
+                      {"density_max", highest}});
+}
+
+}  // namespace
+
+const std::vector<RuleInfo>& DensityRules() {
+  static const std::vector<RuleInfo> kRules = {
+      {kDensityImplausibleRule, Severity::kWarning, true,
+       "A link's mass over the volume of its closed meshes is a density no solid part has "
+       "(below 100 kg/m³: foams; above 22 590 kg/m³, osmium: nothing)."},
+      {kCadDefaultDensityRule, Severity::kWarning, true,
+       "Every link with closed meshes (at least 2) has mass = volume × 1000 kg/m³ within 1%: the "
+       "CAD export had no material (SolidWorks' default density); said once per model."},
+  };
+  return kRules;
+}
+
+void AddDensityFindings(const Model& model, const CheckOptions& options,
+                        std::vector<Finding>* findings) {
+  if (!options.closed_mesh) return;
+  const std::optional<Severity> implausible = SeverityOf(kDensityImplausibleRule, options);
+  const std::optional<Severity> cad_default = SeverityOf(kCadDefaultDensityRule, options);
+  if (!implausible && !cad_default) return;
+  std::vector<LinkDensity> densities;
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    const Link& link = model.links[i];
+    if (!link.inertial || link.inertial_unreadable || link.geometries.empty()) continue;
+    const double mass = link.inertial->mass;
+    if (!(mass > 0) || !std::isfinite(mass)) continue;
+    const std::optional<LinkShape> shape = options.closed_mesh(link);
+    if (!shape || !(shape->volume > 0) || !std::isfinite(shape->volume)) continue;
+    densities.push_back({static_cast<int>(i), mass, shape->volume, shape->from_collision});
+  }
+  const std::size_t before = findings->size();
+  if (implausible) {
+    for (const LinkDensity& d : densities) {
+      if (Ignores(model.links[d.index], kDensityImplausibleRule)) continue;
+      if (std::optional<Finding> f = CheckDensity(model, d, *implausible)) {
+        findings->push_back(std::move(*f));
+      }
+    }
+  }
+  if (cad_default) {
+    if (std::optional<Finding> f = CheckCadDefault(model, densities, *cad_default)) {
+      findings->push_back(std::move(*f));
+    }
+  }
+  if (findings->size() == before) return;
+  std::stable_sort(findings->begin(), findings->end(), [](const Finding& a, const Finding& b) {
+    if (a.location.line != b.location.line) return a.location.line < b.location.line;
+    return a.rule < b.rule;
+  });
+}
+
+}  // namespace massprops
