@@ -324,7 +324,8 @@ TEST(MeshAwareChecksTest, FixWithGeometryRepairsTheMeshFindingsAndTheResultCheck
       RunTool("check --geometry --disable inertia-disagrees-with-geometry --fail-on warning '" +
                   fixed + "'",
               true);
-  // Only mesh_in_mm's warning is left: its inertia was right and is untouched.
+  // Only mesh_in_mm's warning is left: its inertia was right and is untouched (its density,
+  // 3.3e-7 kg/m³ over the mesh read in metres, is the same defect: units-suspect says it once).
   EXPECT_EQ(check.exit_code, 1) << check.output;
   EXPECT_NE(check.output.find("1 warning"), std::string::npos) << check.output;
   EXPECT_NE(check.output.find("link 'mesh_in_mm'"), std::string::npos) << check.output;
@@ -351,14 +352,16 @@ TEST(MeshAwareChecksTest, FixFromGeometryWithoutALinkNameReplacesEveryLinkWithGe
 }
 
 TEST(MeshAwareChecksTest, FixFromGeometrySaysWhyANamedLinkIsLeftAlone) {
-  // visual_only's mesh is package://mesh/cube_quads.obj: without --package-path it is not found.
+  // visual_only's mesh is package://mesh/cube_quads.obj: without --package-path it is found all
+  // the same, in the ancestor folder named `mesh` (testdata/mesh; docs/meshes.md, issue 29). A
+  // link whose mesh is found nowhere is left as it is, and the reason said: broken_collision's
+  // package://mesh/missing.stl (its visual cylinder stands in for it).
   const ToolRun run =
       RunTool("fix --dry-run '" + kMeshRobot + "' --from-geometry=visual_only", true);
   EXPECT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_NE(run.output.find("warning: --from-geometry: link 'visual_only' is left as it is: "),
-            std::string::npos)
+  EXPECT_NE(run.output.find("link 'visual_only' [--from-geometry"), std::string::npos)
       << run.output;
-  EXPECT_NE(run.output.find("package 'mesh' not found"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("mass 8000"), std::string::npos) << run.output;
   // With the package path it is replaced: a cube of side 2 of water, 8 m³ → 8000 kg.
   const ToolRun found =
       RunTool("fix --dry-run '" + kMeshRobot + "' --package-path '" +

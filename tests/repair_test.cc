@@ -372,7 +372,8 @@ TEST(PlanRepairsTest, MissingInertialIsInsertedFromTheCollisionBox) {
       Read(ArmUrdf("<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" "
                    "iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>\n",
                    ""));
-  // `arm` has an inertial here; build the missing-inertial case with a welded cover link.
+  // `arm` has an inertial here; build the missing-inertial case with a `cover` that turns on its
+  // own joint and carries a 1 kg `tool` (nothing welded to it has mass: inertial-missing).
   const std::string urdf =
       "<robot name=\"r\">\n"
       "  <link name=\"base\"><inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" "
@@ -381,7 +382,14 @@ TEST(PlanRepairsTest, MissingInertialIsInsertedFromTheCollisionBox) {
       "    <collision><origin xyz=\"0 0 0.1\"/><geometry><box size=\"0.1 0.1 0.02\"/></geometry>"
       "</collision>\n"
       "  </link>\n"
-      "  <joint name=\"j\" type=\"fixed\"><parent link=\"base\"/><child link=\"cover\"/></joint>\n"
+      "  <link name=\"tool\"><inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" "
+      "ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial></link>\n"
+      "  <joint name=\"j\" type=\"revolute\"><parent link=\"base\"/><child link=\"cover\"/>"
+      "<axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/>"
+      "</joint>\n"
+      "  <joint name=\"j2\" type=\"revolute\"><parent link=\"cover\"/><child link=\"tool\"/>"
+      "<origin xyz=\"0 0 0.2\"/><axis xyz=\"1 0 0\"/>"
+      "<limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n"
       "</robot>\n";
   const Model missing = Read(urdf);
   EXPECT_FALSE(RepairOf(Plan(missing), "cover").has_value());  // a guess: only when asked for

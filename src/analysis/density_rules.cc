@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -46,7 +47,17 @@ struct LinkDensity {
   double volume = 0;
   bool from_collision = false;
   double density() const { return mass / volume; }
+  // The link's welded group: its mass and the volume of its members' closed meshes (massless
+  // members included), for a mass lumped onto one member (a torso link carrying the batteries of
+  // its welded shells).
+  double group_mass = 0;
+  double group_volume = 0;
 };
+
+// A marker or frame of at most this mass (1 g: an ArUco tag, a logo decal, a 1e-6 kg antenna
+// placeholder) is no body whose density means anything; the geometry rules leave such dummy
+// masses alone too.
+constexpr double kDummyMass = 1e-3;  // kg
 
 // "PLA 0.034 kg, ABS 0.028 kg, ..." for a volume (m³), over the common materials.
 std::string MassesAt(double volume, double other_mass = 0) {
@@ -83,6 +94,13 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
   const Link& link = model.links[d.index];
   const double rho = d.density();
   if (rho >= kMinSolidDensity && rho <= kMaxSolidDensity) return std::nullopt;
+  if (!(d.mass > kDummyMass)) return std::nullopt;
+  // Too dense for its own mesh, but not for its welded group's meshes: a mass lumped onto one
+  // member of a rigid body, which the group's geometry holds.
+  if (rho > kMaxSolidDensity && d.group_volume > d.volume &&
+      d.group_mass / d.group_volume <= kMaxSolidDensity) {
+    return std::nullopt;
+  }
   const std::string what =
       std::string("its closed ") + (d.from_collision ? "collision" : "visual") + " mesh";
   std::string message = "link '" + link.name + "': mass " + Num(d.mass) + " kg over the volume " +
@@ -189,10 +207,43 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
     if (!shape || !(shape->volume > 0) || !std::isfinite(shape->volume)) continue;
     densities.push_back({static_cast<int>(i), mass, shape->volume, shape->from_collision});
   }
+  if (implausible && !densities.empty()) {
+    // Each link's welded group: its mass and its members' closed-mesh volume.
+    const std::vector<WeldedGroup> groups = FindWeldedGroups(model);
+    std::vector<int> group_of(model.links.size(), -1);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      for (int i : groups[g].links) group_of[i] = static_cast<int>(g);
+    }
+    for (LinkDensity& d : densities) {
+      const WeldedGroup& group = groups[group_of[d.index]];
+      for (int i : group.links) {
+        const Link& member = model.links[i];
+        const double m = LinkMassProperties(member, model.format).mass;
+        if (m > 0 && std::isfinite(m)) d.group_mass += m;
+        if (member.geometries.empty()) continue;
+        const std::optional<LinkShape> shape = options.closed_mesh(member);
+        if (shape && shape->volume > 0 && std::isfinite(shape->volume)) {
+          d.group_volume += shape->volume;
+        }
+      }
+    }
+  }
   const std::size_t before = findings->size();
   if (implausible) {
     for (const LinkDensity& d : densities) {
       if (Ignores(model.links[d.index], kDensityImplausibleRule)) continue;
+      // One finding per defect: where the link's inertia is already out of proportion with its
+      // geometry (a mass in grams, a mesh in millimetres, a mass edited without its inertia),
+      // that finding says it; the density would repeat it.
+      const std::string& name = model.links[d.index].name;
+      if (std::any_of(findings->begin(), findings->begin() + static_cast<std::ptrdiff_t>(before),
+                      [&](const Finding& f) {
+                        return f.link == name && (f.rule == "units-suspect" ||
+                                                  f.rule == "inertia-exceeds-geometry" ||
+                                                  f.rule == "inertia-about-origin-suspect");
+                      })) {
+        continue;
+      }
       if (std::optional<Finding> f = CheckDensity(model, d, *implausible)) {
         findings->push_back(std::move(*f));
       }
