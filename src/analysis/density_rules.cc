@@ -196,15 +196,13 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
   if (implausible) {
     for (const LinkDensity& d : densities) {
       if (Ignores(model.links[d.index], kDensityImplausibleRule)) continue;
-      // One finding per defect: where the link's inertia is already out of proportion with its
-      // geometry (a mass in grams, a mesh in millimetres, a mass edited without its inertia),
-      // that finding says it; the density would repeat it.
+      // One finding per defect: where units-suspect already finds the link's radius of gyration
+      // out of proportion with its geometry (a mass in grams, a mesh in millimetres), that
+      // finding says it; the density would repeat the same unit slip.
       const std::string& name = model.links[d.index].name;
       if (std::any_of(findings->begin(), findings->begin() + static_cast<std::ptrdiff_t>(before),
                       [&](const Finding& f) {
-                        return f.link == name && (f.rule == "units-suspect" ||
-                                                  f.rule == "inertia-exceeds-geometry" ||
-                                                  f.rule == "inertia-about-origin-suspect");
+                        return f.link == name && f.rule == "units-suspect";
                       })) {
         continue;
       }
