@@ -62,10 +62,12 @@ Direct BinaryStlBox(const std::string& bytes, Eigen::AlignedBox3d* box) {
   return Direct::kBox;
 }
 
-// Ascii STL: every "vertex x y z" (facets and loops need not be checked: their vertices are all
-// the full loader keeps).
-Direct AsciiStlBox(const std::string& bytes, Eigen::AlignedBox3d* box) {
-  std::size_t vertices = 0;
+// Calls visit(p) for every "vertex x y z" of an ascii STL, in order (facets and loops need not be
+// checked: their vertices are all the full loader keeps). Returns false when a vertex is not
+// three finite numbers. strtof stops at the end of the buffer's text: the bytes are followed by
+// '\0'.
+template <typename Visit>
+bool ForEachAsciiStlVertex(const std::string& bytes, Visit visit) {
   const char* const end = bytes.data() + bytes.size();
   for (const char* at = bytes.data(); at < end;) {
     const char* found = static_cast<const char*>(std::memchr(at, 'v', end - at));
@@ -77,22 +79,30 @@ Direct AsciiStlBox(const std::string& bytes, Eigen::AlignedBox3d* box) {
       at = found + 1;
       continue;
     }
-    // strtod stops at the end of the buffer's text: the file's bytes are followed by '\0'.
     float xyz[3];
     const char* cursor = found + 6;
     for (float& c : xyz) {
       char* next = nullptr;
       c = std::strtof(cursor, &next);
-      if (next == cursor) return Direct::kNotUnderstood;
+      if (next == cursor) return false;
       cursor = next;
     }
     const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
-    if (!p.allFinite()) return Direct::kNotUnderstood;
-    box->extend(p);
-    ++vertices;
+    if (!p.allFinite()) return false;
+    visit(p);
     at = cursor;
   }
-  if (vertices == 0 || vertices % 3 != 0) return Direct::kNotUnderstood;
+  return true;
+}
+
+// Ascii STL: the box of every vertex.
+Direct AsciiStlBox(const std::string& bytes, Eigen::AlignedBox3d* box) {
+  std::size_t vertices = 0;
+  const bool read = ForEachAsciiStlVertex(bytes, [&](const Eigen::Vector3d& p) {
+    box->extend(p);
+    ++vertices;
+  });
+  if (!read || vertices == 0 || vertices % 3 != 0) return Direct::kNotUnderstood;
   return Direct::kBox;
 }
 
@@ -226,29 +236,9 @@ bool AsciiStlTriangles(const std::string& bytes, TriangleMesh* mesh) {
        at = bytes.find("endfacet", at + 8)) {
     ++facets;
   }
-  const char* const end = bytes.data() + bytes.size();
-  for (const char* at = bytes.data(); at < end;) {
-    const char* found = static_cast<const char*>(std::memchr(at, 'v', end - at));
-    if (found == nullptr) break;
-    const bool word_start =
-        found == bytes.data() || std::isspace(static_cast<unsigned char>(found[-1]));
-    if (!word_start || end - found < 7 || std::strncmp(found, "vertex", 6) != 0 ||
-        !std::isspace(static_cast<unsigned char>(found[6]))) {
-      at = found + 1;
-      continue;
-    }
-    float xyz[3];
-    const char* cursor = found + 6;
-    for (float& c : xyz) {
-      char* next = nullptr;
-      c = std::strtof(cursor, &next);
-      if (next == cursor) return false;
-      cursor = next;
-    }
-    const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
-    if (!p.allFinite()) return false;
-    mesh->vertices.push_back(p);
-    at = cursor;
+  if (!ForEachAsciiStlVertex(bytes,
+                             [&](const Eigen::Vector3d& p) { mesh->vertices.push_back(p); })) {
+    return false;
   }
   const std::size_t n = mesh->vertices.size();
   if (n == 0 || n != 3 * facets) return false;

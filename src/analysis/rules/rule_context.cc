@@ -320,11 +320,7 @@ std::optional<GeometryBounds> RuleContext::GroupBounds(int link_index,
                                                        const GeometryBounds& bounds) const {
   GeometryBounds result = bounds;
   const WeldedGroup& group = groups[group_of[link_index]];
-  Pose X_RL;
-  for (std::size_t k = 0; k < group.links.size(); ++k) {
-    if (group.links[k] == link_index) X_RL = group.X_RL[k];
-  }
-  const Pose X_LR = X_RL.Inverse();
+  const Pose X_LR = GroupPoseOf(link_index).Inverse();
   for (std::size_t k = 0; k < group.links.size(); ++k) {
     const int j = group.links[k];
     if (j == link_index) continue;

@@ -197,11 +197,7 @@ KinematicScale KinematicScaleOf(const RuleContext& ctx, int link_index, const Ei
   const Link& link = ctx.model.links[link_index];
   scale.partial = !link.geometries.empty() && !ctx.BoundsOfLink(link_index);
   const WeldedGroup& group = ctx.groups[ctx.group_of[link_index]];
-  Pose X_RL;
-  for (std::size_t k = 0; k < group.links.size(); ++k) {
-    if (group.links[k] == link_index) X_RL = group.X_RL[k];
-  }
-  const Pose X_LR = X_RL.Inverse();
+  const Pose X_LR = ctx.GroupPoseOf(link_index).Inverse();
   for (std::size_t k = 0; k < group.links.size(); ++k) {
     const int j = group.links[k];
     const Link& member = ctx.model.links[j];
