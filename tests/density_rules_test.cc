@@ -105,7 +105,7 @@ TEST(DensityRulesTest, DensityImplausibleFiresBelowFoamsAndAboveOsmium) {
   // light: 0.0012 kg / 0.006 m³ = 0.2 kg/m³ < 100; heavy: 150 / 0.006 = 25 000 > 22 590.
   EXPECT_EQ(found[0].link, "light");
   EXPECT_NEAR(Value(found[0], "density"), 0.2, 2e-7);  // float STL vertices: ~1e-7 relative
-  EXPECT_EQ(found[0].location.line, 9);  // its <mass>
+  EXPECT_EQ(found[0].location.line, 9);                // its <mass>
   // What the volume says: PLA 1240 x 0.006 = 7.44 kg, steel 47.1 kg.
   EXPECT_NE(found[0].message.find("PLA 7.44 kg"), std::string::npos) << found[0].message;
   EXPECT_NE(found[0].message.find("steel 47.1 kg"), std::string::npos) << found[0].message;

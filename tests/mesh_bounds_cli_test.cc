@@ -48,7 +48,8 @@ TEST(MeshBoundsCliTest, MeshOnlyLinksWithAbsurdInertiasAreFlaggedByDefault) {
       << run.output;
   // finger's 0.1 kg over its closed 0.006 m³ mesh is also 16.7 kg/m³, lighter than any solid
   // (density-implausible); base's units-suspect already says its unit slip.
-  EXPECT_NE(run.output.find("link 'finger': mass 0.1 kg over the volume 0.006 m³"), std::string::npos)
+  EXPECT_NE(run.output.find("link 'finger': mass 0.1 kg over the volume 0.006 m³"),
+            std::string::npos)
       << run.output;
   EXPECT_EQ(Count(run.output, "warning:"), 3) << run.output;
   EXPECT_EQ(run.output.find("did not resolve"), std::string::npos);

@@ -200,10 +200,9 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
       // out of proportion with its geometry (a mass in grams, a mesh in millimetres), that
       // finding says it; the density would repeat the same unit slip.
       const std::string& name = model.links[d.index].name;
-      if (std::any_of(findings->begin(), findings->begin() + static_cast<std::ptrdiff_t>(before),
-                      [&](const Finding& f) {
-                        return f.link == name && f.rule == "units-suspect";
-                      })) {
+      if (std::any_of(
+              findings->begin(), findings->begin() + static_cast<std::ptrdiff_t>(before),
+              [&](const Finding& f) { return f.link == name && f.rule == "units-suspect"; })) {
         continue;
       }
       if (std::optional<Finding> f = CheckDensity(model, d, *implausible)) {
