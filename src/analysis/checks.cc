@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/rule_severity.h"
 #include "analysis/rules/rule_context.h"
 #include "analysis/rules/rules.h"
 #include "massprops/analysis/density_rules.h"
@@ -97,6 +98,18 @@ std::optional<Severity> ParseSeverity(std::string_view text) {
   if (text == "note") return Severity::kNote;
   if (text == "warning") return Severity::kWarning;
   if (text == "error") return Severity::kError;
+  return std::nullopt;
+}
+
+std::optional<Severity> RuleSeverity(const std::string& rule, const CheckOptions& options) {
+  const auto it = options.overrides.find(rule);
+  if (it != options.overrides.end()) return it->second;
+  for (const RuleInfo& info : AllRules()) {
+    if (info.id == rule) {
+      return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
+                                     : std::nullopt;
+    }
+  }
   return std::nullopt;
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/rule_severity.h"
 #include "massprops/analysis/materials.h"
 #include "massprops/analysis/welded_groups.h"
 
@@ -24,15 +25,7 @@ std::string Num(double x) {
 
 // The severity of `rule` after the overrides, or nullopt when it is off.
 std::optional<Severity> SeverityOf(const char* rule, const CheckOptions& options) {
-  const auto it = options.overrides.find(rule);
-  if (it != options.overrides.end()) return it->second;
-  for (const RuleInfo& info : DensityRules()) {
-    if (info.id == rule) {
-      return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
-                                     : std::nullopt;
-    }
-  }
-  return std::nullopt;
+  return RuleSeverity(rule, options);
 }
 
 bool Ignores(const Link& link, const char* rule) {

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/rule_severity.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/rotational_inertia.h"
 
@@ -783,15 +784,7 @@ MujocoPrediction PredictMujoco(const Model& model, const MujocoCompilerOptions& 
 namespace {
 
 std::optional<Severity> SeverityOf(const std::string& rule, const CheckOptions& options) {
-  const auto it = options.overrides.find(rule);
-  if (it != options.overrides.end()) return it->second;
-  for (const RuleInfo& info : AllRules()) {
-    if (info.id == rule) {
-      return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
-                                     : std::nullopt;
-    }
-  }
-  return std::nullopt;
+  return RuleSeverity(rule, options);
 }
 
 bool Ignored(const Link& link, const std::string& rule) {

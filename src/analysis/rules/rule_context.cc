@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/rule_severity.h"
 #include "massprops/core/principal_axes.h"
 #include "massprops/core/rotational_inertia.h"
 
@@ -222,15 +223,7 @@ std::optional<CompositeInertia> RuleContext::OutboardComposite(int child_link) c
 }
 
 std::optional<Severity> RuleContext::SeverityOf(const std::string& rule) const {
-  const auto it = options.overrides.find(rule);
-  if (it != options.overrides.end()) return it->second;
-  for (const RuleInfo& info : AllRules()) {
-    if (info.id == rule) {
-      return info.enabled_by_default ? std::optional<Severity>(info.default_severity)
-                                     : std::nullopt;
-    }
-  }
-  return std::nullopt;
+  return RuleSeverity(rule, options);
 }
 
 bool RuleContext::Enabled(const std::string& rule, const Link& link) const {
