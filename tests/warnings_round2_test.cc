@@ -128,7 +128,8 @@ TEST(WarningsRound2Test, TheWholePartsMeshBoundsAnInertiaHiddenBehindSmallPrimit
 }
 
 // A 1 g placeholder on a 4 x 9 x 6 cm part (4.62963 kg/m^3) is reported; a 1e-6 kg tag on a
-// 1 mm sheet (which the lightest solid would make 0.25 g) is a marker.
+// 1 mm sheet (which the lightest solid would make 0.25 g) is a marker, and so is a 1 g badge of
+// the finger's size welded to a 5 kg body (its lightest solid, 21.6 g, is under 5% of 5 kg).
 TEST(WarningsRound2Test, ASmallMassOnAPartOfRealSizeIsJudgedAndAMarkerIsNot) {
   const std::vector<Finding> findings = Check("small-mass-part");
   const std::vector<Finding> density = Select(findings, "density-implausible");
