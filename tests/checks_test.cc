@@ -71,7 +71,7 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
   for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
-  // 16 rules of CheckModel (com-not-mirrored, issue 34, off by default) + 4 rules whose findings
+  // 16 rules of CheckModel (com-not-mirrored added by issue 34) + 4 rules whose findings
   // the readers make (ReadResult::findings, inertial-auto from the SDF reader) + 9 target-profile
   // rules (target_profile.h, reported only with --target) + 2 geometry rules (geometry_checks.h),
   // off unless --geometry + 2 density rules (density_rules.h).

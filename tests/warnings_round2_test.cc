@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,7 @@ const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/round2/";
 
 // Checks the fixture as `massprops check` does by default (the meshes' boxes, vertices and closed
 // volumes read).
-std::vector<Finding> Check(const std::string& name, bool mirrored = false) {
+std::vector<Finding> Check(const std::string& name, bool mirrored = true) {
   const std::string file = kDir + name + ".urdf";
   const ReadResult read = ReadModelFile(file);
   EXPECT_TRUE(read.ok()) << file;
@@ -36,7 +37,7 @@ std::vector<Finding> Check(const std::string& name, bool mirrored = false) {
   options.box = MakeLinkBoxFunction(resolve);
   options.points = MakeLinkPointsFunction(resolve);
   options.closed_mesh = MakeClosedMeshShapeFunction(resolve);
-  if (mirrored) options.overrides["com-not-mirrored"] = Severity::kWarning;  // off by default
+  if (!mirrored) options.overrides["com-not-mirrored"] = std::nullopt;  // turned off
   return CheckModel(read.models[0], options);
 }
 
@@ -97,7 +98,7 @@ TEST(WarningsRound2Test, CopiedPlaceholdersAreJudgedAgainstTheirAssembly) {
 // 1.33 half-sizes from the middle of its box (the left's 0): the right is named. The legs' ixy
 // copied without its sign: 0.004 / 0.045 of the trace.
 TEST(WarningsRound2Test, MirroredPartsWhoseNumbersDoNotMirrorAreReported) {
-  EXPECT_TRUE(Select(Check("com-not-mirrored"), "com-not-mirrored").empty());  // off by default
+  EXPECT_TRUE(Select(Check("com-not-mirrored", /*mirrored=*/false), "com-not-mirrored").empty());
   const std::vector<Finding> findings = Check("com-not-mirrored", /*mirrored=*/true);
   const std::vector<Finding> mirrored = Select(findings, "com-not-mirrored");
   ASSERT_EQ(mirrored.size(), 2u) << Dump(findings);

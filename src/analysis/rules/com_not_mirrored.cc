@@ -16,8 +16,8 @@
 // geometry is likely the wrong one; without geometry to tell, the one written later in the file
 // (the copy). Two links drawing the same meshes at the same handedness are one part placed twice,
 // not mirror images; a pair that is one part turned half a turn about a line through the middle
-// (a gripper's two fingers) is symmetric too, and its numbers may follow either map. Off by
-// default until its firings on the measured sets are judged (docs/labels.md).
+// (a gripper's two fingers) is symmetric too, and its numbers may follow either map. Their
+// geometry must be known on both sides: names alone do not make two parts mirror images.
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -311,28 +311,26 @@ void CheckMirroredPair(RuleContext& ctx, int a, int b, const Pose& X_WA, const P
   const Validity va = Analyze(pa.I_SScm_F), vb = Analyze(pb.I_SScm_F);
   if (!va.finite || !vb.finite || !(va.trace > 0) || !(vb.trace > 0)) return;
   if ((va.moments - vb.moments).norm() > kSameBody * std::max(va.trace, vb.trace)) return;
-  // The maps that take the one's geometry onto the other's (all of them without geometry).
+  // The maps that take the one's geometry onto the other's.
   const std::optional<Eigen::AlignedBox3d> box_a = ModelBox(ctx, a, X_WA);
   const std::optional<Eigen::AlignedBox3d> box_b = ModelBox(ctx, b, X_WB);
-  if (box_a.has_value() != box_b.has_value()) return;
-  const double half_diagonal =
-      box_a ? 0.5 * std::max(box_a->diagonal().norm(), box_b->diagonal().norm()) : 0;
+  // Their geometry must be known and mirror: names alone do not make two parts mirror images.
+  if (!box_a || !box_b) return;
+  const double half_diagonal = 0.5 * std::max(box_a->diagonal().norm(), box_b->diagonal().norm());
   std::vector<Eigen::Vector3d> maps;
   for (const Eigen::Vector3d& t : SideMaps(axis)) {
-    if (box_a) {
-      Eigen::AlignedBox3d image(mid + t.cwiseProduct(box_a->min() - mid));
-      image.extend(mid + t.cwiseProduct(box_a->max() - mid));
-      const double miss =
-          std::max((image.min() - box_b->min()).norm(), (image.max() - box_b->max()).norm());
-      if (miss > std::max(kMillimetre, kGeometryMirror * half_diagonal)) continue;
-    }
+    Eigen::AlignedBox3d image(mid + t.cwiseProduct(box_a->min() - mid));
+    image.extend(mid + t.cwiseProduct(box_a->max() - mid));
+    const double miss =
+        std::max((image.min() - box_b->min()).norm(), (image.max() - box_b->max()).norm());
+    if (miss > std::max(kMillimetre, kGeometryMirror * half_diagonal)) continue;
     maps.push_back(t);
   }
   if (maps.empty()) return;
   // The centers of mass and the inertias in the model frame, under each map.
   const Eigen::Vector3d ca = X_WA.p_AB + X_WA.R_AB * pa.p_FoScm_F;
   const Eigen::Vector3d cb = X_WB.p_AB + X_WB.R_AB * pb.p_FoScm_F;
-  const double size = half_diagonal > 0 ? half_diagonal : separation;
+  const double size = half_diagonal;
   const Eigen::Matrix3d Ia_W = X_WA.R_AB * pa.I_SScm_F * X_WA.R_AB.transpose();
   const Eigen::Matrix3d Ib_W = X_WB.R_AB * pb.I_SScm_F * X_WB.R_AB.transpose();
   double com_miss = HUGE_VAL, products_miss = HUGE_VAL, moments_miss = HUGE_VAL;
@@ -355,10 +353,8 @@ void CheckMirroredPair(RuleContext& ctx, int a, int b, const Pose& X_WA, const P
 }  // namespace
 
 const RuleInfo& ComNotMirroredRule() {
-  // Off by default until its firings on the corpus and the labelled set are judged (docs/rules.md):
-  // --severity com-not-mirrored=warning turns it on.
   static const RuleInfo kInfo{
-      kComNotMirrored, Severity::kWarning, false,
+      kComNotMirrored, Severity::kWarning, true,
       "Two mirrored parts (by name or mesh) whose centers of mass or products of inertia do not "
       "mirror: one was copied from the other side."};
   return kInfo;
