@@ -39,7 +39,10 @@ ChainSpan ChainSpanOf(const RuleContext& ctx, int link_index) {
   // Inboard: the joint into a link lies at its origin, so the next joint inboard of link A is at
   // its parent's origin; the parent spans from there to the point, so its geometry counts.
   Pose X_LA;
-  for (int a = link_index, p = ctx.parent[a]; p >= 0; a = p, p = ctx.parent[a]) {
+  // (A loop of parents, which no model the readers accept has, ends the walks after every link.)
+  const int n = static_cast<int>(ctx.model.links.size());
+  for (int a = link_index, p = ctx.parent[a], steps = 0; p >= 0 && steps < n;
+       a = p, p = ctx.parent[a], ++steps) {
     const int j = JointBetween(ctx, p, a);
     if (j < 0) break;
     const Pose X_LP = X_LA * ctx.model.joints[j].X_PC.Inverse();
@@ -52,14 +55,13 @@ ChainSpan ChainSpanOf(const RuleContext& ctx, int link_index) {
     ++chain.links;
     X_LA = X_LP;
   }
-  // Outboard, every branch: through the joints at the origin, up to the first that is not.
+  // Outboard, every branch: through the joints at the origin, up to the first that is not (the
+  // joint tree gives each link one parent, so no link is reached twice: the walk costs the links
+  // it passes).
   std::vector<std::pair<int, Pose>> stack = {{link_index, Pose()}};
-  std::vector<bool> seen(ctx.model.links.size(), false);
-  while (!stack.empty()) {
+  for (int steps = 0; !stack.empty() && steps < n; ++steps) {
     const auto [a, X_LAo] = stack.back();
     stack.pop_back();
-    if (seen[a]) continue;
-    seen[a] = true;
     for (const auto& [c, j] : ctx.children[a]) {
       // A link hung at the point spans from it to its own joints: its geometry counts; one hung
       // at the first joint away from the point lies beyond it and does not.
