@@ -11,6 +11,7 @@
 
 #include "analysis/rule_severity.h"
 #include "analysis/rules/rule_context.h"
+#include "analysis/rules/model_rules.h"
 #include "analysis/rules/rules.h"
 #include "massprops/analysis/density_rules.h"
 #include "massprops/analysis/geometry_checks.h"
@@ -130,6 +131,7 @@ const std::vector<RuleInfo>& AllRules() {
       rules::InertiaAboutOriginSuspectRule(),
       rules::InertiaExceedsGeometryRule(),
       rules::ComOutsideGeometryRule(),
+      rules::ComNotMirroredRule(),
       rules::InertiaNearBoundaryRule(),
       rules::UrdfNotLoadableRule(),
       rules::InertialUnreadableRule(),
@@ -157,6 +159,8 @@ std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options)
     rules::CheckKinematicOnlyModel(ctx);
   } else {
     for (const WeldedGroup& group : ctx.groups) CheckGroup(ctx, group);
+    rules::CheckCopiedPlaceholders(ctx);
+    rules::CheckMirroredPairs(ctx);
   }
   std::vector<Finding>& findings = ctx.findings;
   std::stable_sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {

@@ -39,13 +39,18 @@ struct LinkDensity {
   double mass = 0;
   double volume = 0;
   bool from_collision = false;
+  double group_mass = 0;  // the mass of its welded group, itself included
   double density() const { return mass / volume; }
 };
 
-// A marker or frame of at most this mass (1 g: an ArUco tag, a logo decal, a 1e-6 kg antenna
-// placeholder) is no body whose density means anything; the geometry rules leave such dummy
-// masses alone too.
-constexpr double kDummyMass = 1e-3;  // kg
+// A marker: geometry too small to hold a body's mass as a solid, that is, geometry that the
+// lightest solid (kMinSolidDensity) filling it would make at most kDummyMass heavy (an ArUco
+// tag's sheet, a 1 cm frame marker), or at most kMarkerShare of the rest of its welded group (a
+// logo badge or an antenna stub on a robot's body: whatever it weighs, the body it is welded to
+// does not change). Its density means nothing. A small mass on a part of real size that moves on
+// its own (a 1 g placeholder on a 4 x 9 x 6 cm gripper finger, 37 kg/m³) is judged.
+constexpr double kDummyMass = 1e-3;   // kg
+constexpr double kMarkerShare = 0.05;  // 5%: about what mass identification achieves
 
 // "PLA 0.034 kg, ABS 0.028 kg, ..." for a volume (m³), over the common materials.
 std::string MassesAt(double volume, double other_mass = 0) {
@@ -86,7 +91,10 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
   // inside a bracket's mesh, a knee motor behind a simplified shell): on the labelled robots with
   // their meshes, all 14 links denser than osmium were such lumped masses (docs/rules.md).
   if (rho >= kMinSolidDensity) return std::nullopt;
-  if (!(d.mass > kDummyMass)) return std::nullopt;
+  const double solid = d.volume * kMinSolidDensity;  // the lightest solid filling the geometry
+  if (!(solid > kDummyMass) || !(solid > kMarkerShare * (d.group_mass - d.mass))) {
+    return std::nullopt;  // a marker
+  }
   const std::string what =
       std::string("its closed ") + (d.from_collision ? "collision" : "visual") + " mesh";
   std::string message = "link '" + link.name + "': mass " + Num(d.mass) + " kg over the volume " +
@@ -161,7 +169,8 @@ const std::vector<RuleInfo>& DensityRules() {
   static const std::vector<RuleInfo> kRules = {
       {kDensityImplausibleRule, Severity::kWarning, true,
        "A link's mass over the volume of its closed meshes is a density no solid part has "
-       "(below 100 kg/m³: only foams); links of 1 g or less are not judged."},
+       "(below 100 kg/m³: only foams); markers (meshes that would hold at most 1 g at that "
+       "density, or 5% of their welded group) are not judged."},
       {kCadDefaultDensityRule, Severity::kWarning, true,
        "Every link with closed meshes (at least 2) has mass = volume × 1000 kg/m³ within 1%: the "
        "CAD export had no material (SolidWorks' default density); said once per model."},
@@ -184,6 +193,18 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
     const std::optional<LinkShape> shape = options.closed_mesh(link);
     if (!shape || !(shape->volume > 0) || !std::isfinite(shape->volume)) continue;
     densities.push_back({static_cast<int>(i), mass, shape->volume, shape->from_collision});
+  }
+  if (!densities.empty()) {
+    std::vector<double> group_mass(model.links.size(), 0);
+    for (const WeldedGroup& group : FindWeldedGroups(model)) {
+      double m = 0;
+      for (int i : group.links) {
+        const double mi = LinkMassProperties(model.links[i], model.format).mass;
+        if (mi > 0 && std::isfinite(mi)) m += mi;
+      }
+      for (int i : group.links) group_mass[i] = m;
+    }
+    for (LinkDensity& d : densities) d.group_mass = group_mass[d.index];
   }
   const std::size_t before = findings->size();
   if (implausible) {

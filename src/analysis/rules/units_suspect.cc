@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "analysis/rules/kinematic_chain.h"
 #include "analysis/rules/rules.h"
 
 namespace massprops {
@@ -222,6 +223,15 @@ KinematicScale KinematicScaleOf(const RuleContext& ctx, int link_index, const Ei
                                     : std::string()) +
                    (group_reach > 0 ? ", its welded group's geometry " + Num(group_reach) + " m"
                                     : std::string());
+  // Joints at one point (a compound hip's links between coincident axes), or a span far below
+  // the chain around the link: no evidence; the limb the link belongs to is (kinematic_chain.h).
+  const ChainSpan chain = ChainSpanOf(ctx, link_index);
+  if (scale.span <= kCoincidentLength || kFarBelowChain * scale.span < chain.span) {
+    if (chain.span > scale.span) {
+      scale.span = chain.span;
+      scale.evidence += "; its own span is no evidence, so " + chain.evidence;
+    }
+  }
   return scale;
 }
 
@@ -243,7 +253,7 @@ bool CheckUnitsAgainstKinematics(RuleContext& ctx, const JudgedLink& judged, dou
     return false;
   }
   const KinematicScale scale = KinematicScaleOf(ctx, judged.index, judged.props.p_FoScm_F);
-  if (!(scale.span > 0)) return false;
+  if (!(scale.span > kCoincidentLength)) return false;  // no length to divide by
   const double limit = scale.partial ? kKinematicRatioPartial : kKinematicRatio;
   const double ratio = k / scale.span;
   if (!(ratio > limit)) return false;
