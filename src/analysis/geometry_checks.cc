@@ -1,11 +1,16 @@
 #include "massprops/analysis/geometry_checks.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <thread>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "massprops/analysis/mass_report.h"
@@ -107,7 +112,8 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
     LinkGeometryPoints result;
     for (const Geometry& geometry : link.geometries) {
       if (geometry.type != Geometry::Type::kMesh) {
-        const std::optional<Eigen::AlignedBox3d> box = CalcGeometryBounds(geometry, resolve, nullptr);
+        const std::optional<Eigen::AlignedBox3d> box =
+            CalcGeometryBounds(geometry, resolve, nullptr);
         if (!box || box->isEmpty()) {
           ++result.unknown;
           continue;
@@ -116,6 +122,7 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
           result.points_B.push_back(
               box->corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
         }
+        result.count += 8;
         continue;
       }
       // The resolved file (CalcGeometryMassProperties resolves it as every other reader does,
@@ -123,35 +130,47 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
       std::string error;
       const std::optional<GeometryMassProperties> props =
           CalcGeometryMassProperties(geometry, resolve, &error);
-      std::shared_ptr<const TriangleMesh> mesh;
+      std::shared_ptr<const MeshPoints> points;
       if (props && !props->mesh_path.empty()) {
         if (resolve.cache != nullptr) {
-          mesh = resolve.cache->Load(props->mesh_path, &error);
+          points = resolve.cache->Points(props->mesh_path, &error);
         } else {
-          auto loaded = std::make_shared<TriangleMesh>();
-          if (LoadMeshFile(props->mesh_path, loaded.get(), &error)) mesh = loaded;
+          TriangleMesh loaded;
+          if (LoadMeshFile(props->mesh_path, &loaded, &error)) {
+            auto all = std::make_shared<MeshPoints>();
+            all->positions = std::move(loaded.vertices);
+            all->loader_vertices = static_cast<std::int64_t>(all->positions.size());
+            points = std::move(all);
+          }
         }
       }
-      if (!mesh || mesh->vertices.empty()) {
+      if (!points || points->positions.empty()) {
         ++result.unknown;
         continue;
       }
       const Eigen::Vector3d& s = geometry.scale;
       const Pose& X_BG = geometry.X_BG;
-      for (const Eigen::Vector3d& v : mesh->vertices) {
+      for (const Eigen::Vector3d& v : points->positions) {
         result.points_B.push_back(X_BG.p_AB + X_BG.R_AB * v.cwiseProduct(s));
       }
+      result.count += static_cast<std::size_t>(points->loader_vertices);
       ++result.meshes;
     }
     return result;
   };
 }
 
-LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve) {
+// The options of MakeClosedMeshShapeFunction: an open mesh is refused, so no convex hull
+// (qhull) is computed for it; STL without assimp.
+MeshResolveOptions ClosedMeshOptions(const MeshResolveOptions& resolve) {
   MeshResolveOptions closed = resolve;
-  // An open mesh is refused below: no convex hull (qhull) is computed for it.
   closed.inertia.open_mesh_model = MeshSolidModel::kClosedSolid;
-  closed.inertia.read_stl_directly = true;  // no assimp for STL: 5-7x cheaper (docs/rules.md)
+  closed.inertia.read_stl_directly = true;
+  return closed;
+}
+
+LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve) {
+  const MeshResolveOptions closed = ClosedMeshOptions(resolve);
   return [closed](const Link& link) -> std::optional<LinkShape> {
     for (const bool collision : {false, true}) {
       std::vector<GeometryMassProperties> parts;
@@ -198,6 +217,40 @@ LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve)
     }
     return std::nullopt;
   };
+}
+
+void PrefetchModelMeshes(const Model& model, const MeshResolveOptions& resolve, int threads) {
+  if (resolve.cache == nullptr || threads < 2) return;
+  const MeshResolveOptions closed = ClosedMeshOptions(resolve);
+  // Each distinct (file, scale), in model order.
+  std::vector<std::pair<std::string, Eigen::Vector3d>> work;
+  std::set<std::tuple<std::string, double, double, double>> seen;
+  std::set<std::string> files;
+  for (const Link& link : model.links) {
+    for (const Geometry& geometry : link.geometries) {
+      if (geometry.type != Geometry::Type::kMesh || !geometry.scale.allFinite()) continue;
+      const std::optional<std::string> path = ResolveGeometryMeshUri(geometry, resolve, nullptr);
+      const Eigen::Vector3d& s = geometry.scale;
+      if (!path || !seen.insert({*path, s.x(), s.y(), s.z()}).second) continue;
+      work.emplace_back(*path, s);
+      files.insert(*path);
+    }
+  }
+  if (files.size() < 2) return;
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < work.size(); i = next++) {
+      std::string error;
+      resolve.cache->Bounds(work[i].first, &error);
+      resolve.cache->MassProperties(work[i].first, work[i].second, closed.inertia, &error);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads && static_cast<std::size_t>(t) < work.size(); ++t) {
+    pool.emplace_back(worker);
+  }
+  worker();
+  for (std::thread& thread : pool) thread.join();
 }
 
 const std::vector<RuleInfo>& GeometryRules() {

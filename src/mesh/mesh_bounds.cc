@@ -3,7 +3,9 @@
 // else, and anything these readers do not understand, goes through LoadMeshFile so that the box
 // is always that of the mesh the full loader gives.
 #include <Eigen/Geometry>
+#include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -249,13 +251,88 @@ bool AsciiStlTriangles(const std::string& bytes, TriangleMesh* mesh) {
   return true;
 }
 
+// The hull-bound points of a binary STL (its size already checked): each distinct position
+// once (-0 and +0 the same: the first one written is kept), in order of first appearance, and the
+// number of vertices assimp 5.2 gives for it. Its STL importer gives every corner the facet's
+// normal; aiProcess_JoinIdenticalVertices then keeps a corner unless an earlier kept one is at the
+// same position (its spatial sort's tolerance of a few ULPs of the squared distance is exact
+// equality at any length above 1e-20) with a normal within 1e-5 (squared distance in float
+// arithmetic, not above 1e-10; a NaN normal matches): the same test is made here, in float, against
+// the kept corners at that position. False when a coordinate is not finite, or the header asks for
+// colors (which assimp's join compares too).
+bool BinaryStlPoints(const std::string& bytes, MeshPoints* points) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, sizeof(count));
+  if (count == 0 || std::string(bytes.data(), 80).find("COLOR=") != std::string::npos) {
+    return false;
+  }
+  const std::size_t corners = 3 * static_cast<std::size_t>(count);
+  std::size_t capacity = 16;
+  while (capacity < 2 * corners) capacity *= 2;
+  // Per distinct position: its index in points->positions; its kept normals in a chain.
+  std::vector<std::int32_t> table(capacity, -1);
+  std::vector<std::array<float, 3>> position_of;
+  std::vector<std::int32_t> first_kept;  // per position: the first kept corner, or -1
+  std::vector<std::array<float, 3>> kept_normal;
+  std::vector<std::int32_t> next_kept;  // per kept corner: the next at its position, or -1
+  position_of.reserve(corners / 4);
+  first_kept.reserve(corners / 4);
+  auto bits = [](float v) {
+    std::uint32_t u;
+    const float w = v + 0.0f;  // -0 + 0 == +0
+    std::memcpy(&u, &w, sizeof u);
+    return u;
+  };
+  for (std::uint32_t t = 0; t < count; ++t) {
+    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
+    std::array<float, 3> normal;
+    std::memcpy(normal.data(), facet, sizeof(normal));
+    for (int v = 0; v < 3; ++v) {
+      std::array<float, 3> p;
+      std::memcpy(p.data(), facet + 12 * (v + 1), sizeof(p));
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
+      std::uint64_t h = bits(p[0]) * 0x9E3779B97F4A7C15ull;
+      h = (h ^ (h >> 29) ^ bits(p[1])) * 0xBF58476D1CE4E5B9ull;
+      h = (h ^ (h >> 32) ^ bits(p[2])) * 0x94D049BB133111EBull;
+      std::size_t slot = (h ^ (h >> 31)) & (capacity - 1);
+      while (table[slot] >= 0 && position_of[static_cast<std::size_t>(table[slot])] != p) {
+        slot = (slot + 1) & (capacity - 1);
+      }
+      if (table[slot] < 0) {
+        table[slot] = static_cast<std::int32_t>(position_of.size());
+        position_of.push_back(p);
+        first_kept.push_back(-1);
+      }
+      const auto at = static_cast<std::size_t>(table[slot]);
+      bool joined = false;
+      for (std::int32_t k = first_kept[at]; k >= 0 && !joined; k = next_kept[k]) {
+        const std::array<float, 3>& n = kept_normal[static_cast<std::size_t>(k)];
+        const float dx = normal[0] - n[0], dy = normal[1] - n[1], dz = normal[2] - n[2];
+        const float square_epsilon = 1e-5f * 1e-5f;
+        joined = !(dx * dx + dy * dy + dz * dz > square_epsilon);
+      }
+      if (joined) continue;
+      next_kept.push_back(first_kept[at]);
+      first_kept[at] = static_cast<std::int32_t>(kept_normal.size());
+      kept_normal.push_back(normal);
+    }
+  }
+  points->loader_vertices = static_cast<std::int64_t>(kept_normal.size());
+  points->positions.clear();
+  points->positions.reserve(position_of.size());
+  for (const auto& p : position_of) points->positions.emplace_back(p[0], p[1], p[2]);
+  return true;
+}
+
 }  // namespace
 
 namespace internal {
 
-bool ReadStlDirect(const std::string& path, TriangleMesh* mesh) {
+bool ReadStlDirect(const std::string& path, TriangleMesh* mesh, MeshPoints* points,
+                   bool* has_points) {
   TriangleMesh found;
   bool ok = false;
+  if (has_points) *has_points = false;
   try {
     std::string bytes;
     {
@@ -269,7 +346,9 @@ bool ReadStlDirect(const std::string& path, TriangleMesh* mesh) {
     }
     std::uint32_t count = 0;
     if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, sizeof(count));
-    if (bytes.size() >= 84 && 84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) {
+    const bool binary =
+        bytes.size() >= 84 && 84 + 50 * static_cast<std::uint64_t>(count) == bytes.size();
+    if (binary) {
       ok = BinaryStlTriangles(bytes, &found);
     } else {
       const std::size_t first = bytes.find_first_not_of(" \t\r\n\f\v");
@@ -278,6 +357,9 @@ bool ReadStlDirect(const std::string& path, TriangleMesh* mesh) {
     }
     // Indices are 32-bit: a file of more than 2^31 / 3 triangles is left to assimp.
     if (ok && found.vertices.size() > 0x7fffffff) ok = false;
+    if (ok && binary && points != nullptr && BinaryStlPoints(bytes, points) && has_points) {
+      *has_points = true;
+    }
   } catch (const std::exception&) {  // std::bad_alloc on a huge file: assimp's message
     ok = false;
   }

@@ -11,7 +11,6 @@
 
 #include "massprops/core/unit_inertia.h"
 #include "mesh/mesh_backend.h"
-#include "mesh/stl_direct.h"
 
 namespace massprops {
 namespace fs = std::filesystem;
@@ -323,78 +322,6 @@ TriangleMesh ScaleMesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
 
 // ------------------------------------------------------------------------------- MeshCache
 
-std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(const std::string& path,
-                                                          std::string* error) {
-  auto found = meshes_.find(path);
-  if (found == meshes_.end()) {
-    Entry entry;
-    auto mesh = std::make_shared<TriangleMesh>();
-    if (LoadMeshFile(path, mesh.get(), &entry.error)) entry.mesh = std::move(mesh);
-    ++files_loaded_;
-    found = meshes_.emplace(path, std::move(entry)).first;
-  }
-  if (!found->second.mesh && error) *error = found->second.error;
-  return found->second.mesh;
-}
-
-std::shared_ptr<const TriangleMesh> MeshCache::Load(const std::string& path, std::string* error) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return LoadLocked(path, error);
-}
-
-std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& path,
-                                                            const Eigen::Vector3d& scale,
-                                                            const MeshInertiaOptions& options,
-                                                            std::string* error) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  const auto key = std::make_tuple(
-      path, scale.x(), scale.y(), scale.z(), static_cast<int>(options.open_mesh_model),
-      options.shell_thickness, options.closure_tolerance, options.read_stl_directly);
-  if (auto found = properties_.find(key); found != properties_.end()) return found->second;
-  std::shared_ptr<const TriangleMesh> mesh;
-  if (options.read_stl_directly) {
-    auto triangles = std::make_shared<TriangleMesh>();
-    if (internal::ReadStlDirect(path, triangles.get())) mesh = std::move(triangles);
-  }
-  if (!mesh) mesh = LoadLocked(path, error);
-  if (!mesh) return std::nullopt;
-  MeshInertiaOptions unit_density = options;
-  unit_density.density = 1;
-  try {
-    MeshMassProperties properties = CalcMeshMassProperties(ScaleMesh(*mesh, scale), unit_density);
-    properties_.emplace(key, properties);
-    return properties;
-  } catch (const std::exception& e) {
-    if (error) *error = "mesh file '" + path + "': " + e.what();
-    return std::nullopt;
-  }
-}
-
-std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, std::string* error) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  auto found = bounds_.find(path);
-  if (found == bounds_.end()) {
-    BoundsEntry entry;
-    const auto loaded = meshes_.find(path);
-    if (loaded != meshes_.end()) {  // the full mesh is at hand: its box, no second read
-      if (loaded->second.mesh) {
-        Eigen::AlignedBox3d box;
-        for (const Eigen::Vector3d& v : loaded->second.mesh->vertices) box.extend(v);
-        entry.box = box;
-      } else {
-        entry.error = loaded->second.error;
-      }
-    } else {
-      Eigen::AlignedBox3d box;
-      if (LoadMeshBounds(path, &box, nullptr, &entry.error)) entry.box = box;
-      ++files_bounded_;
-    }
-    found = bounds_.emplace(path, std::move(entry)).first;
-  }
-  if (!found->second.box && error) *error = found->second.error;
-  return found->second.box;
-}
-
 std::optional<std::string> MeshCache::Resolve(const std::string& uri,
                                               const MeshResolveOptions& options, std::string* error,
                                               MeshFoundBy* found_by) {
@@ -417,16 +344,6 @@ std::optional<std::string> MeshCache::Resolve(const std::string& uri,
   if (!found->second.path && error) *error = found->second.error;
   if (found_by) *found_by = found->second.found_by;
   return found->second.path;
-}
-
-int MeshCache::files_loaded() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return files_loaded_;
-}
-
-int MeshCache::files_bounded() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return files_bounded_;
 }
 
 // ------------------------------------------------------------------------------- geometry
@@ -482,21 +399,26 @@ double CalcPrimitiveVolume(const Geometry& geometry, RotationalInertia<double>* 
 }
 
 // Loads the mesh at `path` (through the cache when there is one): its mass properties at
-// density 1 once scaled, and its unscaled vertices (for the bounding box). Either may be null
-// on failure, with the reason.
+// density 1 once scaled, and its unscaled vertex positions (for the bounding box: each distinct
+// one once, which gives the same box). Either may be null on failure, with the reason.
 void LoadGeometryMesh(const Geometry& geometry, const std::string& path,
                       const MeshResolveOptions& options, std::optional<MeshMassProperties>* mesh,
-                      std::shared_ptr<const TriangleMesh>* vertices, std::string* reason) {
+                      std::shared_ptr<const std::vector<Eigen::Vector3d>>* vertices,
+                      std::string* reason) {
   if (options.cache != nullptr) {
     *mesh = options.cache->MassProperties(path, geometry.scale, options.inertia, reason);
-    if (*mesh) *vertices = options.cache->Load(path, reason);
+    if (!*mesh) return;
+    if (std::shared_ptr<const MeshPoints> points = options.cache->Points(path, reason)) {
+      *vertices = std::shared_ptr<const std::vector<Eigen::Vector3d>>(points, &points->positions);
+    }
   } else {
     auto triangles = std::make_shared<TriangleMesh>();
     if (LoadMeshFile(path, triangles.get(), reason)) {
       MeshInertiaOptions unit_density = options.inertia;
       unit_density.density = 1;
       *mesh = CalcMeshMassProperties(ScaleMesh(*triangles, geometry.scale), unit_density);
-      *vertices = std::move(triangles);
+      *vertices =
+          std::shared_ptr<const std::vector<Eigen::Vector3d>>(triangles, &triangles->vertices);
     }
   }
 }
@@ -519,14 +441,14 @@ bool CalcMeshGeometry(const Geometry& geometry, const MeshResolveOptions& option
     return false;
   }
   std::optional<MeshMassProperties> mesh;
-  std::shared_ptr<const TriangleMesh> vertices;  // for the bounding box
+  std::shared_ptr<const std::vector<Eigen::Vector3d>> vertices;  // for the bounding box
   LoadGeometryMesh(geometry, *path, options, &mesh, &vertices, &reason);
   if (!mesh || !vertices) {
     if (error) *error = Describe(geometry) + ": " + reason;
     return false;
   }
   // The box of the scaled vertices as posed in B (exact; one pass over the vertices).
-  for (const Eigen::Vector3d& v : vertices->vertices) {
+  for (const Eigen::Vector3d& v : *vertices) {
     result->box_B.extend(geometry.X_BG.p_AB + geometry.X_BG.R_AB * v.cwiseProduct(geometry.scale));
   }
   result->volume = mesh->mass;  // Density 1.

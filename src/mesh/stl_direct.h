@@ -8,6 +8,7 @@
 #include <string>
 
 #include "massprops/mesh/mesh_inertia.h"
+#include "massprops/mesh/mesh_loader.h"
 
 namespace massprops::internal {
 
@@ -17,7 +18,12 @@ namespace massprops::internal {
 /// for ascii). The same triangles, in the same order and with the same coordinates, as assimp
 /// gives (it joins identical vertices, which the mass properties do not depend on). Returns false
 /// (and leaves *mesh empty) when the file is not such an STL, has no triangle or a coordinate is
-/// not finite: LoadMeshFile then asks assimp, which says what is wrong. Never throws.
-bool ReadStlDirect(const std::string& path, TriangleMesh* mesh);
+/// not finite: LoadMeshFile then asks assimp, which says what is wrong. When `points` is not null,
+/// the same read also gives a binary STL's hull-bound points (*has_points true; see
+/// BinaryStlPoints in mesh_bounds.cc: the distinct positions, and the vertex count LoadMeshFile
+/// gives); not an ascii STL's, nor a file of colored facets ("COLOR=" in its header): then
+/// *has_points is false. Never throws.
+bool ReadStlDirect(const std::string& path, TriangleMesh* mesh, MeshPoints* points = nullptr,
+                   bool* has_points = nullptr);
 
 }  // namespace massprops::internal

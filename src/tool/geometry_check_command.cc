@@ -1,9 +1,11 @@
 // The `massprops check` options of the geometry rules (see src/tool/geometry_cli.h).
 #include <algorithm>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -20,13 +22,30 @@ struct GeometryArgs {
   bool enabled = false;      // --geometry
   bool no_geometry = false;  // --no-geometry
   double factor = 2;
+  bool no_cache = false;         // --no-cache
+  int jobs = 0;                  // --jobs (0: one per core)
+  std::size_t file_threads = 1;  // the threads that check files
   std::vector<std::string> package_paths;
-  MeshCache cache;  // One per run: each mesh file is read once.
+  MeshCache cache;  // One per run: each mesh file is read once (and kept between runs).
+  std::once_flag persistent_once;
 };
 
 GeometryArgs& Args() {
   static GeometryArgs args;
   return args;
+}
+
+// The run's mesh cache; unless --no-cache, backed by the persistent one (docs/meshes.md#cache),
+// set up on first use: a run that reads no mesh never looks for it. Its entries are written when
+// the cache is destroyed at exit.
+MeshCache* RunCache() {
+  GeometryArgs& args = Args();
+  std::call_once(args.persistent_once, [&args] {
+    if (args.no_cache) return;
+    const std::string folder = DefaultMeshCacheFolder();
+    if (!folder.empty()) args.cache.UsePersistentCache(folder);
+  });
+  return &args.cache;
 }
 
 // --package-path, then the configuration's package-paths.
@@ -88,6 +107,11 @@ std::vector<std::string> WithConfigPackagePaths(std::vector<std::string> package
   return package_paths;
 }
 
+void SetMeshJobs(int jobs, std::size_t file_threads) {
+  Args().jobs = jobs;
+  Args().file_threads = std::max<std::size_t>(1, file_threads);
+}
+
 void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted) {
   GeometryArgs& args = Args();
   CLI::Option* geometry = nullptr;
@@ -113,6 +137,11 @@ void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted) {
         ->capture_default_str();
   }
   if (wanted.Wants({"--package-path"})) AddPackagePathOption(check, &args.package_paths);
+  if (wanted.Wants({"--no-cache"})) {
+    check->add_flag("--no-cache", args.no_cache,
+                    "Read every mesh again: neither use nor update the cache of mesh numbers kept "
+                    "between runs (docs/meshes.md; `massprops cache clean` empties it)");
+  }
 }
 
 void UseGeometryShapes(const Model& model, const std::vector<std::string>& model_paths,
@@ -121,7 +150,17 @@ void UseGeometryShapes(const Model& model, const std::vector<std::string>& model
   GeometryArgs& args = Args();
   if (args.no_geometry) return;
   const MeshResolveOptions resolve =
-      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, RunCache());
+  const bool has_mesh = std::any_of(model.links.begin(), model.links.end(), [](const Link& link) {
+    return std::any_of(link.geometries.begin(), link.geometries.end(),
+                       [](const Geometry& g) { return g.type == Geometry::Type::kMesh; });
+  });
+  if (has_mesh) {  // the cores are asked for only now: start-up without meshes does not pay
+    const std::size_t wanted =
+        args.jobs > 0 ? static_cast<std::size_t>(args.jobs) : std::thread::hardware_concurrency();
+    PrefetchModelMeshes(model, resolve,
+                        static_cast<int>(std::max<std::size_t>(1, wanted / args.file_threads)));
+  }
   if (args.enabled) options->shape = MakeLinkShapeFunction(resolve);
   options->box = MakeLinkBoxFunction(resolve);
   options->points = MakeLinkPointsFunction(resolve);
@@ -133,7 +172,7 @@ void CountMeshLinks(const Model& model, const std::vector<std::string>& model_pa
   GeometryArgs& args = Args();
   if (args.no_geometry) return;
   const MeshResolveOptions resolve =
-      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, RunCache());
   RecordMeshUris(model, resolve, result);
   if (args.enabled) return;
   const LinkBoxFunction box = MakeLinkBoxFunction(resolve);
@@ -161,7 +200,7 @@ void AddGeometryFindings(const Model& model, const CheckOptions& options,
   geometry.enabled = true;
   geometry.factor = args.factor;
   geometry.resolve =
-      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, &args.cache);
+      MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, RunCache());
   geometry.check = options;
   const std::vector<Finding> found = CheckModelGeometry(model, geometry);
   findings->insert(findings->end(), found.begin(), found.end());

@@ -29,6 +29,10 @@ MeshResolveOptions MakeResolveOptions(const std::vector<std::string>& package_pa
 std::vector<std::string> WithConfigPackagePaths(std::vector<std::string> package_paths,
                                                 const std::string& model_file);
 
+/// How many threads read the meshes of one file (PrefetchModelMeshes): `jobs` (--jobs; 0: one
+/// per core) shared among the `file_threads` threads that check files, at least 1.
+void SetMeshJobs(int jobs, std::size_t file_threads);
+
 /// Adds those of --geometry, --no-geometry, --geometry-factor X and --package-path DIR that
 /// `wanted` asks for to the check subcommand.
 void AddGeometryCheckOptions(CLI::App* check, const OptionFilter& wanted);

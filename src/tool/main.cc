@@ -484,6 +484,7 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
   const std::vector<Settings> settings = LoadSettings(args, cli, explicit_config, files);
 
   std::vector<FileResult> results(files.size());
+  massprops::cli::SetMeshJobs(args.jobs, JobCount(args.jobs, files));
   RunInParallel(files.size(), JobCount(args.jobs, files),
                 [&](std::size_t i) { results[i] = CheckFile(files[i], settings[i]); });
   if (xacro) massprops::cli::FinishXacroRun(&*xacro, &results.front());
@@ -587,8 +588,9 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
   if (wanted.Wants({"-j", "--jobs"})) {
     check
         ->add_option("-j,--jobs", args->jobs,
-                     "Check this many files at once (default 0: one per core); the output is the "
-                     "same, byte for byte, whatever the number")
+                     "Check this many files at once, and read one file's meshes on this many "
+                     "threads (default 0: one per core); the output is the same, byte for byte, "
+                     "whatever the number")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
   }
@@ -650,6 +652,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddFixCommands(app, &run);
     massprops::cli::AddViewCommands(app, &run);
     massprops::cli::AddTraceCommand(app, &run);
+    massprops::cli::AddCacheCommands(app, &run);
   }
 
   try {

@@ -25,8 +25,8 @@ inline const std::vector<std::string_view>& CheckOptionNames() {
   static const std::vector<std::string_view> kNames = {
       "--format", "--color", "--fail-on", "--disable", "--severity", "--tolerance", "--config",
       "--model-path", "--target", "-q", "--quiet", "-j", "--jobs", "--list-rules", "--geometry",
-      "--no-geometry", "--geometry-factor", "--package-path", "--xacro-arg", "--xacro-command",
-      "--expanded", "--source-root"};
+      "--no-geometry", "--geometry-factor", "--package-path", "--no-cache", "--xacro-arg",
+      "--xacro-command", "--expanded", "--source-root"};
   // clang-format on
   return kNames;
 }

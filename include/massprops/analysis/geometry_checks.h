@@ -68,6 +68,14 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve);
 /// should be set and outlive the function. Never throws.
 LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve);
 
+/// Reads, on `threads` threads (the calling one included), what the functions above will ask
+/// resolve.cache for about the meshes of `model`: each file's box (MakeLinkBoxFunction; a binary
+/// STL's hull-bound points come with it) and its closed-solid mass properties per scale
+/// (MakeClosedMeshShapeFunction). Changes no result: the cache computes each number once, the
+/// same way, whichever thread asks first. Nothing without a cache, with fewer than 2 threads or
+/// fewer than 2 mesh files. Never throws.
+void PrefetchModelMeshes(const Model& model, const MeshResolveOptions& resolve, int threads);
+
 /// The two rules above, as RuleInfo (both warnings, both off by default).
 const std::vector<RuleInfo>& GeometryRules();
 

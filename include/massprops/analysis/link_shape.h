@@ -69,7 +69,11 @@ using LinkBoxFunction = std::function<std::optional<LinkGeometryBox>(const Link&
 /// includes meshes (a CAD mesh is the part's envelope: far tighter than its bounding box).
 struct LinkGeometryPoints {
   std::vector<Eigen::Vector3d> points_B;  ///< In B (metres).
-  int meshes = 0;                         ///< Meshes read.
+  /// How many points the geometries have: 8 per primitive's box, and each mesh's vertex count as
+  /// LoadMeshFile gives it (points_B holds each mesh's distinct positions, which bound the same
+  /// hull).
+  std::size_t count = 0;
+  int meshes = 0;   ///< Meshes read.
   int unknown = 0;  ///< Geometries that could not be read (then the hull is not the body's).
 };
 

@@ -119,9 +119,46 @@ bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* erro
 bool LoadMeshBounds(const std::string& path, Eigen::AlignedBox3d* box, bool* direct,
                     std::string* error);
 
-/// Mesh files loaded once per run, and their mass properties per (file, scale). Thread-safe.
+/// The points of a mesh file that bound its convex hull (the hull rule of
+/// inertia-exceeds-geometry): each distinct vertex position of LoadMeshFile's mesh once, in order
+/// of first appearance, and how many vertices LoadMeshFile gives (the count findings quote).
+struct MeshPoints {
+  std::vector<Eigen::Vector3d> positions;
+  std::int64_t loader_vertices = 0;
+};
+
+namespace internal {
+class MeshStore;
+}
+
+/// MeshCache::UsePersistentCache's default bound on the cache folder: 512 MiB.
+constexpr std::uint64_t kDefaultMeshCacheBytes = std::uint64_t{512} << 20;
+
+/// Mesh files read once per run: their boxes, hull-bound points and mass properties per (file,
+/// scale, options), and, with UsePersistentCache, kept between runs. A binary STL is read once,
+/// directly (no assimp), for all of them; assimp (LoadMeshFile) reads other formats, and an STL
+/// whose mass properties need its convex hull or thin shell (an open mesh), so that every number
+/// is the one LoadMeshFile's mesh gives. Thread-safe: different files are read in parallel.
 class MeshCache {
  public:
+  MeshCache();
+  /// Flush().
+  ~MeshCache();
+  MeshCache(const MeshCache&) = delete;
+  MeshCache& operator=(const MeshCache&) = delete;
+
+  /// Keeps each mesh file's box, hull-bound points and mass properties in `folder` (created
+  /// when needed; DefaultMeshCacheFolder()) between runs, keyed by the file's content hash and
+  /// size, with its path, size and modification time as a shortcut that spares reading an
+  /// unchanged file. Entries are written atomically; a damaged one is ignored and rewritten; the
+  /// folder is trimmed to `max_bytes` (oldest entries first). Call before any other member.
+  void UsePersistentCache(const std::string& folder,
+                          std::uint64_t max_bytes = kDefaultMeshCacheBytes);
+
+  /// Writes what this run derived and the persistent cache lacked, then trims it. Nothing
+  /// without UsePersistentCache. Errors (a read-only folder, a full disk) are ignored.
+  void Flush();
+
   /// The mesh at `path` (LoadMeshFile), loading it on first use; failures are remembered too.
   /// Returns null and sets *error on failure.
   std::shared_ptr<const TriangleMesh> Load(const std::string& path, std::string* error);
@@ -135,9 +172,13 @@ class MeshCache {
                                                    std::string* error);
 
   /// The bounding box of the mesh at `path` (LoadMeshBounds), read on first use; from the
-  /// loaded mesh when Load already has it. Failures are remembered too. Returns nullopt and
-  /// sets *error on failure.
+  /// mesh when it was read already. Failures are remembered too. Returns nullopt and sets
+  /// *error on failure.
   std::optional<Eigen::AlignedBox3d> Bounds(const std::string& path, std::string* error);
+
+  /// The hull-bound points of the mesh at `path` (MeshPoints), read on first use. Returns
+  /// null and sets *error when LoadMeshFile cannot read the file.
+  std::shared_ptr<const MeshPoints> Points(const std::string& path, std::string* error);
 
   /// ResolveMeshUri(uri, options, error, found_by), remembered per (uri, the description's
   /// folder, the search paths, use_environment, search_repository): a model references the same
@@ -148,29 +189,23 @@ class MeshCache {
   /// The packages crawled in the descriptions' repositories this run.
   RepositoryPackages& packages() { return packages_; }
 
-  /// How many times a file was actually read (for tests and statistics).
+  /// How many times a mesh file was actually read, directly or by assimp (for tests).
   int files_loaded() const;
-  /// How many files LoadMeshBounds read (Bounds calls that found nothing cached).
+  /// How many files Bounds read (calls that found nothing read or cached).
   int files_bounded() const;
+  /// How many files' numbers were found in the persistent cache.
+  int files_from_persistent_cache() const;
 
  private:
-  struct Entry {
-    std::shared_ptr<const TriangleMesh> mesh;
-    std::string error;
-  };
-  std::shared_ptr<const TriangleMesh> LoadLocked(const std::string& path, std::string* error);
+  struct FileState;
+  FileState& StateOf(const std::string& path);
+  void LookUp(FileState& state, const std::string& path);
+  std::shared_ptr<const TriangleMesh> LoadLocked(FileState& state, const std::string& path,
+                                                 std::string* error);
+  void ReadDirectLocked(FileState& state, const std::string& path);
 
-  mutable std::mutex mutex_;
-  std::map<std::string, Entry> meshes_;
-  std::map<std::tuple<std::string, double, double, double, int, double, double, bool>,
-           MeshMassProperties>
-      properties_;
-  int files_loaded_ = 0;
-  struct BoundsEntry {
-    std::optional<Eigen::AlignedBox3d> box;
-    std::string error;
-  };
-  std::map<std::string, BoundsEntry> bounds_;
+  mutable std::mutex mutex_;  // guards files_, resolved_ and the counters
+  std::map<std::string, std::unique_ptr<FileState>> files_;
   struct Resolved {
     std::optional<std::string> path;
     std::string error;
@@ -178,8 +213,20 @@ class MeshCache {
   };
   std::map<std::string, Resolved> resolved_;
   RepositoryPackages packages_;
+  std::shared_ptr<internal::MeshStore> store_;
+  int files_loaded_ = 0;
   int files_bounded_ = 0;
+  int files_from_store_ = 0;
 };
+
+/// Where `massprops` keeps mesh numbers between runs: $XDG_CACHE_HOME/massprops/meshes, or
+/// ~/.cache/massprops/meshes when XDG_CACHE_HOME is unset or not an absolute path; "" when
+/// neither it nor HOME is set.
+std::string DefaultMeshCacheFolder();
+
+/// Removes the cache folder `folder` and everything in it (`massprops cache clean`). Returns
+/// how many files were removed (0 when there is no such folder), or -1 and sets *error.
+long CleanMeshCache(const std::string& folder, std::string* error);
 
 /// The mesh scaled by diag(scale): every vertex multiplied componentwise. A scale with an odd
 /// number of negative factors mirrors the mesh, so the triangles' vertex order is reversed to

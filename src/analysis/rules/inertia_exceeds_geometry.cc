@@ -121,7 +121,7 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
   ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
            judged.who + ": no mass distribution inside the convex hull of its " +
                judged.geometry_name + " (" + std::to_string(points->meshes) + " mesh" +
-               (points->meshes == 1 ? "" : "es") + ", " + std::to_string(points->points_B.size()) +
+               (points->meshes == 1 ? "" : "es") + ", " + std::to_string(points->count) +
                " points) has this inertia: about the axis " + Vec(worst_axis) +
                " through the center of mass " + Vec(c) + " the moment is " + Num(worst_moment) +
                " kg·m², but the hull allows at most m · (farthest point from that axis)² = " +

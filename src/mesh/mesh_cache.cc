@@ -1,0 +1,316 @@
+// MeshCache (mesh_loader.h): each mesh file read once per run, its numbers kept between runs.
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <utility>
+
+#include "massprops/mesh/mesh_loader.h"
+#include "mesh/mesh_store.h"
+#include "mesh/stl_direct.h"
+
+namespace massprops {
+
+namespace {
+
+bool IsStlPath(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string suffix = path.substr(path.size() - 4);
+  for (char& c : suffix) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return suffix == ".stl";
+}
+
+// The start of CalcMeshMassProperties' reason when it integrates an open mesh as a closed solid
+// because MeshInertiaOptions::open_mesh_model says so (the only closed solid that depends on it).
+constexpr char kIntegratedDespite[] = "integrated as a closed solid despite";
+
+internal::MassKey KeyOf(const Eigen::Vector3d& scale, const MeshInertiaOptions& options) {
+  return {scale.x(),
+          scale.y(),
+          scale.z(),
+          static_cast<int>(options.open_mesh_model),
+          options.shell_thickness,
+          options.closure_tolerance,
+          options.read_stl_directly};
+}
+
+// Each distinct position of `mesh` once (-0 and +0 the same), in order of first appearance.
+std::vector<Eigen::Vector3d> DistinctPositions(const TriangleMesh& mesh) {
+  auto bits = [](double v) {
+    std::uint64_t u;
+    const double w = v + 0.0;
+    std::memcpy(&u, &w, sizeof u);
+    return u;
+  };
+  std::size_t capacity = 16;
+  while (capacity < 2 * mesh.vertices.size()) capacity *= 2;
+  std::vector<std::int64_t> table(capacity, -1);
+  std::vector<Eigen::Vector3d> positions;
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    std::uint64_t h = bits(v.x()) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 29) ^ bits(v.y())) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 32) ^ bits(v.z())) * 0x94D049BB133111EBull;
+    std::size_t slot = (h ^ (h >> 31)) & (capacity - 1);
+    while (table[slot] >= 0 && !(positions[static_cast<std::size_t>(table[slot])] == v)) {
+      slot = (slot + 1) & (capacity - 1);
+    }
+    if (table[slot] >= 0) continue;
+    table[slot] = static_cast<std::int64_t>(positions.size());
+    positions.push_back(v);
+  }
+  return positions;
+}
+
+}  // namespace
+
+// What is known of one mesh file; guarded by its own mutex (different files in parallel).
+struct MeshCache::FileState {
+  std::mutex mutex;
+  // The persistent cache: looked up once; `stored` holds what is known (from it or this run).
+  bool looked_up = false;
+  bool stat_ok = false;
+  internal::FileKey key;
+  internal::StoredMesh stored;
+  bool dirty = false;
+  // This run.
+  bool loaded = false;  // LoadMeshFile tried
+  std::shared_ptr<const TriangleMesh> mesh;
+  std::string load_error;
+  bool direct_tried = false;  // the direct STL reader tried
+  std::shared_ptr<const TriangleMesh> direct;
+  bool bounded = false;
+  std::string bounds_error;
+  bool pointed = false;
+  std::string points_error;
+  std::map<internal::MassKey, std::string> mass_errors;
+};
+
+MeshCache::MeshCache() = default;
+
+MeshCache::~MeshCache() { Flush(); }
+
+void MeshCache::UsePersistentCache(const std::string& folder, std::uint64_t max_bytes) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  store_ = folder.empty() ? nullptr : std::make_shared<internal::MeshStore>(folder, max_bytes);
+}
+
+void MeshCache::Flush() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!store_) return;
+  bool wrote = false;
+  for (auto& [path, state] : files_) {
+    std::lock_guard<std::mutex> file_lock(state->mutex);
+    if (!state->dirty || !state->stat_ok) continue;
+    store_->Save(&state->key, state->stored);
+    state->dirty = false;
+    wrote = true;
+  }
+  if (wrote) store_->Trim();
+}
+
+MeshCache::FileState& MeshCache::StateOf(const std::string& path) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::unique_ptr<FileState>& state = files_[path];
+  if (!state) state = std::make_unique<FileState>();
+  return *state;
+}
+
+void MeshCache::LookUp(FileState& state, const std::string& path) {
+  if (state.looked_up) return;
+  state.looked_up = true;
+  std::shared_ptr<internal::MeshStore> store;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    store = store_;
+  }
+  if (!store) return;
+  state.stat_ok = internal::MeshStore::Stat(path, &state.key);
+  if (!state.stat_ok) return;
+  if (std::optional<internal::StoredMesh> found = store->Find(&state.key, true)) {
+    state.stored = std::move(*found);
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++files_from_store_;
+  }
+}
+
+std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, const std::string& path,
+                                                          std::string* error) {
+  if (!state.loaded) {
+    state.loaded = true;
+    auto mesh = std::make_shared<TriangleMesh>();
+    if (LoadMeshFile(path, mesh.get(), &state.load_error)) state.mesh = std::move(mesh);
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++files_loaded_;
+  }
+  if (!state.mesh && error) *error = state.load_error;
+  return state.mesh;
+}
+
+// One read of a binary STL gives its triangles and its hull-bound points; an ascii STL its
+// triangles. Nothing for other files (then LoadMeshFile).
+void MeshCache::ReadDirectLocked(FileState& state, const std::string& path) {
+  if (state.direct_tried) return;
+  state.direct_tried = true;
+  if (!IsStlPath(path)) return;
+  auto mesh = std::make_shared<TriangleMesh>();
+  auto points = std::make_shared<MeshPoints>();
+  bool has_points = false;
+  if (!internal::ReadStlDirect(path, mesh.get(), state.stored.points ? nullptr : points.get(),
+                               &has_points)) {
+    return;
+  }
+  state.direct = std::move(mesh);
+  if (has_points) {
+    state.stored.points = std::move(points);
+    state.dirty = true;
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++files_loaded_;
+}
+
+std::shared_ptr<const TriangleMesh> MeshCache::Load(const std::string& path, std::string* error) {
+  FileState& state = StateOf(path);
+  std::lock_guard<std::mutex> lock(state.mutex);
+  return LoadLocked(state, path, error);
+}
+
+std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& path,
+                                                            const Eigen::Vector3d& scale,
+                                                            const MeshInertiaOptions& options,
+                                                            std::string* error) {
+  FileState& state = StateOf(path);
+  std::lock_guard<std::mutex> lock(state.mutex);
+  const internal::MassKey key = KeyOf(scale, options);
+  auto known = [&]() -> const MeshMassProperties* {
+    for (const auto& [k, properties] : state.stored.properties) {
+      if (k == key) return &properties;
+    }
+    return nullptr;
+  };
+  LookUp(state, path);
+  if (const MeshMassProperties* found = known()) return *found;
+  // A closed solid found with other open-mesh options (the density rules' and the hull bound's
+  // differ only there) is this one too: the branches that give it do not look at those options.
+  for (const auto& [k, properties] : state.stored.properties) {
+    const MeshDiagnostics& d = properties.diagnostics;
+    if (std::get<0>(k) == scale.x() && std::get<1>(k) == scale.y() && std::get<2>(k) == scale.z() &&
+        std::get<4>(k) == options.shell_thickness && std::get<5>(k) == options.closure_tolerance &&
+        d.model == MeshSolidModel::kClosedSolid &&
+        d.fallback_reason.rfind(kIntegratedDespite, 0) != 0) {
+      MeshMassProperties same = properties;  // copied before the vector may grow
+      state.stored.properties.emplace_back(key, same);
+      state.dirty = true;
+      return same;
+    }
+  }
+  if (auto failed = state.mass_errors.find(key); failed != state.mass_errors.end()) {
+    if (error) *error = failed->second;
+    return std::nullopt;
+  }
+  MeshInertiaOptions unit_density = options;
+  unit_density.density = 1;
+  std::string why;
+  try {
+    // The directly read STL when it bounds a solid (the same triangles as assimp's, so the same
+    // numbers); assimp's mesh for everything else (its hull and shell are computed from it).
+    // The probe models an open mesh as a thin shell (cheap: no hull), a result that is then
+    // dropped; a closed solid's numbers do not depend on open_mesh_model.
+    ReadDirectLocked(state, path);
+    std::optional<MeshMassProperties> properties;
+    if (state.direct) {
+      MeshInertiaOptions probe = unit_density;
+      if (probe.open_mesh_model != MeshSolidModel::kClosedSolid) {
+        probe.open_mesh_model = MeshSolidModel::kThinShell;
+      }
+      properties = CalcMeshMassProperties(ScaleMesh(*state.direct, scale), probe);
+      if (properties->diagnostics.model != MeshSolidModel::kClosedSolid) properties.reset();
+    }
+    if (!properties) {
+      if (std::shared_ptr<const TriangleMesh> mesh = LoadLocked(state, path, &why)) {
+        properties = CalcMeshMassProperties(ScaleMesh(*mesh, scale), unit_density);
+      }
+    }
+    if (properties) {
+      state.stored.properties.emplace_back(key, *properties);
+      state.dirty = true;
+      return properties;
+    }
+  } catch (const std::exception& e) {
+    why = "mesh file '" + path + "': " + e.what();
+  }
+  state.mass_errors.emplace(key, why);
+  if (error) *error = why;
+  return std::nullopt;
+}
+
+std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, std::string* error) {
+  FileState& state = StateOf(path);
+  std::lock_guard<std::mutex> lock(state.mutex);
+  LookUp(state, path);
+  if (!state.bounded && !state.stored.box) {
+    state.bounded = true;
+    const TriangleMesh* mesh = state.mesh ? state.mesh.get() : state.direct.get();
+    if (mesh != nullptr) {  // read already: its box, no second read
+      Eigen::AlignedBox3d box;
+      for (const Eigen::Vector3d& v : mesh->vertices) box.extend(v);
+      state.stored.box = box;
+    } else if (state.loaded) {
+      state.bounds_error = state.load_error;
+    } else {
+      {
+        std::lock_guard<std::mutex> lock_counters(mutex_);
+        ++files_bounded_;
+      }
+      Eigen::AlignedBox3d box;
+      if (LoadMeshBounds(path, &box, nullptr, &state.bounds_error)) state.stored.box = box;
+    }
+    if (state.stored.box) state.dirty = true;
+  }
+  if (!state.stored.box && error) *error = state.bounds_error;
+  return state.stored.box;
+}
+
+std::shared_ptr<const MeshPoints> MeshCache::Points(const std::string& path, std::string* error) {
+  FileState& state = StateOf(path);
+  std::lock_guard<std::mutex> lock(state.mutex);
+  LookUp(state, path);
+  if (!state.pointed && !state.stored.points) {
+    state.pointed = true;
+    ReadDirectLocked(state, path);
+    if (!state.stored.points) {
+      if (std::shared_ptr<const TriangleMesh> mesh = LoadLocked(state, path, &state.points_error)) {
+        auto points = std::make_shared<MeshPoints>();
+        points->positions = DistinctPositions(*mesh);
+        points->loader_vertices = static_cast<std::int64_t>(mesh->vertices.size());
+        state.stored.points = std::move(points);
+        state.dirty = true;
+      }
+    }
+  }
+  if (!state.stored.points && error) *error = state.points_error;
+  return state.stored.points;
+}
+
+int MeshCache::files_loaded() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return files_loaded_;
+}
+
+int MeshCache::files_bounded() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return files_bounded_;
+}
+
+int MeshCache::files_from_persistent_cache() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return files_from_store_;
+}
+
+std::string DefaultMeshCacheFolder() { return internal::DefaultMeshStoreFolder(); }
+
+long CleanMeshCache(const std::string& folder, std::string* error) {
+  return internal::RemoveMeshStore(folder, error);
+}
+
+}  // namespace massprops

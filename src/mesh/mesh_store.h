@@ -1,0 +1,94 @@
+#pragma once
+// Private to the library: the numbers derived from mesh files, kept between runs under
+// $XDG_CACHE_HOME/massprops/meshes (MeshCache::UsePersistentCache, docs/meshes.md#cache).
+//
+// Two kinds of files, each written whole to a temporary name and renamed (atomic on POSIX, so
+// a concurrent run sees the old entry, the new one or none, never half of one):
+//   d-<content hash>-<size>: a mesh file's derived numbers (StoredMesh), for any file with
+//     those bytes (a checkout on CI gives the files new modification times: they still hit);
+//   s-<hash of path, size, mtime>: the content hash of the file at that path with that size
+//     and modification time, so that an unchanged file is not even read.
+// Every file ends with a hash of its bytes: a damaged or truncated one is ignored (and
+// rewritten by the run that computes the numbers again).
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "massprops/mesh/mesh_inertia.h"
+#include "massprops/mesh/mesh_loader.h"
+
+namespace massprops::internal {
+
+/// A 64-bit hash of `size` bytes, 8 at a time (not cryptographic: with the size beside it, it
+/// tells changed files and damaged entries apart).
+std::uint64_t HashBytes(const char* bytes, std::size_t size, std::uint64_t seed = 0);
+
+/// The MassProperties options a result depends on: scale x, y, z, open-mesh model, shell
+/// thickness, closure tolerance, read_stl_directly.
+using MassKey = std::tuple<double, double, double, int, double, double, bool>;
+
+/// What the cache keeps of one mesh file.
+struct StoredMesh {
+  std::optional<Eigen::AlignedBox3d> box;
+  std::shared_ptr<const MeshPoints> points;
+  std::vector<std::pair<MassKey, MeshMassProperties>> properties;
+};
+
+/// Which file an entry is of: its absolute path, size, modification time and (once read)
+/// content hash.
+struct FileKey {
+  std::string path;
+  std::uint64_t size = 0;
+  std::int64_t mtime_ns = 0;
+  std::uint64_t inode = 0;  // with the device: part of the stat entry's name only
+  std::uint64_t content_hash = 0;
+  bool hashed = false;
+};
+
+/// Serialises a StoredMesh (exact: doubles as their bits) and back; Parse returns nullopt for
+/// bytes that are not a whole, undamaged entry of this version.
+std::string SerializeStoredMesh(const StoredMesh& mesh);
+std::optional<StoredMesh> ParseStoredMesh(const std::string& bytes);
+
+/// The folder of the cache: $XDG_CACHE_HOME/massprops/meshes, or ~/.cache/massprops/meshes when
+/// XDG_CACHE_HOME is unset or not absolute (the XDG base directory specification); "" when
+/// neither HOME nor XDG_CACHE_HOME is set.
+std::string DefaultMeshStoreFolder();
+
+/// The cache folder: lookups and atomic writes. Thread-safe (no state but the folder).
+class MeshStore {
+ public:
+  /// `max_bytes`: Trim removes the least recently written entries above it.
+  MeshStore(std::string folder, std::uint64_t max_bytes);
+
+  /// *key for the file at `path` (stat); false when it is not a regular file.
+  static bool Stat(const std::string& path, FileKey* key);
+  /// The entry of key's file: through its stat entry, else (when `read_content`) by hashing the
+  /// file's bytes (then key->content_hash is set, and the stat entry is written). nullopt when
+  /// there is none, or it is damaged.
+  std::optional<StoredMesh> Find(FileKey* key, bool read_content) const;
+  /// Writes the entry of key's file (hashing it first when key->hashed is false) and its stat
+  /// entry. Failures (a read-only folder, a full disk) are ignored: the cache is an optimisation.
+  void Save(FileKey* key, const StoredMesh& mesh) const;
+  /// Removes the oldest entries while the folder holds more than max_bytes (down to 3/4 of it).
+  void Trim() const;
+
+  const std::string& folder() const { return folder_; }
+
+ private:
+  bool WriteAtomically(const std::string& name, const std::string& bytes) const;
+  std::string folder_;
+  std::uint64_t max_bytes_;
+};
+
+/// Removes the cache folder's entries (and the folder). Returns the number of files removed, or
+/// -1 with *error set when the folder cannot be listed or a file not removed.
+long RemoveMeshStore(const std::string& folder, std::string* error);
+
+}  // namespace massprops::internal

@@ -1,0 +1,347 @@
+// MeshCache's numbers kept between runs (UsePersistentCache, src/mesh/mesh_store.h) and its
+// one read per STL file (Points, MassProperties). Every cache folder here is a fresh temporary
+// one: never the user's.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+#include "massprops/mesh/mesh_loader.h"
+
+namespace massprops {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kMeshDir = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh";
+
+// A fresh folder under the system's temporary folder, removed at the end of the test.
+class TempFolder {
+ public:
+  TempFolder() {
+    std::string pattern = (fs::temp_directory_path() / "massprops-cache-test-XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  std::string operator/(const std::string& name) const { return path_ + "/" + name; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// Writes a binary STL of the cube [0, a]³: 12 triangles wound outward, each corner written in
+// each of its triangles, with the facets' normals.
+void WriteCubeStl(const std::string& path, float a) {
+  using V = std::array<float, 3>;
+  const auto corner = [a](int i) { return V{(i & 1) * a, ((i >> 1) & 1) * a, ((i >> 2) & 1) * a}; };
+  // Two triangles per face, counter-clockwise seen from outside: corner indices (bit 0 = x,
+  // bit 1 = y, bit 2 = z) and the outward normal.
+  const std::vector<std::tuple<std::array<int, 3>, V>> facets = {
+      {{0, 2, 1}, {0, 0, -1}}, {{1, 2, 3}, {0, 0, -1}}, {{4, 5, 6}, {0, 0, 1}},
+      {{5, 7, 6}, {0, 0, 1}},  {{0, 1, 4}, {0, -1, 0}}, {{1, 5, 4}, {0, -1, 0}},
+      {{2, 6, 3}, {0, 1, 0}},  {{3, 6, 7}, {0, 1, 0}},  {{0, 4, 2}, {-1, 0, 0}},
+      {{2, 4, 6}, {-1, 0, 0}}, {{1, 3, 5}, {1, 0, 0}},  {{3, 7, 5}, {1, 0, 0}}};
+  std::string bytes(80, ' ');
+  const std::uint32_t count = static_cast<std::uint32_t>(facets.size());
+  bytes.append(reinterpret_cast<const char*>(&count), 4);
+  for (const auto& [corners, normal] : facets) {
+    bytes.append(reinterpret_cast<const char*>(normal.data()), 12);
+    for (const int c : corners) bytes.append(reinterpret_cast<const char*>(corner(c).data()), 12);
+    bytes.append(2, '\0');
+  }
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+struct Numbers {
+  Eigen::AlignedBox3d box;
+  std::shared_ptr<const MeshPoints> points;
+  MeshMassProperties properties;
+};
+
+Numbers Read(MeshCache* cache, const std::string& path) {
+  std::string error;
+  Numbers numbers;
+  const auto box = cache->Bounds(path, &error);
+  numbers.points = cache->Points(path, &error);
+  const auto properties =
+      cache->MassProperties(path, Eigen::Vector3d(1, 2, 3), MeshInertiaOptions{}, &error);
+  EXPECT_TRUE(box && numbers.points && properties) << error;
+  if (box) numbers.box = *box;
+  if (properties) numbers.properties = *properties;
+  return numbers;
+}
+
+std::vector<fs::path> EntriesIn(const std::string& folder) {
+  std::vector<fs::path> entries;
+  for (const auto& entry : fs::directory_iterator(folder)) entries.push_back(entry.path());
+  return entries;
+}
+
+TEST(MeshCacheTest, SecondRunReadsNoMeshAndGetsTheSameNumbers) {
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 0.5f);
+  Numbers first;
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    first = Read(&cache, mesh);
+    EXPECT_EQ(cache.files_loaded(), 1);  // one direct read for the box, points and integral
+    EXPECT_EQ(cache.files_from_persistent_cache(), 0);
+  }  // written here
+  // The cube of side 0.5 scaled by (1, 2, 3): volume 0.125 · 6 (hand-derived), center
+  // (0.25, 0.5, 0.75); 8 distinct corners, 24 vertices once joined (each corner in 3 faces of
+  // different normals, as assimp joins them).
+  EXPECT_DOUBLE_EQ(first.properties.volume, 0.75);
+  EXPECT_TRUE(first.properties.p_GoGcm_G.isApprox(Eigen::Vector3d(0.25, 0.5, 0.75), 1e-15));
+  EXPECT_EQ(first.points->positions.size(), 8u);
+  EXPECT_EQ(first.points->loader_vertices, 24);
+  MeshCache again;
+  again.UsePersistentCache(temp / "cache");
+  const Numbers second = Read(&again, mesh);
+  EXPECT_EQ(again.files_loaded(), 0);
+  EXPECT_EQ(again.files_bounded(), 0);
+  EXPECT_EQ(again.files_from_persistent_cache(), 1);
+  EXPECT_EQ(second.box.min(), first.box.min());
+  EXPECT_EQ(second.box.max(), first.box.max());
+  EXPECT_EQ(second.points->positions, first.points->positions);
+  EXPECT_EQ(second.points->loader_vertices, first.points->loader_vertices);
+  EXPECT_EQ(second.properties.volume, first.properties.volume);  // bit for bit
+  EXPECT_EQ(second.properties.p_GoGcm_G, first.properties.p_GoGcm_G);
+  EXPECT_EQ(second.properties.I_GGcm_G.CopyToFullMatrix3(),
+            first.properties.I_GGcm_G.CopyToFullMatrix3());
+  EXPECT_EQ(second.properties.diagnostics.edges, 18);  // 12 cube edges + 6 face diagonals
+}
+
+TEST(MeshCacheTest, ChangedFileIsReadAgain) {
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 0.5f);
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    Read(&cache, mesh);
+  }
+  WriteCubeStl(mesh, 2.0f);  // same size, new content (and modification time)
+  MeshCache cache;
+  cache.UsePersistentCache(temp / "cache");
+  const Numbers numbers = Read(&cache, mesh);
+  EXPECT_EQ(cache.files_from_persistent_cache(), 0);
+  EXPECT_EQ(cache.files_loaded(), 1);
+  EXPECT_DOUBLE_EQ(numbers.properties.volume, 8.0 * 6);  // 2³ scaled by 1 · 2 · 3
+  EXPECT_EQ(numbers.box.max(), Eigen::Vector3d(2, 2, 2));
+}
+
+TEST(MeshCacheTest, UnchangedOlderFileIsFoundByItsPathSizeAndTime) {
+  // A file last modified a minute ago gets a stat entry: the next run does not even hash it
+  // (checked by making the file unreadable: its numbers still come from the cache).
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 0.5f);
+  fs::last_write_time(mesh, fs::last_write_time(mesh) - std::chrono::minutes(1));
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    Read(&cache, mesh);
+  }
+  EXPECT_EQ(EntriesIn(temp / "cache").size(), 2u);  // the numbers and the stat entry
+  if (geteuid() != 0) {                             // root reads any file
+    fs::permissions(mesh, fs::perms::none);
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    std::string error;
+    EXPECT_TRUE(cache.Bounds(mesh, &error)) << error;
+    EXPECT_EQ(cache.files_from_persistent_cache(), 1);
+    fs::permissions(mesh, fs::perms::owner_all);
+  }
+}
+
+TEST(MeshCacheTest, SameBytesWithANewTimeAreFoundByTheirContent) {
+  // A checkout on CI gives every file a new modification time: the entry is found by hashing.
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 0.5f);
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    Read(&cache, mesh);
+  }
+  fs::last_write_time(mesh, fs::last_write_time(mesh) + std::chrono::hours(1));
+  MeshCache cache;
+  cache.UsePersistentCache(temp / "cache");
+  Read(&cache, mesh);
+  EXPECT_EQ(cache.files_from_persistent_cache(), 1);
+  EXPECT_EQ(cache.files_loaded(), 0);
+}
+
+TEST(MeshCacheTest, DamagedEntryIsIgnoredAndRewritten) {
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 0.5f);
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    Read(&cache, mesh);
+  }
+  // Flip one byte of the data entry (its volume, say), then truncate it in a second round.
+  for (const bool truncate : {false, true}) {
+    for (const fs::path& entry : EntriesIn(temp / "cache")) {
+      if (entry.filename().string().rfind("d-", 0) != 0) continue;
+      std::string bytes;
+      {
+        std::ifstream in(entry, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+      }
+      if (truncate) {
+        bytes.resize(bytes.size() / 2);
+      } else {
+        bytes[bytes.size() / 3] ^= 0x10;
+      }
+      std::ofstream(entry, std::ios::binary | std::ios::trunc) << bytes;
+    }
+    {
+      MeshCache cache;
+      cache.UsePersistentCache(temp / "cache");
+      const Numbers numbers = Read(&cache, mesh);
+      EXPECT_EQ(cache.files_from_persistent_cache(), 0) << truncate;
+      EXPECT_EQ(cache.files_loaded(), 1) << truncate;
+      EXPECT_DOUBLE_EQ(numbers.properties.volume, 0.75) << truncate;
+    }
+    MeshCache rewritten;
+    rewritten.UsePersistentCache(temp / "cache");
+    Read(&rewritten, mesh);
+    EXPECT_EQ(rewritten.files_from_persistent_cache(), 1) << truncate;
+  }
+}
+
+TEST(MeshCacheTest, ConcurrentWritersLeaveOneWholeEntry) {
+  // Sixteen runs at once read and write (when destroyed) the entries of the same two files, 20
+  // times each: every run gets the right numbers, whether from a whole entry or by computing
+  // them; at the end no temporary file is left and both entries are found.
+  TempFolder temp;
+  const std::string a = temp / "a.stl", b = temp / "b.stl";
+  WriteCubeStl(a, 0.5f);
+  WriteCubeStl(b, 2.0f);
+  std::atomic<int> found{0}, wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 16; ++t) {
+    threads.emplace_back([&] {
+      for (int round = 0; round < 20; ++round) {
+        MeshCache cache;
+        cache.UsePersistentCache(temp / "cache");
+        const Numbers na = Read(&cache, a), nb = Read(&cache, b);
+        if (na.properties.volume != 0.75 || nb.properties.volume != 48.0) ++wrong;
+        found += cache.files_from_persistent_cache();
+      }
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(found, 0);
+  for (const fs::path& entry : EntriesIn(temp / "cache")) {
+    EXPECT_EQ(entry.extension(), "") << entry;  // no leftover .tmp file
+  }
+  MeshCache after;
+  after.UsePersistentCache(temp / "cache");
+  Read(&after, a);
+  Read(&after, b);
+  EXPECT_EQ(after.files_from_persistent_cache(), 2);
+}
+
+TEST(MeshCacheTest, FolderIsTrimmedToItsBound) {
+  TempFolder temp;
+  for (int i = 0; i < 6; ++i) {
+    const std::string mesh = temp / ("cube" + std::to_string(i) + ".stl");
+    WriteCubeStl(mesh, 0.5f + static_cast<float>(i));
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache", 2000);  // bytes: room for a few entries only
+    Read(&cache, mesh);
+  }
+  std::uintmax_t total = 0;
+  for (const fs::path& entry : EntriesIn(temp / "cache")) total += fs::file_size(entry);
+  EXPECT_LE(total, 2000u);
+  EXPECT_GT(total, 0u);
+}
+
+TEST(MeshCacheTest, CleanRemovesTheFolder) {
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 0.5f);
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    Read(&cache, mesh);
+  }
+  std::string error;
+  // One entry (the file was just written: no stat entry, its next run hashes it).
+  EXPECT_EQ(CleanMeshCache(temp / "cache", &error), 1) << error;
+  EXPECT_FALSE(fs::exists(temp / "cache"));
+  EXPECT_EQ(CleanMeshCache(temp / "cache", &error), 0) << error;
+}
+
+TEST(MeshCacheTest, FolderFollowsXdgCacheHome) {
+  // The XDG base directory specification: an absolute XDG_CACHE_HOME, else ~/.cache.
+  const char* saved = std::getenv("XDG_CACHE_HOME");
+  const std::string restore = saved ? saved : "";
+  setenv("XDG_CACHE_HOME", "/somewhere/cache", 1);
+  EXPECT_EQ(DefaultMeshCacheFolder(), "/somewhere/cache/massprops/meshes");
+  setenv("XDG_CACHE_HOME", "relative/cache", 1);
+  const char* home = std::getenv("HOME");
+  if (home != nullptr) {
+    EXPECT_EQ(DefaultMeshCacheFolder(), std::string(home) + "/.cache/massprops/meshes");
+  }
+  if (saved) {
+    setenv("XDG_CACHE_HOME", restore.c_str(), 1);
+  } else {
+    unsetenv("XDG_CACHE_HOME");
+  }
+}
+
+// Points: the distinct positions of LoadMeshFile's (assimp's) mesh and its vertex count, from
+// one direct read of a binary STL; the same as computed from assimp's mesh for the ascii STL,
+// an OBJ and a DAE, and for the corpus' SolidWorks exports (binary STL).
+TEST(MeshCacheTest, PointsAreThoseOfTheFullLoader) {
+  std::vector<std::string> files = {kMeshDir + "/box_binary.stl", kMeshDir + "/box_ascii.stl",
+                                    kMeshDir + "/cube_quads.obj", kMeshDir + "/tet_cm.dae"};
+  const std::string corpus = std::string(MASSPROPS_CORPUS_DIR) +
+                             "/example-robot-data/robots/double_pendulum_description/meshes/";
+  if (fs::exists(corpus)) {
+    for (const char* name : {"base_link.stl", "link1.stl", "link2.stl"}) {
+      files.push_back(corpus + name);
+    }
+  }
+  for (const std::string& file : files) {
+    MeshCache cache;
+    std::string error;
+    const std::shared_ptr<const MeshPoints> points = cache.Points(file, &error);
+    ASSERT_TRUE(points) << file << ": " << error;
+    TriangleMesh assimp;
+    ASSERT_TRUE(LoadMeshFile(file, &assimp, &error)) << error;
+    EXPECT_EQ(points->loader_vertices, static_cast<std::int64_t>(assimp.vertices.size())) << file;
+    // The same set of positions (independently: an ordered set of the loader's vertices).
+    auto key = [](const Eigen::Vector3d& v) { return std::array<double, 3>{v.x(), v.y(), v.z()}; };
+    std::set<std::array<double, 3>> expected, got;
+    for (const Eigen::Vector3d& v : assimp.vertices) expected.insert(key(v));
+    for (const Eigen::Vector3d& v : points->positions) got.insert(key(v));
+    EXPECT_EQ(got, expected) << file;
+    EXPECT_EQ(got.size(), points->positions.size()) << file;  // each once
+  }
+}
+
+}  // namespace
+}  // namespace massprops
