@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/mass_report.h"
 
 namespace massprops {
@@ -107,7 +108,8 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
     LinkGeometryPoints result;
     for (const Geometry& geometry : link.geometries) {
       if (geometry.type != Geometry::Type::kMesh) {
-        const std::optional<Eigen::AlignedBox3d> box = CalcGeometryBounds(geometry, resolve, nullptr);
+        const std::optional<Eigen::AlignedBox3d> box =
+            CalcGeometryBounds(geometry, resolve, nullptr);
         if (!box || box->isEmpty()) {
           ++result.unknown;
           continue;
@@ -236,6 +238,11 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
         finding.location = geometry.location;
         finding.message = "link '" + link.name + "': mesh '" + geometry.uri +
                           "' cannot be used: " + (error.empty() ? "unknown error" : error);
+        finding.headline = "link '" + link.name + "': mesh '" + geometry.uri +
+                           "' cannot be used: " + (error.empty() ? "unknown error" : error);
+        finding.help =
+            "fix the mesh file or its URI (--package-path DIR); the reason is under "
+            "--explain";
         findings.push_back(std::move(finding));
       }
     }
@@ -286,6 +293,14 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
                       {"declared_moment", declared(worst_k)},
                       {"geometry_moment", g},
                       {"factor", worst}};
+    finding.headline = "link '" + link.name + "': inertia " + FormatRatio(worst) + " off its " +
+                       (comparison.from_collision ? "collision" : "visual") +
+                       " geometry's, principal moment " + std::to_string(worst_k + 1);
+    finding.evidence = {{"mass_kg", link.inertial->mass},
+                        {"declared_moment_kg_m2", declared(worst_k)},
+                        {"geometry_moment_kg_m2", g},
+                        {"ratio", worst}};
+    finding.help = "recompute the inertia from the geometry: massprops fix --from-geometry";
     findings.push_back(std::move(finding));
   }
   return findings;

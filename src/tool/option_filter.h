@@ -24,7 +24,8 @@ inline const std::vector<std::string_view>& CheckOptionNames() {
   // clang-format off
   static const std::vector<std::string_view> kNames = {
       "--format", "--color", "--fail-on", "--disable", "--severity", "--tolerance", "--config",
-      "--model-path", "--target", "-q", "--quiet", "-j", "--jobs", "--list-rules", "--geometry",
+      "--model-path", "--target", "-q", "--quiet", "--brief", "--explain", "--statistics", "-j",
+      "--jobs", "--list-rules", "--geometry",
       "--no-geometry", "--geometry-factor", "--package-path", "--xacro-arg", "--xacro-command",
       "--expanded", "--source-root"};
   // clang-format on
