@@ -238,10 +238,15 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
         finding.location = geometry.location;
         finding.message = "link '" + link.name + "': mesh '" + geometry.uri +
                           "' cannot be used: " + (error.empty() ? "unknown error" : error);
-        finding.headline = "link '" + link.name + "': mesh '" + geometry.uri +
-                           "' cannot be used: " + (error.empty() ? "unknown error" : error);
+        // The reason is the error's last clause ("collision at line 7 (mesh 'u'): mesh 'u': it
+        // leaves the package folder"): the headline names it, the rest is under --explain.
+        const std::size_t clause = error.rfind("': ");
+        const std::string why = error.empty()                 ? "unknown error"
+                                : clause == std::string::npos ? error
+                                                              : error.substr(clause + 3);
+        finding.headline = "link '" + link.name + "': mesh cannot be used: " + why;
         finding.help =
-            "fix the mesh file or its URI (--package-path DIR); the reason is under "
+            "fix the mesh file or its URI (--package-path DIR); the whole error is under "
             "--explain";
         findings.push_back(std::move(finding));
       }

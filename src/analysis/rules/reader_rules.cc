@@ -48,10 +48,6 @@ void DescribeReaderFinding(Finding& f) {
       of > read) {
     f.headline = "link '" + f.link + "': cannot read " + f.headline.substr(read + 6, of - read - 6);
   }
-  const std::string refuses = "ROS's URDF parser will not load this file: ";
-  if (f.headline.rfind(refuses, 0) == 0) {
-    f.headline = "ROS's URDF parser refuses the file: " + f.headline.substr(refuses.size());
-  }
   // "<include> 'uri' cannot be resolved: where it was looked for": the why is under --explain.
   const std::size_t resolved = f.headline.find("cannot be resolved");
   if (f.rule == kIncludeUnresolved && resolved != std::string::npos) {
