@@ -16,13 +16,7 @@ Matrix3 = npt.NDArray[np.float64]
 PathOrText = Union[str, bytes, os.PathLike[str]]
 SolverArg = Union[PrincipalSolver, str]
 
-class ReadError(Exception):
-    file: str
-    line: int
-    column: int
-    element: str
-    message: str
-    errors: List[str]
+# ------------- core: rotational, unit and spatial inertia, principal moments (core_bindings.cc)
 
 class PrincipalSolver(enum.Enum):
     ACCURATE: int
@@ -166,6 +160,16 @@ class SpatialInertia:
 def principal_moments(I: ArrayLike, solver: SolverArg = "accurate") -> npt.NDArray[np.float64]: ...
 def is_physically_valid(I: ArrayLike, tolerance: float = 1e-6) -> npt.NDArray[np.bool_]: ...
 
+# -------------------------------- reading: models from URDF and SDF files (reading_bindings.cc)
+
+class ReadError(Exception):
+    file: str
+    line: int
+    column: int
+    element: str
+    message: str
+    errors: List[str]
+
 class SourceLocation:
     file: str
     line: int
@@ -260,6 +264,59 @@ class Model:
     def welded_groups(self) -> List[WeldedGroup]: ...
     def composite(self) -> CompositeInertia: ...
 
+def read(path_or_text: PathOrText, *, model_paths: Sequence[str] = ...) -> Model: ...
+def read_all(path_or_text: PathOrText, *, model_paths: Sequence[str] = ...) -> List[Model]: ...
+
+# ------------------ checking: findings and rules (checking_bindings.cc; check() in __init__.py)
+
+class Finding:
+    rule: str
+    severity: str
+    model: str
+    link: str
+    file: str
+    line: int
+    column: int
+    message: str
+    headline: str
+    evidence: Dict[str, float]
+    help: str
+    values: Dict[str, float]
+    repair: Optional[Repair]
+    source: Optional[Dict[str, Any]]
+    def to_dict(self) -> Dict[str, Any]: ...
+
+class CheckOptions:
+    tolerance: Optional[float]
+    disable: Sequence[str]
+    severity: Mapping[str, str]
+    config: Optional[Union[str, os.PathLike[str]]]
+    model_paths: Sequence[str]
+    geometry: bool
+    geometry_factor: float
+    package_paths: Sequence[str]
+    def __init__(self, tolerance: Optional[float] = None, disable: Sequence[str] = (),
+                 severity: Mapping[str, str] = ..., config: Optional[Union[str, os.PathLike[str]]] = "auto",
+                 model_paths: Sequence[str] = (), geometry: bool = False,
+                 geometry_factor: float = 2.0, package_paths: Sequence[str] = ()) -> None: ...
+
+def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None, *,
+          source_root: Union[None, str, os.PathLike[str], Sequence[str]] = ...,
+          xacro_args: Optional[Mapping[str, str]] = ...,
+          tolerance: Optional[float] = ..., disable: Sequence[str] = ...,
+          severity: Mapping[str, str] = ..., config: Optional[Union[str, os.PathLike[str]]] = ...,
+          model_paths: Sequence[str] = ..., geometry: bool = ..., geometry_factor: float = ...,
+          package_paths: Sequence[str] = ...) -> List[Finding]: ...
+def rules() -> List[Dict[str, Any]]: ...
+
+# -------- reporting: the report as Python data (reporting_bindings.cc; report() in __init__.py)
+
+def report(path_or_text: PathOrText, *, joints: Optional[Mapping[str, float]] = None,
+           frame: str = "", only: Sequence[str] = (), subtree: str = "", geometry: bool = False,
+           package_paths: Sequence[str] = (), model_paths: Sequence[str] = ()) -> Dict[str, Any]: ...
+
+# ------------------- fixing: repairs and fixed files (fixing_bindings.cc; fix() in __init__.py)
+
 class FieldChange:
     element: str
     attribute: str
@@ -282,20 +339,6 @@ class Repair:
     relative_change: float
     resolves: List[str]
 
-class Finding:
-    rule: str
-    severity: str
-    model: str
-    link: str
-    file: str
-    line: int
-    column: int
-    message: str
-    values: Dict[str, float]
-    repair: Optional[Repair]
-    source: Optional[Dict[str, Any]]
-    def to_dict(self) -> Dict[str, Any]: ...
-
 class PatchError:
     link: str
     line: int
@@ -314,32 +357,6 @@ class FixResult:
     written: Optional[str]
     def diff(self, context: int = 3) -> str: ...
 
-class CheckOptions:
-    tolerance: Optional[float]
-    disable: Sequence[str]
-    severity: Mapping[str, str]
-    config: Optional[Union[str, os.PathLike[str]]]
-    model_paths: Sequence[str]
-    geometry: bool
-    geometry_factor: float
-    package_paths: Sequence[str]
-    def __init__(self, tolerance: Optional[float] = None, disable: Sequence[str] = (),
-                 severity: Mapping[str, str] = ..., config: Optional[Union[str, os.PathLike[str]]] = "auto",
-                 model_paths: Sequence[str] = (), geometry: bool = False,
-                 geometry_factor: float = 2.0, package_paths: Sequence[str] = ()) -> None: ...
-
-def read(path_or_text: PathOrText, *, model_paths: Sequence[str] = ...) -> Model: ...
-def read_all(path_or_text: PathOrText, *, model_paths: Sequence[str] = ...) -> List[Model]: ...
-def check(path_or_text: PathOrText, options: Optional[CheckOptions] = None, *,
-          source_root: Union[None, str, os.PathLike[str], Sequence[str]] = ...,
-          xacro_args: Optional[Mapping[str, str]] = ...,
-          tolerance: Optional[float] = ..., disable: Sequence[str] = ...,
-          severity: Mapping[str, str] = ..., config: Optional[Union[str, os.PathLike[str]]] = ...,
-          model_paths: Sequence[str] = ..., geometry: bool = ..., geometry_factor: float = ...,
-          package_paths: Sequence[str] = ...) -> List[Finding]: ...
-def report(path_or_text: PathOrText, *, joints: Optional[Mapping[str, float]] = None,
-           frame: str = "", only: Sequence[str] = (), subtree: str = "", geometry: bool = False,
-           package_paths: Sequence[str] = (), model_paths: Sequence[str] = ()) -> Dict[str, Any]: ...
 def fix(path_or_text: PathOrText, apply: Iterable[str] = (), dry_run: bool = True, *,
         output: Optional[Union[str, os.PathLike[str]]] = None, backup: Optional[str] = None,
         repair: str = "project", fix_units: bool = False,
@@ -348,5 +365,4 @@ def fix(path_or_text: PathOrText, apply: Iterable[str] = (), dry_run: bool = Tru
         geometry: bool = False, package_paths: Sequence[str] = (),
         model_paths: Sequence[str] = (), total_mass: Optional[float] = None,
         mass: Mapping[str, float] = {}, material: Mapping[str, str] = {}) -> FixResult: ...
-def rules() -> List[Dict[str, Any]]: ...
 def repair_inertia(I: ArrayLike, method: str = "project", tolerance: float = 1e-6) -> Matrix3: ...

@@ -13,8 +13,18 @@ namespace massprops::python {
 /// principal_moments / is_physically_valid (core_bindings.cc).
 void BindCore(pybind11::module_& m);
 
-/// Model, Link, Joint, ..., read, check, report, fix (file_bindings.cc).
-void BindFiles(pybind11::module_& m);
+/// massprops.ReadError, Model, Link, Joint, ..., read, read_all (reading_bindings.cc).
+void BindReading(pybind11::module_& m);
+
+/// Finding, the engine of check, rules (checking_bindings.cc).
+void BindChecking(pybind11::module_& m);
+
+/// FieldChange, Repair, PatchError, FixResult, the engine of fix, repair_inertia
+/// (fixing_bindings.cc).
+void BindFixing(pybind11::module_& m);
+
+/// The engine of report (reporting_bindings.cc).
+void BindReporting(pybind11::module_& m);
 
 /// The solver named by `solver`: a PrincipalSolver value or the string "accurate" / "fast".
 /// Throws pybind11::value_error (unknown name) or pybind11::type_error (another type).

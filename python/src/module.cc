@@ -22,5 +22,8 @@ PYBIND11_MODULE(_massprops, m) {
     }
   });
   massprops::python::BindCore(m);
-  massprops::python::BindFiles(m);
+  massprops::python::BindReading(m);
+  massprops::python::BindChecking(m);
+  massprops::python::BindFixing(m);
+  massprops::python::BindReporting(m);
 }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/repair_judge.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/format_number.h"
@@ -213,39 +214,6 @@ void RecomputeChanges(const Model& model, const Link& link, Repair* repair) {
   } else {
     repair->relative_change = 1;
   }
-}
-
-// x rounded to `digits` significant decimal digits.
-double RoundToDigits(double x, int digits) {
-  if (x == 0 || !std::isfinite(x)) return x;
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.*e", digits - 1, x);
-  return std::strtod(buffer, nullptr);
-}
-
-// Rounds the numbers of `after` that differ from `before` (all of them when there is no before)
-// to `digits` significant digits; numbers the repair keeps stay exactly as written, and so does
-// the precision of a number that was written with more digits.
-void RoundChanged(const std::optional<Inertial>& before, int digits, Inertial* after) {
-  // A number written with more digits than `digits` is written with as many as it had (a negation
-  // or a rescaling does not throw away the file's precision, nor adds digits it never had).
-  auto round = [&](double old_value, double* x) {
-    if (before && old_value == *x) return;
-    int precision = digits;
-    if (before) {
-      while (precision < 17 && RoundToDigits(old_value, precision) != old_value) ++precision;
-    }
-    *x = RoundToDigits(*x, precision);
-  };
-  const Inertial b = before ? *before : Inertial{};
-  round(b.mass, &after->mass);
-  for (int i = 0; i < 3; ++i) round(b.X_BBi.p_AB(i), &after->X_BBi.p_AB(i));
-  round(b.ixx, &after->ixx);
-  round(b.iyy, &after->iyy);
-  round(b.izz, &after->izz);
-  round(b.ixy, &after->ixy);
-  round(b.ixz, &after->ixz);
-  round(b.iyz, &after->iyz);
 }
 
 // A number written into the file: the shortest decimal that reads back to the same double.
@@ -678,8 +646,7 @@ Eigen::Matrix3d RepairInertia(const Eigen::Matrix3d& I, InertiaRepairMethod meth
 
 namespace {
 
-using RulesOfLinks = std::map<std::string, std::set<std::string>>;  // link -> rules
-using LinkRule = std::pair<std::string, std::string>;               // (link, rule)
+using internal::RulesOfLinks;
 
 // The rules of the findings on each link. massless-moving-body is reported once per group (or
 // once per kinematics-only model, with the value "moving_groups"): every member link of the
@@ -725,110 +692,6 @@ std::vector<Repair> PlanEachLink(const Model& model, const RepairOptions& option
   return planned;
 }
 
-// Checks repairs again against the findings of the model as it is (not the findings given, which
-// may come from other options): a repair must make the findings it answers go away and create
-// none the model did not have, on any link.
-class RepairJudge {
- public:
-  RepairJudge(const Model& model, const RepairOptions& options) : model_(model) {
-    check_options_.tolerance = options.tolerance;
-    check_options_.shape = options.shape;
-    check_options_.box = options.box;
-    check_options_.points = options.points;
-    for (const Finding& f : CheckModel(model, check_options_)) {
-      before_.insert({f.link, f.rule});
-      // Mass given to a body outboard of a massless moving group turns the group's error into
-      // this note: the same massless body, now harmless, not a finding the repair creates.
-      if (f.rule == "massless-moving-body") {
-        before_.insert({f.link, "massless-link-with-mass-outboard"});
-      }
-    }
-  }
-
-  // What is wrong with `repair` when `all` (which holds it) are applied: a finding it answers
-  // is left (judged with all of them applied: a welded group's finding may need every link of
-  // the group repaired), or it creates a finding the model did not have (judged with it alone).
-  std::vector<std::string> Problems(const Repair& repair, const std::vector<Repair>& all) const {
-    std::vector<std::string> found;
-    for (const Finding& f : CheckModel(ApplyRepairs(model_, all), check_options_)) {
-      if (f.link == repair.link &&
-          std::find(repair.answers.begin(), repair.answers.end(), f.rule) != repair.answers.end()) {
-        found.push_back("it leaves " + f.rule + ": " + f.message);
-      }
-    }
-    for (const Finding& f : CheckModel(ApplyRepairs(model_, {repair}), check_options_)) {
-      if (!before_.count({f.link, f.rule})) {
-        found.push_back("it creates " + f.rule +
-                        (f.link.empty() ? "" : " on link '" + f.link + "'") + ": " + f.message);
-      }
-    }
-    return found;
-  }
-
-  const CheckOptions& check_options() const { return check_options_; }
-
- private:
-  const Model& model_;
-  CheckOptions check_options_;
-  std::set<LinkRule> before_;  // the findings of the model as it is
-};
-
-// Drops the repairs that have problems, one at a time (each drop changes what the others are
-// judged with) until every one left passes; each dropped one is added to `refused` when given.
-void DropFailingRepairs(const RepairJudge& judge, std::vector<Repair>* repairs,
-                        std::vector<RefusedRepair>* refused) {
-  for (bool changed = true; changed && !repairs->empty();) {
-    changed = false;
-    for (std::size_t i = 0; i < repairs->size(); ++i) {
-      const Repair& repair = (*repairs)[i];
-      const std::vector<std::string> found = judge.Problems(repair, *repairs);
-      if (found.empty()) continue;
-      if (refused) {
-        std::string why = "the repair (" + repair.method + ") does not pass the checks: ";
-        for (std::size_t j = 0; j < found.size(); ++j) why += (j ? "; " : "") + found[j];
-        why += " — not repaired; look at this link's mass, center of mass and inertia by hand";
-        refused->push_back({repair.rule, repair.link, repair.link_line, why});
-      }
-      repairs->erase(repairs->begin() + static_cast<std::ptrdiff_t>(i));
-      changed = true;
-      break;
-    }
-  }
-}
-
-// The numbers of each repair: the fewest significant digits (at least 6) that still pass.
-void RoundRepairs(const Model& model, const RepairJudge& judge, std::vector<Repair>* repairs) {
-  for (std::size_t i = 0; i < repairs->size(); ++i) {
-    const int index = model.FindLink((*repairs)[i].link);
-    if (index < 0) continue;
-    const Link& link = model.links[index];
-    for (int digits = 6; digits <= 16; ++digits) {
-      std::vector<Repair> trial = *repairs;
-      RoundChanged(link.inertial, digits, &trial[i].after);
-      if (!judge.Problems(trial[i], trial).empty()) continue;
-      RecomputeChanges(model, link, &trial[i]);
-      (*repairs)[i] = std::move(trial[i]);
-      break;
-    }
-  }
-}
-
-// Which findings each repair resolves: those of its link that are gone from the model with all
-// the repairs applied.
-void FindResolved(const Model& model, const CheckOptions& check_options,
-                  const RulesOfLinks& rules_of, std::vector<Repair>* repairs) {
-  const std::vector<Finding> after = CheckModel(ApplyRepairs(model, *repairs), check_options);
-  std::set<LinkRule> remaining;
-  for (const Finding& f : after) remaining.insert({f.link, f.rule});
-  for (Repair& repair : *repairs) {
-    const auto it = rules_of.find(repair.link);
-    if (it == rules_of.end()) continue;
-    for (const std::string& rule : it->second) {
-      if (!remaining.count({repair.link, rule})) repair.resolves.push_back(rule);
-    }
-  }
-}
-
 }  // namespace
 
 std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& findings,
@@ -836,11 +699,11 @@ std::vector<Repair> PlanRepairs(const Model& model, const std::vector<Finding>& 
   const RulesOfLinks rules_of = FindRulesOfLinks(model, findings);
   std::vector<Repair> repairs = PlanEachLink(model, options, rules_of, refused);
   if (repairs.empty()) return repairs;
-  const RepairJudge judge(model, options);
-  DropFailingRepairs(judge, &repairs, refused);
-  RoundRepairs(model, judge, &repairs);
+  const internal::RepairJudge judge(model, options);
+  internal::DropFailingRepairs(judge, &repairs, refused);
+  internal::RoundRepairs(model, judge, &repairs);
   if (repairs.empty()) return repairs;
-  FindResolved(model, judge.check_options(), rules_of, &repairs);
+  internal::FindResolved(model, judge.check_options(), rules_of, &repairs);
   return repairs;
 }
 

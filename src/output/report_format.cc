@@ -383,6 +383,39 @@ void WriteTable(std::ostream& out, const std::vector<std::vector<std::string>>& 
   }
 }
 
+// The rows of the text report's geometry table (a header, then one row per link compared with its
+// geometry); the notes of links without a geometry inertia and of meshes with diagnostics go to
+// *notes.
+std::vector<std::vector<std::string>> GeometryRows(const ModelMassReport& report,
+                                                   std::vector<std::string>* notes) {
+  constexpr int kDigits = 6;
+  std::vector<std::vector<std::string>> g{{"link", "source", "I1_geometry", "I2_geometry",
+                                           "I3_geometry", "rel_diff_1", "rel_diff_2", "rel_diff_3",
+                                           "axis_angle_deg"}};
+  for (const auto& link : report.links) {
+    if (!link.geometry) continue;
+    const LinkGeometryComparison& c = *link.geometry;
+    if (!c.error.empty()) {
+      notes->push_back("link '" + link.name + "': no geometry inertia: " + c.error);
+      continue;
+    }
+    for (const LinkGeometryComparison::Mesh& mesh : c.meshes) {
+      const std::string note = DescribeMeshDiagnostics(mesh.diagnostics);
+      if (!note.empty()) {
+        notes->push_back("link '" + link.name + "': mesh '" + mesh.uri + "': " + note);
+      }
+    }
+    std::vector<std::string> row{link.name, c.from_collision ? "collision" : "visual"};
+    for (int k = 0; k < 3; ++k) row.push_back(Number(c.geometry.principal_moments(k), kDigits));
+    for (int k = 0; k < 3; ++k) {
+      row.push_back(std::isfinite(c.moment_rel_diff(k)) ? Number(c.moment_rel_diff(k), 3) : "n/a");
+    }
+    row.push_back(c.axis_angle_deg ? Number(*c.axis_angle_deg, 3) : "n/a");
+    g.push_back(std::move(row));
+  }
+  return g;
+}
+
 void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, double threshold) {
   constexpr int kDigits = 6;
   for (const ModelMassReport& report : reports) {
@@ -480,31 +513,7 @@ void WriteText(std::ostream& out, const std::vector<ModelMassReport>& reports, d
       for (const std::string& name : report.unreachable_links) list += " " + name;
       notes.push_back("left out of the total (not connected to the root link):" + list);
     }
-    std::vector<std::vector<std::string>> g{{"link", "source", "I1_geometry", "I2_geometry",
-                                             "I3_geometry", "rel_diff_1", "rel_diff_2",
-                                             "rel_diff_3", "axis_angle_deg"}};
-    for (const auto& link : report.links) {
-      if (!link.geometry) continue;
-      const LinkGeometryComparison& c = *link.geometry;
-      if (!c.error.empty()) {
-        notes.push_back("link '" + link.name + "': no geometry inertia: " + c.error);
-        continue;
-      }
-      for (const LinkGeometryComparison::Mesh& mesh : c.meshes) {
-        const std::string note = DescribeMeshDiagnostics(mesh.diagnostics);
-        if (!note.empty()) {
-          notes.push_back("link '" + link.name + "': mesh '" + mesh.uri + "': " + note);
-        }
-      }
-      std::vector<std::string> row{link.name, c.from_collision ? "collision" : "visual"};
-      for (int k = 0; k < 3; ++k) row.push_back(Number(c.geometry.principal_moments(k), kDigits));
-      for (int k = 0; k < 3; ++k) {
-        row.push_back(std::isfinite(c.moment_rel_diff(k)) ? Number(c.moment_rel_diff(k), 3)
-                                                          : "n/a");
-      }
-      row.push_back(c.axis_angle_deg ? Number(*c.axis_angle_deg, 3) : "n/a");
-      g.push_back(std::move(row));
-    }
+    const std::vector<std::vector<std::string>> g = GeometryRows(report, &notes);
     if (g.size() > 1) {
       out << " inertia implied by the geometry for the declared mass (link frame), relative "
              "difference of the declared principal moments, angle between principal axes:\n";

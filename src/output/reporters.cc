@@ -526,9 +526,12 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
   return document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options) {
+namespace {
+
+// The SARIF rules (every rule of `massprops check`, then the read error and warning) and their
+// ids in the same order (a result's ruleIndex).
+json SarifRules(const ReportOptions& options, std::vector<std::string>* rule_ids) {
   json rules = json::array();
-  std::vector<std::string> rule_ids;
   auto add_rule = [&](const std::string& id, const std::string& summary, Severity level) {
     json rule = {{"id", id}, {"shortDescription", {{"text", summary}}}};
     if (const std::optional<std::string> long_form = RuleLongForm(id)) {
@@ -538,82 +541,99 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
     rule["defaultConfiguration"] = {{"level", SarifLevel(level)}};
     if (!options.information_uri.empty()) rule["helpUri"] = options.information_uri + "#" + id;
     rules.push_back(rule);
-    rule_ids.push_back(id);
+    rule_ids->push_back(id);
   };
   for (const RuleInfo& info : AllRules()) add_rule(info.id, info.summary, info.default_severity);
   add_rule(kReadErrorRule, "The file could not be read or parsed as URDF or SDF.",
            Severity::kError);
   add_rule(kReadWarningRule, "Part of the file could not be understood and was skipped.",
            Severity::kWarning);
-  auto rule_index = [&](const std::string& id) -> int {
-    for (std::size_t i = 0; i < rule_ids.size(); ++i) {
-      if (rule_ids[i] == id) return static_cast<int>(i);
-    }
-    return -1;
-  };
-  auto location = [](const std::string& file, int line, int column) {
-    json physical = {{"artifactLocation", {{"uri", ArtifactUri(file)}}}};
-    if (line > 0) {
-      json region = {{"startLine", line}};
-      if (column > 0) region["startColumn"] = column;
-      physical["region"] = region;
-    }
-    return json::array({{{"physicalLocation", physical}}});
-  };
+  return rules;
+}
 
+int SarifRuleIndex(const std::vector<std::string>& rule_ids, const std::string& id) {
+  for (std::size_t i = 0; i < rule_ids.size(); ++i) {
+    if (rule_ids[i] == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// A SARIF `locations` array of one physical location (the region only with a line).
+json SarifLocation(const std::string& file, int line, int column) {
+  json physical = {{"artifactLocation", {{"uri", ArtifactUri(file)}}}};
+  if (line > 0) {
+    json region = {{"startLine", line}};
+    if (column > 0) region["startColumn"] = column;
+    physical["region"] = region;
+  }
+  return json::array({{{"physicalLocation", physical}}});
+}
+
+// The SARIF result of one finding: at its source place when it was traced to one (the generated
+// line and the other candidate places as related locations), else at its own.
+json SarifFinding(const Finding& finding, const FileResult& result,
+                  const std::vector<std::string>& rule_ids) {
+  json entry = {{"ruleId", finding.rule}};
+  const int index = SarifRuleIndex(rule_ids, finding.rule);
+  if (index >= 0) entry["ruleIndex"] = index;
+  entry["level"] = SarifLevel(finding.severity);
+  entry["message"] = {{"text", ShortenLongWords(HeadlineOf(finding))}};
+  if (finding.source && !finding.source->places.empty()) {
+    // The source file is the artifact; the generated line and any other candidate place are
+    // related locations.
+    const FindingSource& source = *finding.source;
+    entry["locations"] = SarifLocation(source.places.front().file, source.places.front().line, 0);
+    json related = json::array();
+    json generated = SarifLocation(FileOf(finding.location, result), finding.location.line,
+                                   finding.location.column)[0];
+    generated["id"] = 1;
+    generated["message"] = {{"text", "generated " + source.number}};
+    related.push_back(generated);
+    for (std::size_t i = 1; i < source.places.size(); ++i) {
+      json other = SarifLocation(source.places[i].file, source.places[i].line, 0)[0];
+      other["id"] = static_cast<int>(i) + 1;
+      other["message"] = {{"text", "also writes " + source.number}};
+      related.push_back(other);
+    }
+    entry["relatedLocations"] = related;
+  } else {
+    entry["locations"] = SarifLocation(FileOf(finding.location, result), finding.location.line,
+                                       finding.location.column);
+  }
+  json values = json::object();
+  for (const auto& [name, value] : finding.values) values[name] = Number(value);
+  entry["properties"] = {{"model", finding.model},
+                         {"link", finding.link},
+                         {"evidence", EvidenceJson(finding)},
+                         {"help", ShortenLongWords(finding.help)},
+                         {"message", ShortenLongWords(finding.message)},
+                         {"values", values}};
+  if (finding.source && !finding.source->places.empty()) {
+    entry["properties"]["source"] = {{"number", finding.source->number},
+                                     {"how", finding.source->places.front().how},
+                                     {"places", finding.source->places.size()}};
+  }
+  return entry;
+}
+
+}  // namespace
+
+std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options) {
+  std::vector<std::string> rule_ids;
+  const json rules = SarifRules(options, &rule_ids);
   json sarif_results = json::array();
   for (const FileResult& result : results) {
     for (const ReadError& error : result.errors) {
       sarif_results.push_back(
           {{"ruleId", kReadErrorRule},
-           {"ruleIndex", rule_index(kReadErrorRule)},
+           {"ruleIndex", SarifRuleIndex(rule_ids, kReadErrorRule)},
            {"level", "error"},
            {"message", {{"text", ShortenLongWords(ReadErrorText(error))}}},
-           {"locations",
-            location(FileOf(error.location, result), error.location.line, error.location.column)}});
+           {"locations", SarifLocation(FileOf(error.location, result), error.location.line,
+                                       error.location.column)}});
     }
     for (const Finding& finding : result.findings) {
-      json entry = {{"ruleId", finding.rule}};
-      const int index = rule_index(finding.rule);
-      if (index >= 0) entry["ruleIndex"] = index;
-      entry["level"] = SarifLevel(finding.severity);
-      entry["message"] = {{"text", ShortenLongWords(HeadlineOf(finding))}};
-      if (finding.source && !finding.source->places.empty()) {
-        // The source file is the artifact; the generated line and any other candidate place are
-        // related locations.
-        const FindingSource& source = *finding.source;
-        entry["locations"] = location(source.places.front().file, source.places.front().line, 0);
-        json related = json::array();
-        json generated = location(FileOf(finding.location, result), finding.location.line,
-                                  finding.location.column)[0];
-        generated["id"] = 1;
-        generated["message"] = {{"text", "generated " + source.number}};
-        related.push_back(generated);
-        for (std::size_t i = 1; i < source.places.size(); ++i) {
-          json other = location(source.places[i].file, source.places[i].line, 0)[0];
-          other["id"] = static_cast<int>(i) + 1;
-          other["message"] = {{"text", "also writes " + source.number}};
-          related.push_back(other);
-        }
-        entry["relatedLocations"] = related;
-      } else {
-        entry["locations"] = location(FileOf(finding.location, result), finding.location.line,
-                                      finding.location.column);
-      }
-      json values = json::object();
-      for (const auto& [name, value] : finding.values) values[name] = Number(value);
-      entry["properties"] = {{"model", finding.model},
-                             {"link", finding.link},
-                             {"evidence", EvidenceJson(finding)},
-                             {"help", ShortenLongWords(finding.help)},
-                             {"message", ShortenLongWords(finding.message)},
-                             {"values", values}};
-      if (finding.source && !finding.source->places.empty()) {
-        entry["properties"]["source"] = {{"number", finding.source->number},
-                                         {"how", finding.source->places.front().how},
-                                         {"places", finding.source->places.size()}};
-      }
-      sarif_results.push_back(entry);
+      sarif_results.push_back(SarifFinding(finding, result, rule_ids));
     }
   }
 

@@ -1,4 +1,4 @@
-#include "analysis/target_finding_text.h"
+#include "analysis/targets/finding_text.h"
 
 #include <string>
 #include <utility>
