@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "corpus_manifest.h"
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/urdf_reader.h"
@@ -67,6 +68,48 @@ INSTANTIATE_TEST_SUITE_P(
       std::replace(name.begin(), name.end(), '-', '_');
       return name;
     });
+
+// Characters (not bytes) of UTF-8 text.
+std::size_t Chars(const std::string& text) {
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+// Issue 32: every finding of a rule's fixture has a headline of at most 110 characters that names
+// the link, a help line that fits in 100 ("  = help: " + help), and evidence whose names carry
+// their unit (checked by FormatEvidenceValue's suffixes: a name it does not know is a plain number,
+// allowed only for `cosine`).
+TEST_P(RuleFixtureTest, FindingsHaveAShortHeadlineEvidenceAndHelp) {
+  const std::vector<Finding> bad = CheckModel(ReadFixture(GetParam()));
+  ASSERT_FALSE(bad.empty());
+  for (const Finding& f : bad) {
+    EXPECT_FALSE(f.headline.empty()) << f.rule << ": " << f.message;
+    EXPECT_LE(Chars(f.headline), kMaxHeadlineChars) << f.headline;
+    EXPECT_NE(f.headline.find("'" + f.link + "'"), std::string::npos) << f.headline;
+    EXPECT_FALSE(f.help.empty()) << f.rule;
+    EXPECT_LE(Chars("  = help: " + f.help), kMaxDetailChars) << f.help;
+    for (const auto& [name, value] : f.evidence) {
+      const bool known = name == "ratio" || name == "cosine" || name.find('_') != std::string::npos;
+      EXPECT_TRUE(known) << f.rule << ": evidence '" << name << "' names no unit";
+    }
+  }
+}
+
+// The headline of units-suspect's fixture, worked out by hand from
+// testdata/check/units-suspect.urdf (a cylinder r 0.05 m, l 0.4 m; mass 2000; ixx = iyy =
+// 0.0279167, izz = 0.0025): k = sqrt(0.0583334 / 4000) = 0.00381882 m; the box 0.1 × 0.1 × 0.4 m
+// has half-diagonal e = 0.212132 m; k/e = 0.0180022; the inertia is (k / (e/2))²
+// = 0.00129632 of a solid's, 771x too small; a mass in grams (factor 1e-3) gives k/e 0.569, in the
+// expected range.
+TEST(ChecksTest, UnitsSuspectHeadlineNamesTheFactorTheSizeAndTheCause) {
+  const std::vector<Finding> all = CheckModel(ReadFixture("units-suspect"));
+  const std::vector<const Finding*> findings = Select(all, "units-suspect");
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0]->headline,
+            "link 'arm': inertia 771x too small for its size (mass in grams?)");
+  EXPECT_EQ(findings[0]->help,
+            "divide the mass by 1000 (massprops fix --apply units-suspect does it)");
+}
 
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;

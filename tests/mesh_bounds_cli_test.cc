@@ -31,7 +31,8 @@ int Count(const std::string& text, const std::string& what) {
 }
 
 TEST(MeshBoundsCliTest, MeshOnlyLinksWithAbsurdInertiasAreFlaggedByDefault) {
-  const ToolRun run = RunTool("check --fail-on warning '" + kAbsurd + "'");
+  // --explain: each finding's full reasoning (its message) under its headline (issue 32).
+  const ToolRun run = RunTool("check --explain --fail-on warning '" + kAbsurd + "'");
   EXPECT_EQ(run.exit_code, 1) << run.output;
   // finger: 0.1 kg, k = 0.67 m in a 0.1 × 0.2 × 0.3 m mesh: spread tr(I)/2 = 0.0448905 against
   // m·(1.1e)² = 0.1 · 1.21 · 0.035 = 0.004235 (a whole CAD mesh is the part's envelope: 1.1
@@ -40,7 +41,11 @@ TEST(MeshBoundsCliTest, MeshOnlyLinksWithAbsurdInertiasAreFlaggedByDefault) {
                             "collision mesh geometry"),
             std::string::npos)
       << run.output;
-  EXPECT_NE(run.output.find("ratio 10.5999) [inertia-exceeds-geometry]"), std::string::npos);
+  EXPECT_NE(run.output.find("ratio 10.5999)\n"), std::string::npos);
+  EXPECT_NE(run.output.find("link 'finger': inertia 10.6x too large for its size (mass changed?) "
+                            "[inertia-exceeds-geometry]"),
+            std::string::npos)
+      << run.output;
   // base: 0.7 kg, k = 13 mm in the mesh scaled by 3 (e = 0.561249 m): k/e = 0.0231627.
   EXPECT_NE(run.output.find("link 'base': radius of gyration sqrt(tr(I)/(2m)) = 0.013 m is "
                             "0.0231627 times the half-diagonal 0.561249 m of its visual mesh"),

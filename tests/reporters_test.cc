@@ -389,3 +389,114 @@ TEST(ReportersTest, TracedFindingsNameTheSourceFirstAndTheGeneratedLineToo) {
 
 }  // namespace
 }  // namespace massprops
+
+namespace massprops {
+namespace {
+
+// Three units-suspect findings on one file, two with the same help (one cause) and one with
+// another; each with its headline, evidence and help (issue 32).
+FileResult PartsResult() {
+  FileResult result;
+  result.path = "humanoid.urdf";
+  result.format = "urdf";
+  result.models = {"h"};
+  auto add = [&](const std::string& link, int line, double ratio, const std::string& help) {
+    Finding f;
+    f.rule = "units-suspect";
+    f.severity = Severity::kWarning;
+    f.model = "h";
+    f.link = link;
+    f.location = {"humanoid.urdf", line, 0};
+    f.message = "the whole reasoning about " + link;
+    f.headline = "link '" + link + "': inertia too large (looks like kg·mm²)";
+    f.evidence = {{"k_over_e_ratio", ratio}, {"mass_kg", 2}};
+    f.help = help;
+    result.findings.push_back(f);
+  };
+  add("thigh", 10, 1000, "multiply the inertia by 1e-6");
+  add("foot", 20, 5, "check the mass");
+  add("shin", 30, 1200, "multiply the inertia by 1e-6");
+  return result;
+}
+
+TEST(ReportersPartsTest, RepeatsOfOneCauseShareOneEvidenceAndHelpLine) {
+  // Written by hand: the two findings with the same help are a group (in the order of the first),
+  // each with its headline line; the evidence gives each number's range over the group (1000x to
+  // 1200x; the mass is 2 kg in both) and the help once. The other finding has its own lines.
+  ReportOptions quiet;
+  quiet.quiet = true;
+  EXPECT_EQ(RenderText({PartsResult()}, quiet),
+            "humanoid.urdf:10: warning: link 'thigh': inertia too large (looks like kg·mm²) "
+            "[units-suspect]\n"
+            "humanoid.urdf:30: warning: link 'shin': inertia too large (looks like kg·mm²) "
+            "[units-suspect]\n"
+            "  = evidence: 2 links: k/e 1000x to 1200x, mass 2 kg\n"
+            "  = help: multiply the inertia by 1e-6\n"
+            "humanoid.urdf:20: warning: link 'foot': inertia too large (looks like kg·mm²) "
+            "[units-suspect]\n"
+            "  = evidence: k/e 5x, mass 2 kg\n"
+            "  = help: check the mass\n");
+}
+
+TEST(ReportersPartsTest, BriefPrintsHeadlinesAloneAndExplainAddsTheReasoning) {
+  ReportOptions brief;
+  brief.quiet = brief.brief = true;
+  const std::string text = RenderText({PartsResult()}, brief);
+  EXPECT_EQ(text.find("  = "), std::string::npos);
+  EXPECT_NE(text.find("humanoid.urdf:20: warning: link 'foot'"), std::string::npos);
+  ReportOptions explain;
+  explain.quiet = explain.explain = true;
+  const std::string explained = RenderText({PartsResult()}, explain);
+  // Not grouped: each finding has its evidence, help and reasoning, in file order.
+  EXPECT_NE(
+      explained.find("[units-suspect]\n  = evidence: k/e 1000x, mass 2 kg\n  = help: multiply "
+                     "the inertia by 1e-6\n  = why: the whole reasoning about thigh\n"),
+      std::string::npos);
+  EXPECT_NE(explained.find("  = why: the whole reasoning about shin\n"), std::string::npos);
+  EXPECT_LT(explained.find("'foot'"), explained.find("'shin'"));
+}
+
+TEST(ReportersPartsTest, StatisticsCountFindingsPerRule) {
+  std::vector<FileResult> results = SampleResults();
+  results.push_back(PartsResult());
+  ReportOptions options;
+  options.statistics = true;
+  // Hand-counted: 3 + 1 units-suspect, 1 each of the others, the read error; most first.
+  EXPECT_EQ(RenderText(results, options),
+            "    4  warning units-suspect\n"
+            "    1  note    com-outside-geometry\n"
+            "    1  error   inertia-not-physical\n"
+            "    1  error   read-error\n"
+            "massprops: checked 3 files: 1 error, 4 warnings, 1 note, 1 read error\n");
+}
+
+TEST(ReportersPartsTest, MachineFormatsCarryThePartsAndKeepTheMessage) {
+  const json doc = json::parse(RenderJson({PartsResult()}));
+  const json& first = doc["files"][0]["findings"][0];
+  EXPECT_EQ(first.at("message"), "the whole reasoning about thigh");
+  EXPECT_EQ(first.at("headline"), "link 'thigh': inertia too large (looks like kg·mm²)");
+  EXPECT_EQ(first.at("evidence").at("k_over_e_ratio"), 1000);
+  EXPECT_EQ(first.at("evidence").at("mass_kg"), 2);
+  EXPECT_EQ(first.at("help"), "multiply the inertia by 1e-6");
+
+  const json sarif = json::parse(RenderSarif({PartsResult()}));
+  const json& result = sarif["runs"][0]["results"][0];
+  EXPECT_EQ(result.at("message").at("text"), "link 'thigh': inertia too large (looks like kg·mm²)");
+  EXPECT_EQ(result.at("properties").at("evidence").at("k_over_e_ratio"), 1000);
+  EXPECT_EQ(result.at("properties").at("message"), "the whole reasoning about thigh");
+  for (const json& rule : sarif["runs"][0]["tool"]["driver"]["rules"]) {
+    if (rule.at("id") != "units-suspect") continue;
+    // The long form is the rule's section of docs/rules.md.
+    EXPECT_EQ(rule.at("help").at("text").get<std::string>().rfind("### `units-suspect`", 0), 0u);
+    EXPECT_FALSE(rule.at("fullDescription").at("text").get<std::string>().empty());
+  }
+
+  // GitHub: the title is the rule, the text the headline and the help (%0A: a new line).
+  const std::string github = RenderGithub({PartsResult()});
+  EXPECT_NE(github.find("title=units-suspect::link 'thigh': inertia too large (looks like "
+                        "kg·mm²)%0Ahelp: multiply the inertia by 1e-6\n"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace massprops

@@ -278,6 +278,9 @@ class Finding:
     line: int
     column: int
     message: str
+    headline: str
+    evidence: Dict[str, float]
+    help: str
     values: Dict[str, float]
     repair: Optional[Repair]
     source: Optional[Dict[str, Any]]

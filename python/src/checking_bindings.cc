@@ -117,6 +117,9 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
     finding.location = warning.location;
     finding.message =
         warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
+    // As `massprops check` gives it (src/tool/main.cc).
+    finding.headline = finding.message.substr(0, finding.message.find("; "));
+    finding.help = "the element was skipped: fix it so that the file reads whole";
     findings.push_back(finding);
   }
   for (Finding& finding : ReaderFindings(read, options)) findings.push_back(std::move(finding));
@@ -209,7 +212,16 @@ void BindFinding(py::module_& m) {
           "line", [](const Finding& f) { return f.location.line; }, "1-based; 0 when unknown.")
       .def_property_readonly(
           "column", [](const Finding& f) { return f.location.column; }, "1-based; 0 when unknown.")
-      .def_readonly("message", &Finding::message, "A sentence quoting the offending numbers.")
+      .def_readonly("message", &Finding::message,
+                    "The full reasoning: a sentence quoting the offending numbers.")
+      .def_readonly("headline", &Finding::headline,
+                    "One line: what is wrong with the link, the deciding number, the likely cause.")
+      .def_property_readonly(
+          "evidence", [](const Finding& f) { return ValuesDict(f.evidence); },
+          "The named numbers that decided, a dict; each name ends in its SI unit ('mass_kg', "
+          "'half_diagonal_m', 'trace_kg_m2') or names a pure number ('ratio').")
+      .def_readonly("help", &Finding::help,
+                    "The next step: the value to write, or the massprops fix command.")
       .def_property_readonly(
           "values", [](const Finding& f) { return ValuesDict(f.values); },
           "The named measured values, a dict.")
@@ -231,6 +243,9 @@ void BindFinding(py::module_& m) {
             d["line"] = f.location.line;
             d["column"] = f.location.column;
             d["message"] = f.message;
+            d["headline"] = f.headline.empty() ? f.message : f.headline;
+            d["evidence"] = ValuesDict(f.evidence);
+            d["help"] = f.help;
             d["values"] = ValuesDict(f.values);
             if (f.source) d["source"] = SourceDict(f.source);
             return d;
@@ -242,7 +257,8 @@ void BindFinding(py::module_& m) {
              std::string where = f.location.file;
              if (f.location.line > 0) where += ":" + std::to_string(f.location.line);
              if (f.location.column > 0) where += ":" + std::to_string(f.location.column);
-             return where + ": " + ToString(f.severity) + ": " + f.message + " [" + f.rule + "]";
+             return where + ": " + ToString(f.severity) + ": " +
+                    (f.headline.empty() ? f.message : f.headline) + " [" + f.rule + "]";
            })
       .def("__repr__", [](const Finding& f) {
         return "Finding(rule=" + Quote(f.rule) + ", severity=" + Quote(ToString(f.severity)) +

@@ -93,6 +93,21 @@ def test_check_the_example_finds_its_three_documented_defects(examples):
     assert "inertia-not-physical" in repr(bad)
 
 
+def test_findings_have_a_headline_evidence_and_help(examples):
+    # Issue 32: a finding's parts. The example's forearm has principal moments 0.00427333,
+    # 0.00427333, 0.009 (docs/rules.md): 0.00427 + 0.00427 < 0.009, the triangle inequality fails.
+    findings = massprops.check(examples / "two_link_arm.urdf")
+    bad = next(f for f in findings if (f.link, f.rule) == ("forearm", "inertia-not-physical"))
+    assert bad.headline == "link 'forearm': impossible inertia (moments 0.00427 + 0.00427 < 0.009)"
+    assert bad.evidence["moment3_kg_m2"] == pytest.approx(0.009, rel=1e-9)
+    assert "massprops fix" in bad.help
+    assert "0.00427333" in bad.message  # the full reasoning is kept
+    assert bad.to_dict()["headline"] == bad.headline
+    assert bad.to_dict()["evidence"] == bad.evidence
+    assert str(bad).endswith(bad.headline + " [inertia-not-physical]")
+    assert all(f.headline and f.help and isinstance(f.evidence, dict) for f in findings)
+
+
 def test_check_options_map_to_the_tool_options(examples):
     path = examples / "two_link_arm.urdf"
     rules = {f.rule for f in massprops.check(path)}

@@ -202,6 +202,10 @@ std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& 
     f.location = rf.location;
     f.message = rf.message;
     f.values = rf.values;
+    f.headline = rf.headline;
+    f.evidence = rf.evidence;
+    f.help = rf.help;
+    if (f.headline.empty()) rules::DescribeReaderFinding(f);
     findings.push_back(std::move(f));
   }
   return findings;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/rule_severity.h"
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/materials.h"
 #include "massprops/analysis/welded_groups.h"
 
@@ -113,9 +114,18 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
   message += "; at common densities the mesh's volume says: " + MassesAt(d.volume) +
              " (massprops fix --material " + link.name + "=NAME sets one, or --mass " + link.name +
              "=KG the weighed mass)";
-  return MakeFinding(kDensityImplausibleRule, severity, model, link.name, MassLocation(link),
-                     std::move(message),
-                     {{"mass", d.mass}, {"volume", d.volume}, {"density", rho}});
+  Finding f =
+      MakeFinding(kDensityImplausibleRule, severity, model, link.name, MassLocation(link),
+                  std::move(message), {{"mass", d.mass}, {"volume", d.volume}, {"density", rho}});
+  const bool mesh_in_mm = millimetres >= kMinSolidDensity && millimetres <= kMaxSolidDensity;
+  f.headline = "link '" + link.name + "': density " + FormatSignificant(rho) +
+               " kg/m³ over its closed mesh, lighter than foam (" +
+               (mesh_in_mm ? "mesh in mm without scale?" : "placeholder mass?") + ")";
+  f.evidence = {{"mass_kg", d.mass}, {"volume_m3", d.volume}, {"density_kg_m3", rho}};
+  f.help =
+      "write the weighed mass, or massprops fix --material LINK=NAME (massprops explain "
+      "density-implausible)";
+  return f;
 }
 
 // cad-default-density on the model: every link with a density at 1000 kg/m³.
@@ -155,12 +165,20 @@ std::optional<Finding> CheckCadDefault(const Model& model, const std::vector<Lin
       "--mass LINK=KG, --total-mass KG";
   const Link* first = &model.links[counted.front().index];
   const SourceLocation& location = model.location.line > 0 ? model.location : first->location;
-  return MakeFinding(kCadDefaultDensityRule, severity, model, "", location, std::move(message),
-                     {{"links", static_cast<double>(counted.size())},
-                      {"total_mass", total},
-                      {"volume", volume},
-                      {"density_min", lowest},
-                      {"density_max", highest}});
+  Finding f = MakeFinding(kCadDefaultDensityRule, severity, model, "", location, std::move(message),
+                          {{"links", static_cast<double>(counted.size())},
+                           {"total_mass", total},
+                           {"volume", volume},
+                           {"density_min", lowest},
+                           {"density_max", highest}});
+  f.headline = "model '" + model.name + "': all " + std::to_string(counted.size()) +
+               " links with closed meshes weigh 1000 kg/m³ (CAD default, no material set?)";
+  f.evidence = {{"links_count", static_cast<double>(counted.size())},
+                {"total_mass_kg", total},
+                {"density_min_kg_m3", lowest},
+                {"density_max_kg_m3", highest}};
+  f.help = "set the materials in CAD and export again, or massprops fix --material LINK=NAME";
+  return f;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/mass_report.h"
 
 namespace massprops {
@@ -289,6 +290,16 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
         finding.location = geometry.location;
         finding.message = "link '" + link.name + "': mesh '" + geometry.uri +
                           "' cannot be used: " + (error.empty() ? "unknown error" : error);
+        // The reason is the error's last clause ("collision at line 7 (mesh 'u'): mesh 'u': it
+        // leaves the package folder"): the headline names it, the rest is under --explain.
+        const std::size_t clause = error.rfind("': ");
+        const std::string why = error.empty()                 ? "unknown error"
+                                : clause == std::string::npos ? error
+                                                              : error.substr(clause + 3);
+        finding.headline = "link '" + link.name + "': mesh cannot be used: " + why;
+        finding.help =
+            "fix the mesh file or its URI (--package-path DIR); the whole error is under "
+            "--explain";
         findings.push_back(std::move(finding));
       }
     }
@@ -339,6 +350,14 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
                       {"declared_moment", declared(worst_k)},
                       {"geometry_moment", g},
                       {"factor", worst}};
+    finding.headline = "link '" + link.name + "': inertia " + FormatRatio(worst) + " off its " +
+                       (comparison.from_collision ? "collision" : "visual") +
+                       " geometry's, principal moment " + std::to_string(worst_k + 1);
+    finding.evidence = {{"mass_kg", link.inertial->mass},
+                        {"declared_moment_kg_m2", declared(worst_k)},
+                        {"geometry_moment_kg_m2", g},
+                        {"ratio", worst}};
+    finding.help = "recompute the inertia from the geometry: massprops fix --from-geometry";
     findings.push_back(std::move(finding));
   }
   return findings;

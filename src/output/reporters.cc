@@ -1,7 +1,11 @@
 #include "massprops/output/reporters.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
+
+#include "massprops/analysis/finding_text.h"
 
 namespace massprops {
 namespace {
@@ -171,6 +175,29 @@ std::string SourceNote(const FindingSource& source) {
   return out;
 }
 
+// The finding's evidence as {name: number} (null when not finite).
+json EvidenceJson(const Finding& finding) {
+  json evidence = json::object();
+  for (const auto& [name, value] : finding.evidence) evidence[name] = Number(value);
+  return evidence;
+}
+
+// The first paragraph of a rule's long form, after its heading line.
+std::string FirstParagraph(const std::string& long_form) {
+  std::size_t start = long_form.find('\n');
+  start = start == std::string::npos ? 0 : start + 1;
+  std::size_t end = long_form.find("\n\n", start);
+  if (end == std::string::npos) end = long_form.size();
+  std::string text = long_form.substr(start, end - start);
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text.empty() ? long_form : text;
+}
+
+// A GitHub annotation's second line: "\nhelp: HELP", or "" without help.
+std::string HelpText(const Finding& finding) {
+  return finding.help.empty() ? "" : "\nhelp: " + finding.help;
+}
+
 json SourcePlaceJson(const SourcePlace& place) {
   json out = {{"file", place.file}, {"line", place.line}, {"how", place.how}, {"text", place.text}};
   if (!place.inputs.empty()) out["inputs"] = place.inputs;
@@ -245,10 +272,151 @@ std::string UnresolvedMeshesLine(const ReportSummary& s) {
 
 }  // namespace
 
+namespace {
+
+// Characters (not bytes) of UTF-8 text.
+std::size_t CharCount(std::string_view text) {
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+// `text` cut to at most `max_chars` characters (at a character boundary), ending in "…" when cut.
+std::string CutToChars(const std::string& text, std::size_t max_chars) {
+  if (CharCount(text) <= max_chars) return text;
+  std::size_t chars = 0, at = 0;
+  while (at < text.size() && chars + 1 < max_chars) {
+    ++at;
+    while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
+    ++chars;
+  }
+  return text.substr(0, at) + "…";
+}
+
+// The evidence of a group of findings of one rule and cause: each number of the first finding,
+// as its range over the group ("k/e 577x–1.2e3x"), or its value when all agree.
+std::string GroupEvidence(const std::vector<const Finding*>& group) {
+  std::vector<std::pair<std::string, double>> lows, highs;
+  for (const auto& [name, value] : group.front()->evidence) {
+    double low = value, high = value;
+    for (const Finding* f : group) {
+      for (const auto& [other, v] : f->evidence) {
+        if (other == name && std::isfinite(v)) low = std::min(low, v), high = std::max(high, v);
+      }
+    }
+    lows.emplace_back(name, low);
+    highs.emplace_back(name, high);
+  }
+  std::string out = std::to_string(group.size()) + " links: ";
+  const std::size_t room = kMaxDetailChars - CharCount("  = evidence: ") - CharCount(out);
+  std::string items;
+  for (std::size_t i = 0; i < lows.size(); ++i) {
+    const std::string& name = lows[i].first;
+    std::string value = FormatEvidenceValue(name, lows[i].second);
+    const std::string high = FormatEvidenceValue(name, highs[i].second);
+    if (high != value) value += " to " + high;
+    const std::string item = EvidenceLabel(name) + " " + value;
+    const std::string next = items.empty() ? item : items + ", " + item;
+    if (CharCount(next) + 3 > room) {
+      items += items.empty() ? "…" : ", …";
+      break;
+    }
+    items = next;
+  }
+  return out + items;
+}
+
+// The findings of one file as groups: those of one rule with the same non-empty help (one
+// cause) together, each group in the order of its first finding; every other finding alone.
+std::vector<std::vector<const Finding*>> GroupFindings(const std::vector<Finding>& findings,
+                                                       bool group) {
+  std::vector<std::vector<const Finding*>> groups;
+  std::map<std::pair<std::string, std::string>, std::size_t> index;
+  for (const Finding& finding : findings) {
+    if (!group || finding.help.empty()) {
+      groups.push_back({&finding});
+      continue;
+    }
+    const auto [at, added] = index.try_emplace({finding.rule, finding.help}, groups.size());
+    if (added) groups.emplace_back();
+    groups[at->second].push_back(&finding);
+  }
+  return groups;
+}
+
+// `file:line: severity: HEADLINE [rule]` (and the xacro source note) for one finding.
+std::string HeadlineLine(const Finding& finding, const FileResult& result, bool color) {
+  // A finding traced to xacro sources points at the source first (docs/xacro.md).
+  const bool traced = finding.source && !finding.source->places.empty();
+  const std::string where = traced ? FormatLocation(finding.source->places.front().file,
+                                                    finding.source->places.front().line, 0)
+                                   : FormatLocation(FileOf(finding.location, result),
+                                                    finding.location.line, finding.location.column);
+  const std::string note = traced ? ShortenLongWords(SourceNote(*finding.source)) : "";
+  const std::string severity = std::string(ToString(finding.severity)) + ":";
+  const std::string headline =
+      CutToChars(ShortenLongWords(HeadlineOf(finding), kMaxHeadlineChars / 2), kMaxHeadlineChars);
+  if (color) {
+    return std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
+           severity + kReset + " " + headline + " " + kDim + "[" + finding.rule + "]" + note +
+           kReset + "\n";
+  }
+  return where + ": " + severity + " " + headline + " [" + finding.rule + "]" + note + "\n";
+}
+
+// The lines under a group's headlines: `  = evidence: ...`, `  = help: ...` (and with explain,
+// `  = why: MESSAGE`, the full reasoning).
+std::string DetailLines(const std::vector<const Finding*>& group, const ReportOptions& options) {
+  const Finding& first = *group.front();
+  const std::string lead = options.color ? std::string(kDim) + "  = " : "  = ";
+  const std::string end = options.color ? std::string(kReset) + "\n" : "\n";
+  std::string out;
+  const std::string evidence =
+      group.size() > 1 ? GroupEvidence(group) : FormatEvidence(first.evidence);
+  if (!evidence.empty()) {
+    out += lead + CutToChars("evidence: " + ShortenLongWords(evidence), kMaxDetailChars - 4) + end;
+  }
+  if (!first.help.empty()) {
+    out += lead + CutToChars("help: " + ShortenLongWords(first.help), kMaxDetailChars - 4) + end;
+  }
+  if (options.explain && !first.message.empty() && first.message != first.headline) {
+    out += lead + "why: " + ShortenLongWords(first.message) + end;
+  }
+  return out;
+}
+
+// `--statistics`: the number of findings per rule, most first (then by rule id), like ruff.
+std::string StatisticsLines(const std::vector<FileResult>& results) {
+  std::map<std::pair<std::string, std::string>, int> counts;  // (rule, severity) -> count
+  for (const FileResult& result : results) {
+    for (const ReadError& error : result.errors) {
+      (void)error;
+      ++counts[{kReadErrorRule, "error"}];
+    }
+    for (const Finding& finding : result.findings) {
+      ++counts[{finding.rule, ToString(finding.severity)}];
+    }
+  }
+  std::vector<std::pair<int, std::pair<std::string, std::string>>> rows;
+  for (const auto& [key, count] : counts) rows.push_back({count, key});
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string out;
+  for (const auto& [count, key] : rows) {
+    std::string number = std::to_string(count);
+    if (number.size() < 5) number.insert(0, 5 - number.size(), ' ');
+    std::string severity = key.second;
+    severity.resize(8, ' ');
+    out += number + "  " + severity + key.first + "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string RenderText(const std::vector<FileResult>& results, const ReportOptions& options) {
   const bool color = options.color;
   std::string out;
-  for (const FileResult& result : results) {
+  for (const FileResult& result : options.statistics ? std::vector<FileResult>{} : results) {
     for (const ReadError& error : result.errors) {
       const std::string where = FormatLocation(FileOf(error.location, result), error.location.line,
                                                error.location.column);
@@ -259,26 +427,13 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
                    : std::string("[") + kReadErrorRule + "]";
       out += "\n";
     }
-    for (const Finding& finding : result.findings) {
-      // A finding traced to xacro sources points at the source first (docs/xacro.md).
-      const bool traced = finding.source && !finding.source->places.empty();
-      const std::string where =
-          traced ? FormatLocation(finding.source->places.front().file,
-                                  finding.source->places.front().line, 0)
-                 : FormatLocation(FileOf(finding.location, result), finding.location.line,
-                                  finding.location.column);
-      const std::string note = traced ? ShortenLongWords(SourceNote(*finding.source)) : "";
-      const std::string severity = std::string(ToString(finding.severity)) + ":";
-      if (color) {
-        out += std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
-               severity + kReset + " " + ShortenLongWords(finding.message) + " " + kDim + "[" +
-               finding.rule + "]" + note + kReset + "\n";
-      } else {
-        out += where + ": " + severity + " " + ShortenLongWords(finding.message) + " [" +
-               finding.rule + "]" + note + "\n";
-      }
+    const bool group = !options.explain && !options.brief;
+    for (const std::vector<const Finding*>& members : GroupFindings(result.findings, group)) {
+      for (const Finding* finding : members) out += HeadlineLine(*finding, result, color);
+      if (!options.brief) out += DetailLines(members, options);
     }
   }
+  if (options.statistics) out += StatisticsLines(results);
   if (!options.quiet) {
     const ReportSummary s = Summarize(results);
     out += "massprops: checked " + Plural(s.files, "file") + ": " + Plural(s.errors, "error") +
@@ -308,6 +463,9 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                           {"line", finding.location.line},
                           {"column", finding.location.column},
                           {"message", ShortenLongWords(finding.message)},
+                          {"headline", ShortenLongWords(HeadlineOf(finding))},
+                          {"evidence", EvidenceJson(finding)},
+                          {"help", ShortenLongWords(finding.help)},
                           {"values", values}});
       if (finding.source && !finding.source->places.empty()) {
         const FindingSource& source = *finding.source;
@@ -375,9 +533,12 @@ namespace {
 json SarifRules(const ReportOptions& options, std::vector<std::string>* rule_ids) {
   json rules = json::array();
   auto add_rule = [&](const std::string& id, const std::string& summary, Severity level) {
-    json rule = {{"id", id},
-                 {"shortDescription", {{"text", summary}}},
-                 {"defaultConfiguration", {{"level", SarifLevel(level)}}}};
+    json rule = {{"id", id}, {"shortDescription", {{"text", summary}}}};
+    if (const std::optional<std::string> long_form = RuleLongForm(id)) {
+      rule["fullDescription"] = {{"text", FirstParagraph(*long_form)}};
+      rule["help"] = {{"text", *long_form}, {"markdown", *long_form}};
+    }
+    rule["defaultConfiguration"] = {{"level", SarifLevel(level)}};
     if (!options.information_uri.empty()) rule["helpUri"] = options.information_uri + "#" + id;
     rules.push_back(rule);
     rule_ids->push_back(id);
@@ -416,7 +577,7 @@ json SarifFinding(const Finding& finding, const FileResult& result,
   const int index = SarifRuleIndex(rule_ids, finding.rule);
   if (index >= 0) entry["ruleIndex"] = index;
   entry["level"] = SarifLevel(finding.severity);
-  entry["message"] = {{"text", ShortenLongWords(finding.message)}};
+  entry["message"] = {{"text", ShortenLongWords(HeadlineOf(finding))}};
   if (finding.source && !finding.source->places.empty()) {
     // The source file is the artifact; the generated line and any other candidate place are
     // related locations.
@@ -439,11 +600,14 @@ json SarifFinding(const Finding& finding, const FileResult& result,
     entry["locations"] = SarifLocation(FileOf(finding.location, result), finding.location.line,
                                        finding.location.column);
   }
-  if (!finding.values.empty()) {
-    json values = json::object();
-    for (const auto& [name, value] : finding.values) values[name] = Number(value);
-    entry["properties"] = {{"model", finding.model}, {"link", finding.link}, {"values", values}};
-  }
+  json values = json::object();
+  for (const auto& [name, value] : finding.values) values[name] = Number(value);
+  entry["properties"] = {{"model", finding.model},
+                         {"link", finding.link},
+                         {"evidence", EvidenceJson(finding)},
+                         {"help", ShortenLongWords(finding.help)},
+                         {"message", ShortenLongWords(finding.message)},
+                         {"values", values}};
   if (finding.source && !finding.source->places.empty()) {
     entry["properties"]["source"] = {{"number", finding.source->number},
                                      {"how", finding.source->places.front().how},
@@ -505,12 +669,13 @@ std::string RenderGithub(const std::vector<FileResult>& results, const ReportOpt
       if (finding.source && !finding.source->places.empty()) {
         const SourcePlace& place = finding.source->places.front();
         out += GithubLine(GithubCommand(finding.severity), place.file, place.line, 0, finding.rule,
-                          ShortenLongWords(finding.message + SourceNote(*finding.source)));
+                          ShortenLongWords(HeadlineOf(finding) + SourceNote(*finding.source) +
+                                           HelpText(finding)));
         continue;
       }
       out += GithubLine(GithubCommand(finding.severity), FileOf(finding.location, result),
                         finding.location.line, finding.location.column, finding.rule,
-                        ShortenLongWords(finding.message));
+                        ShortenLongWords(HeadlineOf(finding) + HelpText(finding)));
     }
   }
   return out;

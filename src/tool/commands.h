@@ -34,6 +34,10 @@ void AddCacheCommands(CLI::App& app, std::function<int()>* run);
 int RunHtmlView(const std::vector<std::string>& files, const std::vector<std::string>& model_paths,
                 const std::vector<std::string>& package_paths);
 
+/// `explain RULE` (a rule's long form, from docs/rules.md compiled in). Defined in
+/// src/tool/explain_command.cc.
+void AddExplainCommand(CLI::App& app, std::function<int()>* run);
+
 /// Prints the reader's findings (unresolved includes, unreadable inertials, ...) and read
 /// warnings to standard error as `check` prints them, so that nothing the reader skipped goes
 /// unsaid. Defined in src/tool/fix_command.cc.

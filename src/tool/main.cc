@@ -69,9 +69,12 @@ struct CheckArgs {
   std::string config;
   std::vector<std::string> model_paths;
   bool quiet = false;
+  bool brief = false;       // --brief: headlines only
+  bool explain = false;     // --explain: the full reasoning under each finding
+  bool statistics = false;  // --statistics: counts per rule
   bool list_rules = false;
-  int jobs = 0;        // 0: one per core
-  std::string target;  // --target; "" when not given
+  int jobs = 0;                        // 0: one per core
+  std::string target;                  // --target; "" when not given
   massprops::cli::XacroOptions xacro;  // a xacro package (docs/xacro.md)
 };
 
@@ -405,6 +408,8 @@ FileResult CheckFile(const std::string& file, const Settings& settings) {
     finding.location = warning.location;
     finding.message =
         warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
+    finding.headline = finding.message.substr(0, finding.message.find("; "));
+    finding.help = "the element was skipped: fix it so that the file reads whole";
     result.findings.push_back(finding);
   }
   for (Finding& finding : massprops::ReaderFindings(read, settings.options)) {
@@ -451,6 +456,9 @@ int CheckExitCode(const std::vector<FileResult>& results, const std::vector<Sett
 massprops::ReportOptions MakeReportOptions(const CheckArgs& args, int skipped_files) {
   massprops::ReportOptions report_options;
   report_options.quiet = args.quiet;
+  report_options.brief = args.brief;
+  report_options.explain = args.explain;
+  report_options.statistics = args.statistics;
   report_options.skipped_files = skipped_files;
   if (args.color == "always") {
     report_options.color = true;
@@ -585,6 +593,18 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
   if (wanted.Wants({"-q", "--quiet"})) {
     check->add_flag("-q,--quiet", args->quiet, "Only the findings: no summary line, no notes");
   }
+  if (wanted.Wants({"--brief"})) {
+    check->add_flag("--brief", args->brief, "Text: each finding's headline alone");
+  }
+  if (wanted.Wants({"--explain"})) {
+    check->add_flag("--explain", args->explain,
+                    "Text: under each finding, its full reasoning (the causes considered and what "
+                    "the numbers say of each); repeats are not grouped");
+  }
+  if (wanted.Wants({"--statistics"})) {
+    check->add_flag("--statistics", args->statistics,
+                    "Text: the number of findings per rule instead of the findings");
+  }
   if (wanted.Wants({"-j", "--jobs"})) {
     check
         ->add_option("-j,--jobs", args->jobs,
@@ -653,6 +673,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddViewCommands(app, &run);
     massprops::cli::AddTraceCommand(app, &run);
     massprops::cli::AddCacheCommands(app, &run);
+    massprops::cli::AddExplainCommand(app, &run);
   }
 
   try {

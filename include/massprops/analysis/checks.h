@@ -31,7 +31,20 @@ struct Finding {
   std::string model;        ///< The model's name.
   std::string link;         ///< The link (for a welded-group finding: the group's root link).
   SourceLocation location;  ///< Where to point the user (usually the <inertial> or <inertia>).
-  std::string message;      ///< A sentence that quotes the offending numbers.
+  /// The full reasoning, one sentence that quotes the offending numbers (as before issue 32;
+  /// `check --explain` prints it, JSON keeps it as "message").
+  std::string message;
+  /// One line that says what is wrong with the link in a robot engineer's words, with the one
+  /// deciding number and, where the numbers point to one, the likely cause, at most
+  /// kMaxHeadlineChars characters: "link 'arm': inertia 1000x too large for its 15 cm box
+  /// (looks like kg·mm²)". Numbers are written by finding_text.h (3 significant digits).
+  std::string headline;
+  /// The named numbers that decided, each name ending in its SI unit (`mass_kg`,
+  /// `half_diagonal_m`, `trace_kg_m2`, `density_kg_m3`) or naming a pure number (`ratio`,
+  /// `k_over_e_ratio`, `links_count`). Rendered by FormatEvidence (finding_text.h).
+  std::vector<std::pair<std::string, double>> evidence;
+  /// The next step, concretely: the value to write, or the `massprops fix ...` command.
+  std::string help;
   /// Named measured values behind the message (e.g. {"mass", 0}, {"principal_min", -0.1}), for
   /// machine-readable output.
   std::vector<std::pair<std::string, double>> values;

@@ -189,6 +189,11 @@ struct ReadFinding {
   SourceLocation location;
   std::string message;  ///< A sentence that quotes the offending text.
   std::vector<std::pair<std::string, double>> values;
+  /// The parts of the finding (as Finding's, analysis/checks.h): one line, the named numbers with
+  /// their SI unit in the name, and the next step.
+  std::string headline;
+  std::vector<std::pair<std::string, double>> evidence;
+  std::string help;
 };
 
 /// What a reader returns: the models it read (a world may hold several) and the errors it found.

@@ -69,6 +69,13 @@ struct ReportOptions {
   bool color = false;
   /// Text only: leave out the closing summary line.
   bool quiet = false;
+  /// Text only: each finding's headline alone (no evidence or help lines).
+  bool brief = false;
+  /// Text only: under each finding, its evidence, its help and its full reasoning (the message:
+  /// the causes considered and what the numbers say of each); repeats are not grouped.
+  bool explain = false;
+  /// Text only: instead of the findings, the number of findings per rule (like ruff).
+  bool statistics = false;
   /// Files of the folders given that were not taken as models (text summary line, JSON
   /// summary "skipped_files").
   int skipped_files = 0;
@@ -87,8 +94,14 @@ inline constexpr const char* kReadWarningRule = "read-warning";
 /// Counts findings by severity, and read errors, over `results`. Cost: linear.
 ReportSummary Summarize(const std::vector<FileResult>& results);
 
-/// One line per finding, `file:line:col: severity: message [rule-id]` (`:col` left out when the
-/// column is unknown, `:line` too when the line is), one line per ReadError,
+/// One line per finding, `file:line:col: severity: HEADLINE [rule-id]` (`:col` left out when the
+/// column is unknown, `:line` too when the line is; the headline cut at kMaxHeadlineChars), and
+/// under it at most two lines, `  = evidence: ...` and `  = help: ...` (each at most
+/// kMaxDetailChars; finding_text.h). Findings of one rule in one file with the same help (one
+/// cause) are a group: each keeps its headline line, and the evidence (each number's range over
+/// the group) and the help are printed once, under the last. `options.brief`: headlines only;
+/// `options.explain`: no grouping, and a third line `  = why: MESSAGE`; `options.statistics`:
+/// counts per rule instead of the findings. One line per ReadError,
 /// `file:line:col: error: element: message [read-error]`, then (unless quiet) a summary line,
 /// and when some links' meshes did not resolve, one more line that says how many (and the first
 /// URI), e.g. `massprops: 12 links' meshes did not resolve or could not be read: their size is
@@ -99,7 +112,8 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
 
 /// The JSON document described in docs/cli.md:
 /// {"version", "files": [{"path", "format", "models", "findings": [{"rule", "severity", "model",
-/// "link", "file", "line", "column", "message", "values": {name: number}}], "errors": [{"file",
+/// "link", "file", "line", "column", "message", "headline", "evidence": {name: number}, "help",
+/// "values": {name: number}}], "errors": [{"file",
 /// "line", "column", "element", "message"}]}], "summary": {"files", "errors", "warnings", "notes",
 /// "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
 /// "first_unresolved_mesh" (a string, or null when none), "mesh_resolution"}}. Each file also
@@ -112,7 +126,10 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
 
 /// A SARIF 2.1.0 log with one run: the driver lists every rule of AllRules(), "read-error" and
 /// "read-warning";
-/// each finding and ReadError is a result with ruleId, ruleIndex, level, message and a physical
+/// each rule's fullDescription (the first paragraph of its long form) and help (the long form:
+/// RuleLongForm in finding_text.h) when docs/rules.md has one;
+/// each finding and ReadError is a result with ruleId, ruleIndex, level, message (a finding's
+/// headline; its "properties" hold "evidence", "help" and the full "message") and a physical
 /// location (artifact URI relative to the working directory when the path is relative, a
 /// file:// URI when absolute; region only when the line is known). When meshes were read, the
 /// run's "properties" hold "mesh_links", "mesh_links_unresolved", "first_unresolved_mesh" and
@@ -120,7 +137,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
 std::string RenderSarif(const std::vector<FileResult>& results, const ReportOptions& options = {});
 
 /// One GitHub Actions workflow command per finding and ReadError:
-/// `::error file=F,line=L,col=C,title=RULE::message` (warning for warnings, notice for notes),
+/// `::error file=F,line=L,col=C,title=RULE::HEADLINE` followed, when the finding has help, by a
+/// new line and `help: HELP` (warning for warnings, notice for notes),
 /// escaped per the workflow-command rules (EscapeGithubData / EscapeGithubProperty).
 std::string RenderGithub(const std::vector<FileResult>& results, const ReportOptions& options = {});
 

@@ -53,7 +53,15 @@ void CheckComInsideGeometry(RuleContext& ctx, const JudgedLink& judged) {
             {"com_y", c.y()},
             {"com_z", c.z()},
             {"distance", distance},
-            {"allowed", allowed}});
+            {"allowed", allowed}},
+           LinkHeadline(link.name) + ": center of mass " + FormatLength(distance) +
+               " outside its " + judged.geometry_name + " (mirrored part?)",
+           {{"com_x_m", c.x()},
+            {"com_y_m", c.y()},
+            {"com_z_m", c.z()},
+            {"outside_by_m", distance},
+            {"allowed_m", allowed}},
+           "write the part's center of mass (from CAD) in <inertial><origin xyz>");
 }
 
 }  // namespace rules

@@ -79,7 +79,14 @@ bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged) {
            {{"spread", spread},
             {"bound", bound},
             {"ratio", spread / bound},
-            {"half_diagonal", std::sqrt(r2)}});
+            {"half_diagonal", std::sqrt(r2)}},
+           LinkHeadline(link.name) + ": inertia " + FormatRatio(spread / bound) +
+               " too large for its size (mass changed?)",
+           {{"spread_kg_m2", spread},
+            {"bound_kg_m2", bound},
+            {"ratio", spread / bound},
+            {"reach_m", std::sqrt(r2)}},
+           "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
   return true;
 }
 
@@ -128,7 +135,11 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
                Num(worst_bound) + " kg·m² (ratio " + Num(worst) +
                "): the mass was probably changed without its inertia, or the inertia comes from "
                "another part",
-           {{"moment", worst_moment}, {"hull_bound", worst_bound}, {"ratio", worst}});
+           {{"moment", worst_moment}, {"hull_bound", worst_bound}, {"ratio", worst}},
+           LinkHeadline(link.name) + ": inertia " + FormatRatio(worst) + " too large for its " +
+               judged.geometry_name + " hull (mass changed?)",
+           {{"moment_kg_m2", worst_moment}, {"hull_bound_kg_m2", worst_bound}, {"ratio", worst}},
+           "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
 }
 
 }  // namespace rules

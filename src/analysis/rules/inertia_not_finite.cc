@@ -37,7 +37,18 @@ bool CheckInertiaNotFinite(RuleContext& ctx, const Link& link, const std::string
             {"izz", in.izz},
             {"ixy", in.ixy},
             {"ixz", in.ixz},
-            {"iyz", in.iyz}});
+            {"iyz", in.iyz}},
+           LinkHeadline(link.name) + ": the inertial has a NaN or infinite number",
+           {{"ixx_kg_m2", in.ixx},
+            {"iyy_kg_m2", in.iyy},
+            {"izz_kg_m2", in.izz},
+            {"ixy_kg_m2", in.ixy},
+            {"ixz_kg_m2", in.ixz},
+            {"iyz_kg_m2", in.iyz},
+            {"com_x_m", in.X_BBi.p_AB.x()},
+            {"com_y_m", in.X_BBi.p_AB.y()},
+            {"com_z_m", in.X_BBi.p_AB.z()}},
+           "write finite numbers (from the CAD model, or massprops fix --from-geometry)");
   return false;
 }
 

@@ -42,6 +42,19 @@ const RuleInfo& InertiaNearBoundaryRule() {
   return kInfo;
 }
 
+namespace {
+
+// The evidence of an invalid inertia: its principal moments and how far the triangle
+// inequality fails, relative to the trace.
+std::vector<std::pair<std::string, double>> ViolationEvidence(const Validity& v) {
+  return {{"moment1_kg_m2", v.moments(0)},
+          {"moment2_kg_m2", v.moments(1)},
+          {"moment3_kg_m2", v.moments(2)},
+          {"excess_ratio", v.trace != 0 ? v.excess / v.trace : v.excess}};
+}
+
+}  // namespace
+
 bool CheckInertiaValidity(RuleContext& ctx, int link_index, const std::string& who) {
   const Link& link = ctx.model.links[link_index];
   const Eigen::Matrix3d I_written = WrittenMatrix(*link.inertial);
@@ -51,18 +64,26 @@ bool CheckInertiaValidity(RuleContext& ctx, int link_index, const std::string& w
   const bool valid = IsValid(I_written, tol);
   if (!valid) {
     const Validity v = Analyze(I_written);
-    ctx.Emit(kInertiaNotPhysical, link, InertiaLocation(link),
-             who + ": the inertia about the center of mass is not physically valid: " +
-                 DescribeViolation(v) + ctx.GroupNote(link_index),
-             ValidityValues(v, tol));
+    ctx.Emit(
+        kInertiaNotPhysical, link, InertiaLocation(link),
+        who + ": the inertia about the center of mass is not physically valid: " +
+            DescribeViolation(v) + ctx.GroupNote(link_index),
+        ValidityValues(v, tol),
+        LinkHeadline(link.name) + ": impossible inertia (moments " +
+            FormatSignificant(v.moments(0)) + " + " + FormatSignificant(v.moments(1)) + " < " +
+            FormatSignificant(v.moments(2)) + ")",
+        ViolationEvidence(v),
+        "recompute it from CAD or geometry; massprops fix projects it to the nearest valid one");
     CheckProductsSignWhenInvalid(ctx, link, who);
   } else if (!IsValid(I_written, internal::DefaultInertiaValidityTolerance<double>())) {
     const Validity v = Analyze(I_written);
-    ctx.Emit(kInertiaNearBoundary, link, InertiaLocation(link),
-             who + ": the inertia is valid only within the tolerance " + Num(tol) +
-                 " of the trace: " + DescribeViolation(v) +
-                 " (the body is a thin shape, written with rounded numbers?)",
-             ValidityValues(v, tol));
+    ctx.Emit(
+        kInertiaNearBoundary, link, InertiaLocation(link),
+        who + ": the inertia is valid only within the tolerance " + Num(tol) + " of the trace: " +
+            DescribeViolation(v) + " (the body is a thin shape, written with rounded numbers?)",
+        ValidityValues(v, tol),
+        LinkHeadline(link.name) + ": inertia valid only within tolerance (thin shape, rounded?)",
+        ViolationEvidence(v), "write the moments with more digits, or leave it: it is a note");
   }
   return valid;
 }
@@ -74,11 +95,21 @@ void CheckCompositeValidity(RuleContext& ctx, const WeldedGroup& group, const st
   const Validity v = Analyze(composite.I_SScm_R);
   std::vector<std::pair<std::string, double>> values = ValidityValues(v, ctx.options.tolerance);
   values.emplace_back("group_links", static_cast<double>(group.links.size()));
-  ctx.Emit(kInertiaNotPhysical, root, InertiaLocation(root),
-           who + ": the composite inertia about the composite center of mass " +
-               Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
-               ") is not physically valid: " + DescribeViolation(v),
-           std::move(values));
+  ctx.Emit(
+      kInertiaNotPhysical, root, InertiaLocation(root),
+      who + ": the composite inertia about the composite center of mass " +
+          Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
+          ") is not physically valid: " + DescribeViolation(v),
+      std::move(values),
+      LinkHeadline(root.name) + "'s welded group of " + std::to_string(group.links.size()) +
+          ": impossible composite inertia",
+      [&] {
+        std::vector<std::pair<std::string, double>> evidence = ViolationEvidence(v);
+        evidence.emplace_back("links_count", static_cast<double>(group.links.size()));
+        evidence.emplace_back("mass_kg", composite.mass);
+        return evidence;
+      }(),
+      "fix the members' inertias first (massprops check names them)");
 }
 
 }  // namespace rules

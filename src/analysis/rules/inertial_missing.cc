@@ -108,15 +108,25 @@ void CheckInertialMissing(RuleContext& ctx, const WeldedGroup& group, bool mass_
           "; it moves on a joint with mass outboard of it, and nothing welded to it has "
           "mass";
     }
-    ctx.Emit(kInertialMissing, link, link.location,
-             "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
-                 (collisions == 1 ? "y" : "ies") +
-                 " but no <inertial>: its mass was probably forgotten (" +
-                 (ctx.model.format == Model::Format::kSdf
-                      ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
-                      : "URDF makes it massless)") +
-                 evidence,
-             std::move(values));
+    std::vector<std::pair<std::string, double>> parts = {{"collisions_count", collisions},
+                                                         {"group_mass_kg", group_mass}};
+    for (const auto& [name, value] : values) {
+      if (name == "collision_volume") parts.emplace_back("collision_volume_m3", value);
+      if (name == "mass_at_min_density") parts.emplace_back("mass_at_min_density_kg", value);
+    }
+    ctx.Emit(
+        kInertialMissing, link, link.location,
+        "link '" + link.name + "' has " + std::to_string(collisions) + " collision geometr" +
+            (collisions == 1 ? "y" : "ies") +
+            " but no <inertial>: its mass was probably forgotten (" +
+            (ctx.model.format == Model::Format::kSdf
+                 ? "SDF gives it the default mass 1 kg and inertia diag(1, 1, 1) kg·m²)"
+                 : "URDF makes it massless)") +
+            evidence,
+        std::move(values),
+        LinkHeadline(link.name) + " has collision geometry but no <inertial> (mass forgotten?)",
+        std::move(parts),
+        "add an <inertial> from CAD, or massprops fix --apply inertial-missing (from geometry)");
   }
 }
 

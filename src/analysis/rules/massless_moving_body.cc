@@ -167,7 +167,11 @@ void CheckKinematicOnlyModel(RuleContext& ctx) {
            "the model has no <inertial> at all (a kinematics-only description): its " +
                std::to_string(moving) + " moving bod" + (moving == 1 ? "y is" : "ies are") +
                " massless, starting with link '" + root.name + "'; a simulator cannot use it",
-           {{"mass", 0}, {"moving_groups", static_cast<double>(moving)}});
+           {{"mass", 0}, {"moving_groups", static_cast<double>(moving)}},
+           "no <inertial> anywhere: " + std::to_string(moving) + " moving bod" +
+               (moving == 1 ? "y is" : "ies are") + " massless (kinematics-only model)",
+           {{"moving_bodies_count", static_cast<double>(moving)}},
+           "add each link's <inertial>, or massprops fix --from-geometry to compute them");
 }
 
 MasslessVerdict CheckMasslessMovingGroup(RuleContext& ctx, const WeldedGroup& group,
@@ -192,17 +196,28 @@ MasslessVerdict CheckMasslessMovingGroup(RuleContext& ctx, const WeldedGroup& gr
       {"outboard_mass", hinge.mass},
       {"moment_outboard", hinge.moment},
       {"group_links", static_cast<double>(group.links.size())}};
+  const std::vector<std::pair<std::string, double>> evidence = {
+      {"mass_kg", 0},
+      {"outboard_mass_kg", hinge.mass},
+      {"outboard_moment_kg_m2", hinge.moment},
+      {"links_count", static_cast<double>(group.links.size())}};
+  const std::string help =
+      "give the link its mass and inertia (massprops fix --apply massless-moving-body)";
   const std::string singular =
       ": the mass matrix is singular (a joint coordinate has zero inertia), so simulators reject "
       "the model or become unstable";
   if (hinge.singular) {
     ctx.Emit(kMasslessMovingBody, root, MassLocation(root),
-             who + " " + how + " but has zero mass, and " + hinge.why + singular, values);
+             who + " " + how + " but has zero mass, and " + hinge.why + singular, values,
+             LinkHeadline(root.name) + ": massless, and nothing outboard has mass (singular)",
+             evidence, help);
     return MasslessVerdict::kSingular;
   }
   if (const std::optional<std::string> carried = SingularCarriedJoint(ctx, group)) {
     ctx.Emit(kMasslessMovingBody, root, MassLocation(root),
-             who + " " + how + " but has zero mass, and " + *carried + singular, values);
+             who + " " + how + " but has zero mass, and " + *carried + singular, values,
+             LinkHeadline(root.name) + ": massless; a joint it carries gets no inertia (singular)",
+             evidence, help);
     return MasslessVerdict::kSingular;
   }
   ctx.Emit(kMasslessWithMassOutboard, root, MassLocation(root),
@@ -211,7 +226,11 @@ MasslessVerdict CheckMasslessMovingGroup(RuleContext& ctx, const WeldedGroup& gr
                ": the mass matrix is regular, so Drake and Pinocchio accept it; MuJoCo refuses a "
                "moving body whose mass is below mjMINVAL = 1e-15 unless its compiler options "
                "boundmass/boundinertia raise it (see `massprops check --target mujoco`)",
-           values);
+           values,
+           LinkHeadline(root.name) + ": massless, " + FormatMass(hinge.mass) +
+               " outboard (MuJoCo refuses it)",
+           evidence,
+           "check with --target mujoco; a multi-axis joint's cross link may stay massless");
   return MasslessVerdict::kMassOutboard;
 }
 

@@ -52,7 +52,15 @@ void CheckProductsSignWhenInvalid(RuleContext& ctx, const Link& link, const std:
             {"iyz", in.iyz},
             {"negated_principal_min", vn.moments(0)},
             {"negated_principal_mid", vn.moments(1)},
-            {"negated_principal_max", vn.moments(2)}});
+            {"negated_principal_max", vn.moments(2)}},
+           LinkHeadline(link.name) +
+               ": inertia valid only with ixy, ixz, iyz negated (sign convention?)",
+           {{"ixy_kg_m2", in.ixy},
+            {"ixz_kg_m2", in.ixz},
+            {"iyz_kg_m2", in.iyz},
+            {"negated_principal_min_kg_m2", vn.moments(0)}},
+           "negate the products (URDF/SDF want -∫xy dm): massprops fix --apply "
+           "products-sign-suspect");
 }
 
 void CheckProductsSignAgainstGeometry(RuleContext& ctx, const JudgedLink& judged) {
@@ -81,7 +89,18 @@ void CheckProductsSignAgainstGeometry(RuleContext& ctx, const JudgedLink& judged
             {"geometry_iyz", g.z()},
             {"cosine", evidence->cosine},
             {"mismatch_as_written", evidence->mismatch_as_written},
-            {"mismatch_negated", evidence->mismatch_negated}});
+            {"mismatch_negated", evidence->mismatch_negated}},
+           LinkHeadline(link.name) + ": products of inertia opposite its " + judged.geometry_name +
+               "'s (sign or mirror?)",
+           {{"ixy_kg_m2", in.ixy},
+            {"ixz_kg_m2", in.ixz},
+            {"iyz_kg_m2", in.iyz},
+            {"geometry_ixy_kg_m2", g.x()},
+            {"geometry_ixz_kg_m2", g.y()},
+            {"geometry_iyz_kg_m2", g.z()},
+            {"cosine", evidence->cosine}},
+           "negate the products (URDF/SDF want -∫xy dm): massprops fix --apply "
+           "products-sign-suspect");
 }
 
 }  // namespace rules

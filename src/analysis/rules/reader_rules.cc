@@ -38,6 +38,49 @@ const RuleInfo& IncludeUnresolvedRule() {
   return kInfo;
 }
 
+void DescribeReaderFinding(Finding& f) {
+  // The readers' messages say what is wrong, then "; " and what follows from it.
+  const std::size_t cut = f.message.find("; ");
+  f.headline = f.message.substr(0, cut);
+  // "... cannot read <inertia ixz=\"x\"> of link 'l' and loads ...": the link first, then what.
+  const std::size_t read = f.headline.find(" read "), of = f.headline.find(" of link '");
+  if (f.rule == kInertialUnreadable && read != std::string::npos && of != std::string::npos &&
+      of > read) {
+    f.headline = "link '" + f.link + "': cannot read " + f.headline.substr(read + 6, of - read - 6);
+  }
+  // "<include> 'uri' cannot be resolved: where it was looked for": the why is under --explain.
+  const std::size_t resolved = f.headline.find("cannot be resolved");
+  if (f.rule == kIncludeUnresolved && resolved != std::string::npos) {
+    f.headline.resize(resolved + std::string("cannot be resolved").size());
+  }
+  // "link L: <inertial auto="true"> (SDF 1.11) computed as SUMMARY": the mass is the number.
+  if (f.rule == "inertial-auto") {
+    for (const auto& [name, value] : f.values) {
+      if (name == "mass") {
+        f.headline = "link '" + f.link + "': <inertial auto> computed as " + FormatMass(value);
+      }
+    }
+  }
+  f.evidence.clear();
+  for (const auto& [name, value] : f.values) {
+    const bool moment = name.size() == 3 && name[0] == 'i';
+    const std::string unit = name == "mass"               ? "_kg"
+                             : name.rfind("com_", 0) == 0 ? "_m"
+                             : moment                     ? "_kg_m2"
+                                                          : "";
+    f.evidence.emplace_back(name + unit, value);
+  }
+  if (f.rule == kUrdfNotLoadable) {
+    f.help = "fix the element named so that ROS's parser loads the file (docs/urdf.md)";
+  } else if (f.rule == kInertialUnreadable) {
+    f.help = "write one decimal number per attribute, nothing around it";
+  } else if (f.rule == kIncludeUnresolved) {
+    f.help = "point massprops at the model with --model-path DIR (or download it)";
+  } else {
+    f.help = "nothing to fix: what SDF computed, for review (massprops explain " + f.rule + ")";
+  }
+}
+
 const RuleInfo& InertialAutoRule() {
   static const RuleInfo kInfo{
       "inertial-auto", Severity::kNote, true,

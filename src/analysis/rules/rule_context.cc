@@ -49,6 +49,18 @@ std::string Format(const char* format, ...) {
 
 std::string Num(double x) { return Format("%.6g", x); }
 
+std::string LinkHeadline(const std::string& link_name) {
+  constexpr std::size_t kMaxName = 32;
+  if (link_name.size() <= kMaxName) return "link '" + link_name + "'";
+  // Cut at UTF-8 character boundaries: keep the start and the end, which tell links apart.
+  std::size_t head = 20, tail = link_name.size() - 11;
+  while (head > 0 && (static_cast<unsigned char>(link_name[head]) & 0xC0) == 0x80) --head;
+  while (tail < link_name.size() && (static_cast<unsigned char>(link_name[tail]) & 0xC0) == 0x80) {
+    ++tail;
+  }
+  return "link '" + link_name.substr(0, head) + "…" + link_name.substr(tail) + "'";
+}
+
 std::string Vec(const Eigen::Vector3d& v) {
   return "(" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + ")";
 }
@@ -233,9 +245,10 @@ bool RuleContext::Enabled(const std::string& rule, const Link& link) const {
   return SeverityOf(rule).has_value();
 }
 
-void RuleContext::Emit(const std::string& rule, const Link& link, const SourceLocation& location,
-                       std::string message, std::vector<std::pair<std::string, double>> values) {
-  if (!Enabled(rule, link)) return;
+Finding* RuleContext::Emit(const std::string& rule, const Link& link,
+                           const SourceLocation& location, std::string message,
+                           std::vector<std::pair<std::string, double>> values) {
+  if (!Enabled(rule, link)) return nullptr;
   Finding f;
   f.rule = rule;
   f.severity = *SeverityOf(rule);
@@ -245,6 +258,18 @@ void RuleContext::Emit(const std::string& rule, const Link& link, const SourceLo
   f.message = std::move(message);
   f.values = std::move(values);
   findings.push_back(std::move(f));
+  return &findings.back();
+}
+
+void RuleContext::Emit(const std::string& rule, const Link& link, const SourceLocation& location,
+                       std::string message, std::vector<std::pair<std::string, double>> values,
+                       std::string headline, std::vector<std::pair<std::string, double>> evidence,
+                       std::string help) {
+  Finding* f = Emit(rule, link, location, std::move(message), std::move(values));
+  if (f == nullptr) return;
+  f->headline = std::move(headline);
+  f->evidence = std::move(evidence);
+  f->help = std::move(help);
 }
 
 JudgedLink RuleContext::JudgeAgainstGeometry(int link_index, const std::string& who,

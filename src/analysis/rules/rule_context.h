@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "massprops/analysis/checks.h"
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/model/model.h"
 
@@ -54,6 +55,9 @@ constexpr double kMarkerGeometryMargin = 3;
 constexpr double kMadeUpInertiaShare = 0.05;
 
 std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
+// "link 'name'" for headlines: the name shortened to at most 32 characters ("…" in the middle), so
+// that a long generated name leaves room for what is wrong.
+std::string LinkHeadline(const std::string& link_name);
 // A number as %g with 6 significant digits (enough to recognise the file's numbers).
 std::string Num(double x);
 // "(x, y, z)" with Num.
@@ -150,9 +154,16 @@ class RuleContext {
   // The welded group of link `link_index`.
   const WeldedGroup& GroupOf(int link_index) const { return groups[group_of[link_index]]; }
 
-  // Adds a finding of `rule` on `link` unless the rule is off or the link ignores it.
+  // Adds a finding of `rule` on `link` unless the rule is off or the link ignores it; returns
+  // it (for the rule to set its headline, evidence and help), or nullptr when it was not added.
+  Finding* Emit(const std::string& rule, const Link& link, const SourceLocation& location,
+                std::string message, std::vector<std::pair<std::string, double>> values);
+  // Emit, and the finding's headline, evidence and help (checks.h; numbers written with
+  // finding_text.h).
   void Emit(const std::string& rule, const Link& link, const SourceLocation& location,
-            std::string message, std::vector<std::pair<std::string, double>> values);
+            std::string message, std::vector<std::pair<std::string, double>> values,
+            std::string headline, std::vector<std::pair<std::string, double>> evidence,
+            std::string help);
 
   // The composite of link `child_link` and everything outboard of it (its welded group and every
   // group attached below, through any joint, at the zero configuration), about and expressed in

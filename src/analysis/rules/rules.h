@@ -37,6 +37,9 @@ const RuleInfo& UrdfNotLoadableRule();
 const RuleInfo& InertialUnreadableRule();
 const RuleInfo& IncludeUnresolvedRule();
 const RuleInfo& InertialAutoRule();
+// Sets the headline (the reader's message up to its first "; "), the evidence (its values, with
+// their units in the names) and the help of a finding of one of these rules.
+void DescribeReaderFinding(Finding& finding);
 
 // ---- Per-link rules (CheckModel runs them on each link with an <inertial>, in this order).
 

@@ -43,15 +43,22 @@ constexpr double kKinematicRatio = 5;
 constexpr double kKinematicRatioPartial = 8;
 
 // A unit mistake and the factor by which it makes (k / k_expected)² too large.
+// `cause` and `help` are its words in a headline and a help line.
 struct UnitSlip {
   double factor;
   const char* text;
+  const char* cause;
+  const char* help;
 };
 constexpr UnitSlip kUnitSlips[] = {
-    {1e6, "the inertia looks like kg·mm² (1e6 too large): multiply it by 1e-6"},
-    {1e4, "the inertia looks like kg·cm² (1e4 too large): multiply it by 1e-4"},
-    {1e-3, "the mass looks like grams (1000 too large): divide it by 1000"},
-    {1e-6, "the inertia looks 1e6 too small (converted from kg·mm² twice?)"},
+    {1e6, "the inertia looks like kg·mm² (1e6 too large): multiply it by 1e-6", "in kg·mm²?",
+     "multiply the inertia by 1e-6 (massprops fix --apply units-suspect does it)"},
+    {1e4, "the inertia looks like kg·cm² (1e4 too large): multiply it by 1e-4", "in kg·cm²?",
+     "multiply the inertia by 1e-4 (massprops fix --apply units-suspect does it)"},
+    {1e-3, "the mass looks like grams (1000 too large): divide it by 1000", "mass in grams?",
+     "divide the mass by 1000 (massprops fix --apply units-suspect does it)"},
+    {1e-6, "the inertia looks 1e6 too small (converted from kg·mm² twice?)", "1e6 too small?",
+     "multiply the inertia by 1e6 (massprops fix --apply units-suspect does it)"},
 };
 
 // The unit slip whose factor is nearest to `factor` (= (k / k_expected)²), by power of ten.
@@ -100,6 +107,44 @@ std::string Verdict(bool slip_fits, bool placeholder) {
   if (slip_fits) return "; the numbers point to the unit slip";
   if (placeholder) return "; the numbers point to the placeholder";
   return "; nothing in the numbers points to one cause";
+}
+
+// The likely cause in a few words for a headline, and the help that goes with it.
+struct CauseWords {
+  std::string cause;
+  std::string help;
+};
+
+// CauseWords from what the numbers say: a unit slip (`slip`, when `slip_fits`), a placeholder,
+// both, or neither (as Verdict).
+CauseWords WordsFor(const UnitSlip& slip, bool slip_fits, bool placeholder) {
+  if (slip_fits && placeholder) {
+    return {"units or placeholder?",
+            "compare with the part's CAD (massprops explain units-suspect lists the causes)"};
+  }
+  if (slip_fits) return {slip.cause, slip.help};
+  if (placeholder) {
+    return {"placeholder?",
+            "write the part's inertia (from CAD, or massprops fix --from-geometry)"};
+  }
+  return {"mass or inertia edited?",
+          "write one part's mass and inertia from CAD (massprops explain units-suspect)"};
+}
+
+// The words of Causes(I, m, ratio, extent) for a headline.
+CauseWords LikelyCause(const Eigen::Matrix3d& I, double ratio) {
+  const double factor = ratio * ratio / 0.25;
+  const UnitSlip& slip = NearestUnitSlip(factor);
+  const double fixed_ratio = ratio / std::sqrt(slip.factor);
+  return WordsFor(slip, fixed_ratio >= 0.3 && fixed_ratio <= 1, !PlaceholderPattern(I).empty());
+}
+
+// "inertia 1.03e6x too large" / "inertia 1e3x too small": the factor (k / k_expected)² by which
+// the inertia misses that of a solid filling its box (k_expected = half the half-diagonal).
+std::string InertiaFactorWords(double ratio) {
+  const double factor = ratio * ratio / 0.25;
+  return factor >= 1 ? "inertia " + FormatRatio(factor) + " too large"
+                     : "inertia " + FormatRatio(1 / factor) + " too small";
 }
 
 // The causes that fit a radius of gyration k (inertia I, mass m) that is `ratio` times the
@@ -262,6 +307,7 @@ bool CheckUnitsAgainstKinematics(RuleContext& ctx, const JudgedLink& judged, dou
           ? (link.geometries.empty() ? "the link has no geometry"
                                      : "its geometry's size is unknown (a mesh not read)")
           : judged.unjudged_because;
+  const CauseWords words = LikelyCause(judged.I_written, ratio);
   ctx.Emit(kUnitsSuspect, link, InertiaLocation(link),
            judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " +
                Num(ratio) + " times the " + Num(scale.span) + " m its kinematic tree gives it (" +
@@ -271,7 +317,12 @@ bool CheckUnitsAgainstKinematics(RuleContext& ctx, const JudgedLink& judged, dou
             {"kinematic_span", scale.span},
             {"ratio", ratio},
             {"mass", m},
-            {"trace", judged.I_written.trace()}});
+            {"trace", judged.I_written.trace()}},
+           LinkHeadline(link.name) + ": radius of gyration " + FormatLength(k) + " is " +
+               FormatRatio(ratio) + " its joints' " + FormatLength(scale.span) + " (" +
+               words.cause + ")",
+           {{"k_m", k}, {"kinematic_span_m", scale.span}, {"ratio", ratio}, {"mass_kg", m}},
+           words.help);
   return true;
 }
 
@@ -298,12 +349,17 @@ bool CheckUnits(RuleContext& ctx, const JudgedLink& judged) {
     // part whose mass was edited without its inertia: still judged.
     if (!(k > kMaxGyrationRadiusWithoutGeometry)) return false;
     if (!(m > kDummyMass) && !PlaceholderPattern(judged.I_written).empty()) return false;
+    const CauseWords no_geometry =
+        WordsFor(kUnitSlips[0], k / 1000 <= 1, !PlaceholderPattern(judged.I_written).empty());
     ctx.Emit(kUnitsSuspect, link, InertiaLocation(link),
              judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is beyond " +
                  Num(kMaxGyrationRadiusWithoutGeometry) +
                  " m (the link has no geometry of known size): " +
                  CausesWithoutGeometry(judged.I_written, k),
-             {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}});
+             {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}},
+             LinkHeadline(link.name) + ": radius of gyration " + FormatLength(k) +
+                 ", over 10 m, no geometry (" + no_geometry.cause + ")",
+             {{"k_m", k}, {"mass_kg", m}, {"trace_kg_m2", trace}}, no_geometry.help);
     return true;
   }
   const double extent = 0.5 * judged.bounds->box_B.diagonal().norm();
@@ -316,6 +372,7 @@ bool CheckUnits(RuleContext& ctx, const JudgedLink& judged) {
   const bool too_small = k / judged.smallest_extent < 1 / kUnitsRatio;
   if (!(too_large || too_small)) return false;
   // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
+  const CauseWords words = LikelyCause(judged.I_written, ratio);
   ctx.Emit(kUnitsSuspect, link, InertiaLocation(link),
            judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " +
                Num(ratio) + " times the half-diagonal " + Num(extent) + " m of its " +
@@ -325,7 +382,12 @@ bool CheckUnits(RuleContext& ctx, const JudgedLink& judged) {
             {"geometry_half_diagonal", extent},
             {"ratio", ratio},
             {"mass", m},
-            {"trace", trace}});
+            {"trace", trace}},
+           LinkHeadline(link.name) + ": " + InertiaFactorWords(ratio) + " for its size (" +
+               words.cause +
+               (MeshScaleHint(*judged.bounds, ratio).empty() ? "" : " or mesh in mm?") + ")",
+           {{"k_m", k}, {"half_diagonal_m", extent}, {"k_over_e_ratio", ratio}, {"mass_kg", m}},
+           words.help);
   return true;
 }
 
@@ -382,7 +444,16 @@ bool CheckMadeUpInertia(RuleContext& ctx, const JudgedLink& judged) {
             {"mass", m},
             {"trace", own},
             {"group_share", share},
-            {"other_links", others}});
+            {"other_links", others}},
+           LinkHeadline(link.name) + ": typed-in inertia " +
+               FormatSignificant(judged.I_written(0, 0)) + " is " + FormatSignificant(100 * share) +
+               "% of its welded group's",
+           {{"k_m", k},
+            {"mass_kg", m},
+            {"trace_kg_m2", own},
+            {"group_share_percent", 100 * share},
+            {"other_links_count", static_cast<double>(others)}},
+           "give the link its part's inertia, or zero if it is only a frame");
   return true;
 }
 

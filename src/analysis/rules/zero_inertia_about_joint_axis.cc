@@ -39,15 +39,22 @@ void CheckInertiaAboutJointAxis(RuleContext& ctx, const WeldedGroup& group, cons
   const Eigen::Matrix3d I_Ro = composite.CalcInertiaAboutOrigin();
   const double I_axis = a.dot(I_Ro * a);
   if (I_axis <= ctx.options.tolerance * I_Ro.trace()) {
-    ctx.Emit(kZeroInertiaAboutJointAxis, root, InertiaLocation(root),
-             who + " turns on " + joint.type_name + " joint '" + joint.name +
-                 "' but its moment of inertia about the joint axis " + Vec(a) + " is " +
-                 Num(I_axis) + " kg·m² (mass " + Num(composite.mass) +
-                 "): a torque would give it infinite angular acceleration",
-             {{"moment_about_axis", I_axis},
-              {"mass", composite.mass},
-              {"trace", I_Ro.trace()},
-              {"group_links", static_cast<double>(group.links.size())}});
+    ctx.Emit(
+        kZeroInertiaAboutJointAxis, root, InertiaLocation(root),
+        who + " turns on " + joint.type_name + " joint '" + joint.name +
+            "' but its moment of inertia about the joint axis " + Vec(a) + " is " + Num(I_axis) +
+            " kg·m² (mass " + Num(composite.mass) +
+            "): a torque would give it infinite angular acceleration",
+        {{"moment_about_axis", I_axis},
+         {"mass", composite.mass},
+         {"trace", I_Ro.trace()},
+         {"group_links", static_cast<double>(group.links.size())}},
+        LinkHeadline(root.name) + ": no inertia about its joint's axis (" + FormatInertia(I_axis) +
+            ")",
+        {{"moment_about_axis_kg_m2", I_axis},
+         {"mass_kg", composite.mass},
+         {"trace_kg_m2", I_Ro.trace()}},
+        "give the body its moment about the axis (a rod or a point mass on the axis has none)");
   }
 }
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "analysis/rule_severity.h"
+#include "analysis/targets/finding_text.h"
 #include "massprops/core/rotational_inertia.h"
 
 namespace massprops {
@@ -70,6 +71,7 @@ void FindingSink::Emit(const std::string& rule, int link_index, const SourceLoca
   f.location = location;
   f.message = std::move(message);
   f.values = std::move(values);
+  DescribeTargetFinding(f);
   findings_.push_back(std::move(f));
 }
 

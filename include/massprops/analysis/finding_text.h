@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// The one formatting layer of a finding's parts (its headline, evidence and help; checks.h):
+/// numbers at 3 significant digits, lengths below 1 m in mm or cm, ratios written like `577x`,
+/// each named number rendered by the SI unit its name ends in; and each rule's long form
+/// (`massprops explain RULE`), compiled into the library from docs/rules.md so that the two
+/// cannot drift apart. Rules write their headlines with these functions; every reporter renders
+/// the parts with them.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "massprops/analysis/checks.h"
+
+namespace massprops {
+
+/// The most characters of a headline (between `severity: ` and ` [rule]` in text output).
+inline constexpr std::size_t kMaxHeadlineChars = 110;
+/// The most characters of a line under a headline (`  = evidence: ...`, `  = help: ...`).
+inline constexpr std::size_t kMaxDetailChars = 100;
+
+/// `x` with `digits` significant digits, without trailing zeros, the exponent short:
+/// 0.009037 → "0.00904", 1234 → "1230" (whole below 1e5), 1234567 → "1.23e6", 2 → "2",
+/// -0.5 → "-0.5"; "nan", "inf", "-inf".
+std::string FormatSignificant(double x, int digits = 3);
+/// A length in metres: below 1 cm in mm, below 1 m in cm, else in m, 3 significant digits:
+/// 0.00904 → "9.04 mm", 0.15 → "15 cm", 2.5 → "2.5 m", 0 → "0 mm".
+std::string FormatLength(double metres);
+/// A ratio as "577x", "1e6x", "0.018x" (3 significant digits).
+std::string FormatRatio(double ratio);
+/// A mass: "2 kg", "0.15 kg".
+std::string FormatMass(double kg);
+/// A moment of inertia: "0.0279 kg·m²".
+std::string FormatInertia(double kg_m2);
+/// The extents of a box as "4 × 4 × 10 cm" (the unit of the largest, 3 significant digits).
+std::string FormatExtents(double x_m, double y_m, double z_m);
+
+/// The value of a named number, by the unit its name ends in: `_kg_m2` kg·m², `_kg_m3` kg/m³,
+/// `_m3` m³, `_m2` m², `_kg` kg, `_m` a length (FormatLength), `_rad` rad, `_deg` °, `_percent`
+/// %, `ratio` / `_ratio` a ratio (FormatRatio), `_count` an integer; anything else a plain number.
+std::string FormatEvidenceValue(std::string_view name, double value);
+/// The name without its unit, underscores as spaces: "half_diagonal_m" → "half diagonal",
+/// "k_over_e_ratio" → "k/e", "ratio" → "ratio".
+std::string EvidenceLabel(std::string_view name);
+/// "mass 2 kg, half diagonal 21.2 cm, k/e 0.018x": as many items as fit in `max_chars`, then
+/// "…" when some were left out (JSON and `--explain` keep them all).
+std::string FormatEvidence(const std::vector<std::pair<std::string, double>>& evidence,
+                           std::size_t max_chars = kMaxDetailChars - 14);
+
+/// The finding's headline, or its message when the rule gave no headline (a Finding made by
+/// other code). Never empty when either is set.
+const std::string& HeadlineOf(const Finding& finding);
+
+/// The long form of `rule` (what it means, the physics and the evidence it reads, an example,
+/// how to fix and silence it): its section of docs/rules.md, as compiled into the library.
+/// nullopt for a rule docs/rules.md does not document.
+std::optional<std::string> RuleLongForm(std::string_view rule);
+/// The rules that have a long form, in the order of docs/rules.md.
+std::vector<std::string> RulesWithLongForm();
+
+}  // namespace massprops
