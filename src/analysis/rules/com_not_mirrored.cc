@@ -254,7 +254,19 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
             {"products_miss", m.products_miss},
             {"expected_com_x", expected.x()},
             {"expected_com_y", expected.y()},
-            {"expected_com_z", expected.z()}});
+            {"expected_com_z", expected.z()}},
+           LinkHeadline(bad.name) + ": " +
+               (m.com_bad ? "center of mass " + FormatLength(m.com_miss) + " off the mirror of '"
+                          : std::string("products of inertia do not mirror those of '")) +
+               good.name + "''s (copied unmirrored?)",
+           {{"com_miss_m", m.com_miss},
+            {"products_miss_of_trace", m.products_miss},
+            {"mirror_plane_offset_m", m.offset}},
+           m.com_bad ? "mirror '" + good.name + "''s center of mass across the plane " +
+                           std::string(1, axis_name) + " = " + FormatLength(m.offset) +
+                           ": in the model frame it belongs at " + Vec(expected)
+                     : "negate the products of '" + good.name +
+                           "' that the mirror plane flips and write them on '" + bad.name + "'");
 }
 
 // Two links that draw the same mesh files at the same handedness are one part placed twice (a
