@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # massprops in a ROS 2 workspace (package.xml; docs/install.md; run by tools/test.sh): a scratch
-# workspace with this checkout in src/ (a symbolic link), `colcon build` (Debian: colcon,
+# workspace whose package is this checkout (colcon build --paths), `colcon build` (Debian: colcon,
 # python3-colcon-ros, which reads package.xml, and python3-colcon-cmake) without tests or benchmarks (with ccache when present), then the installed
 # tool runs from the workspace's install/ folder, and `import massprops` after sourcing
 # install/setup.bash. Prints the seconds it took.
@@ -12,15 +12,17 @@ command -v colcon >/dev/null || fail "colcon is not installed (Debian: colcon, p
 SECONDS=0
 
 rm -rf "$ws/install" "$ws/log" "$ws/src"
-mkdir -p "$ws/src"
-ln -s "$here" "$ws/src/massprops"
-cmake_args=(-DCMAKE_BUILD_TYPE=Release -DMASSPROPS_BUILD_TESTS=OFF -DMASSPROPS_BUILD_BENCH=OFF)
+mkdir -p "$ws"
+# The checkout itself is the package (colcon --paths: no discovery below it): its sources are
+# compiled from the same paths as build/'s, so that with the same flags (tools/test.sh passes
+# -DMASSPROPS_WERROR=ON, as to build/) ccache hits. Extra arguments go to cmake.
+cmake_args=(-DCMAKE_BUILD_TYPE=Release -DMASSPROPS_BUILD_TESTS=OFF -DMASSPROPS_BUILD_BENCH=OFF "$@")
 if command -v ccache >/dev/null; then
   cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
 # The build folder stays (build-colcon/build/massprops) so that a second run builds only what
 # changed; install/ is made anew each time.
-(cd "$ws" && colcon build --cmake-args "${cmake_args[@]}") >"$ws/colcon.log" 2>&1 ||
+(cd "$ws" && colcon build --paths "$here" --cmake-args "${cmake_args[@]}") >"$ws/colcon.log" 2>&1 ||
   { tail -40 "$ws/colcon.log"; fail "colcon build failed (log: $ws/colcon.log)"; }
 
 # colcon read package.xml (colcon-ros): it records the package's run dependencies, the rosdep

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages massprops needs (only those missing; apt-get needs root),
-# then configures and builds into build/ (or $BUILD_DIR). Extra arguments go to cmake.
+# then configures and builds into build/ (or $BUILD_DIR), through ccache when it is installed
+# (MASSPROPS_NO_CCACHE=1: not). Extra arguments go to cmake.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$here/build}
@@ -13,6 +14,10 @@ packages+=(libyaml-cpp-dev)
 # The Debian package (tools/package.sh): the man page is written by help2man, cpack's Depends:
 # by dpkg-shlibdeps (dpkg-dev).
 packages+=(help2man dpkg-dev)
+# ccache: the Release builds of tools/test.sh (build/, the .deb's, the colcon workspace's) compile
+# the same sources with the same flags; the first compiles, the others hit the cache
+# (docs/development.md, "CI time").
+packages+=(ccache)
 # MASSPROPS_SETUP_BUILD_ONLY=1 (tools/package.sh, action.yml): only what the build needs.
 if [[ -z ${MASSPROPS_SETUP_BUILD_ONLY:-} ]]; then
 packages+=(libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev python3-pytest)
@@ -23,6 +28,9 @@ packages+=(libmujoco-dev)
 packages+=(libjs-three chromium chromium-driver python3-selenium)
 # The libFuzzer targets (tools/fuzz.sh, run by tools/test.sh): clang and its libFuzzer.
 packages+=(clang-14 libfuzzer-14-dev)
+# The lint (tools/lint.sh, ctest clang_tidy_passes): clang-tidy, whose readability-function-size
+# keeps every function within 120 lines (docs/development.md, "Size limits").
+packages+=(clang-tidy)
 # The packaging tests: lintian judges the .deb (tools/package_test.sh); colcon builds a ROS 2
 # workspace holding massprops (tools/colcon_test.sh): colcon-ros reads package.xml, colcon-cmake
 # builds, colcon-bash writes install/setup.bash.
@@ -44,5 +52,10 @@ if ((${#missing[@]})); then
   fi
 fi
 
-cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} "$@" >/dev/null
+launcher=()
+if command -v ccache >/dev/null && [[ -z ${MASSPROPS_NO_CCACHE:-} ]]; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} "${launcher[@]}" "$@" \
+  >/dev/null
 cmake --build "$build_dir" -j "$(nproc)"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick start, command 2: set up and run every test, twice:
-#   1. build/        Release, warnings are errors; then the Debian package (tools/package_test.sh)
-#                    and a ROS 2 workspace (tools/colcon_test.sh);
+#   1. build/        Release, warnings are errors, with the lint (tools/lint.sh: sizes, layers,
+#                    clang-tidy); then the Debian package (tools/package_test.sh) and a ROS 2
+#                    workspace (tools/colcon_test.sh), their objects from ccache;
 #   2. build-asan/   Debug under AddressSanitizer + UndefinedBehaviorSanitizer.
 #   3. build-fuzz/   each libFuzzer target of tests/fuzz for 60 s under ASan + UBSan (clang-14;
 #                    tools/fuzz.sh). Set MASSPROPS_FUZZ_SECONDS to change the time per target.
@@ -10,20 +11,24 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=$(nproc)
 
+# The Release builds (build/, the .deb's, the colcon workspace's) compile the same sources with the
+# same flags: through ccache (tools/setup.sh installs it), the first compiles them and the others
+# hit. A cache of the checkout's own unless CCACHE_DIR names one (docs/development.md, "CI time").
+export CCACHE_DIR=${CCACHE_DIR:-$here/build-ccache}
 BUILD_DIR="$here/build" "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_TESTS=ON
 (cd "$here/build" && ctest --output-on-failure -j "$jobs")
 
 # As users install it (docs/install.md): the .deb built, judged by lintian and run from its files
 # only, with the GitHub Action's script on it; a ROS 2 workspace built by colcon.
 bash "$here/tools/package_test.sh" -DMASSPROPS_WERROR=ON
-bash "$here/tools/colcon_test.sh"
+bash "$here/tools/colcon_test.sh" -DMASSPROPS_WERROR=ON
 
 if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   BUILD_DIR="$here/build-asan" BUILD_TYPE=Debug "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON \
     -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_SANITIZE=address,undefined
   (cd "$here/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
      LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
-     ctest --output-on-failure -j "$jobs")
+     ctest --output-on-failure -j "$jobs" -LE lint)  # the lint ran in the Release pass
 fi
 
 if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then

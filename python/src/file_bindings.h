@@ -66,6 +66,11 @@ ReadResult ReadSource(const Source& s, const std::vector<std::string>& model_pat
 std::vector<Model> ReadModels(const Source& s, const std::vector<std::string>& model_paths,
                               ReadResult* read_out = nullptr);
 
+// Where the meshes of the model read from `s` are found: the package and model folders, and the
+// model file's own folder (none for text), with `cache` shared by the reads.
+MeshResolveOptions MeshResolveFor(const Source& s, const std::vector<std::string>& package_paths,
+                                  const std::vector<std::string>& model_paths, MeshCache* cache);
+
 std::string FormatName(Model::Format format);
 
 std::string GeometryTypeName(Geometry::Type type);

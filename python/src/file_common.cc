@@ -121,6 +121,16 @@ std::vector<Model> ReadModels(const Source& s, const std::vector<std::string>& m
   return models;
 }
 
+MeshResolveOptions MeshResolveFor(const Source& s, const std::vector<std::string>& package_paths,
+                                  const std::vector<std::string>& model_paths, MeshCache* cache) {
+  MeshResolveOptions resolve;
+  resolve.package_paths = package_paths;
+  resolve.model_paths = model_paths;
+  resolve.model_file = s.is_text ? std::string() : s.path;
+  resolve.cache = cache;
+  return resolve;
+}
+
 std::string FormatName(Model::Format format) {
   return format == Model::Format::kSdf ? "sdf" : "urdf";
 }

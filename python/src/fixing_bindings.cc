@@ -243,11 +243,7 @@ FixResult Fix(const py::handle& source_arg, const std::vector<std::string>& appl
   CheckOptions check_options;
   check_options.tolerance = tolerance;
   MeshCache cache;
-  MeshResolveOptions resolve;
-  resolve.package_paths = package_paths;
-  resolve.model_paths = model_paths;
-  resolve.model_file = source.is_text ? std::string() : source.path;
-  resolve.cache = &cache;
+  MeshResolveOptions resolve = MeshResolveFor(source, package_paths, model_paths, &cache);
   if (geometry || from_geometry.all || !from_geometry.links.empty()) {
     options.shape = MakeLinkShapeFunction(resolve);
     if (geometry) check_options.shape = options.shape;

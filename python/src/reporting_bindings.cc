@@ -65,11 +65,7 @@ py::object Report(const py::handle& source_arg, const std::map<std::string, doub
   options.subtree = subtree;
   const std::vector<Model> models = ReadModels(source, model_paths);
   MeshCache cache;
-  MeshResolveOptions resolve;
-  resolve.package_paths = package_paths;
-  resolve.model_paths = model_paths;
-  resolve.model_file = source.is_text ? std::string() : source.path;
-  resolve.cache = &cache;
+  MeshResolveOptions resolve = MeshResolveFor(source, package_paths, model_paths, &cache);
   options.geometry = geometry ? &resolve : nullptr;
   std::vector<ModelMassReport> reports;
   for (const Model& model : models) {

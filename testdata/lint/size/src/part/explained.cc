@@ -1,0 +1,6 @@
+// six lines
+int A();
+int B();
+int C();
+int D();
+int E();

@@ -1,0 +1,5 @@
+// five lines
+int A();
+int B();
+int C();
+int D();

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The conventions that CI enforces (docs/development.md, "Size limits" and "Style"), so that the
+# code base does not depend on anyone remembering them:
+#   1. tools/check_size.py   no file in src/, include/, python/src/ over 900 lines unless
+#                            docs/development.md names it with its reason;
+#   2. tools/check_layers.py the include directions between the parts (docs/architecture.md);
+#   3. clang-tidy            .clang-tidy's checks, readability-function-size among them (no
+#                            function over 120 lines), on every source of src/ and python/src/ in
+#                            BUILD/compile_commands.json, and on the headers they include.
+# Usage: tools/lint.sh [--tidy-only] [BUILD]   (BUILD: a configured build folder, default build/;
+# its generated sources, e.g. the embedded page, are left out). Jobs: MASSPROPS_LINT_JOBS, else
+# nproc. Exit 0 when all pass; else 1, each violation named by file and line.
+set -uo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+tidy_only=0
+if [[ ${1:-} == --tidy-only ]]; then
+  tidy_only=1
+  shift
+fi
+build=${1:-$here/build}
+jobs=${MASSPROPS_LINT_JOBS:-$(nproc)}
+status=0
+
+if ((!tidy_only)); then
+  python3 "$here/tools/check_size.py" "$here" || status=1
+  python3 "$here/tools/check_layers.py" "$here" || status=1
+fi
+
+clang_tidy=${CLANG_TIDY:-$(command -v clang-tidy || command -v clang-tidy-14 || true)}
+if [[ -z $clang_tidy ]]; then
+  echo "lint.sh: clang-tidy not found (apt install clang-tidy)" >&2
+  exit 1
+fi
+if [[ ! -f $build/compile_commands.json ]]; then
+  echo "lint.sh: no $build/compile_commands.json: configure the build first (tools/setup.sh)" >&2
+  exit 1
+fi
+# The project's own sources in the compilation database (each once).
+mapfile -t sources < <(python3 - "$build/compile_commands.json" "$here" <<'PY'
+import json, os, sys
+db, root = sys.argv[1], os.path.realpath(sys.argv[2])
+seen = set()
+for entry in json.load(open(db)):
+    path = os.path.realpath(os.path.join(entry["directory"], entry["file"]))
+    rel = os.path.relpath(path, root)
+    if rel.startswith(("src/", "python/src/")) and rel not in seen:
+        seen.add(rel)
+        print(path)
+PY
+)
+if ((${#sources[@]} == 0)); then
+  echo "lint.sh: no sources of src/ or python/src/ in $build/compile_commands.json" >&2
+  exit 1
+fi
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+start=$SECONDS
+printf '%s\n' "${sources[@]}" |
+  xargs -P "$jobs" -n 4 "$clang_tidy" -p "$build" --quiet >"$log" 2>&1
+tidy_status=$?
+# clang-tidy prints each warning of a header once per source that includes it.
+grep -E '(warning|error):' "$log" | sort -u
+if ((tidy_status != 0)); then
+  grep -q -E '(warning|error):' "$log" || cat "$log"
+  echo "lint.sh: clang-tidy failed on ${#sources[@]} sources ($((SECONDS - start)) s)"
+  status=1
+else
+  echo "lint.sh: clang-tidy passed on ${#sources[@]} sources ($((SECONDS - start)) s, $jobs jobs)"
+fi
+exit $status
