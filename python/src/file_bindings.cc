@@ -136,7 +136,7 @@ std::vector<Model> ReadModels(const Source& s, const std::vector<std::string>& m
 }
 
 std::string FormatName(Model::Format format) {
-  return format == Model::Format::kSdf ? "sdf" : "urdf";
+  return ToString(format);
 }
 
 std::string GeometryTypeName(Geometry::Type type) {
