@@ -92,23 +92,29 @@ std::string SizeProblem(const std::string& type, const Eigen::Vector3d& s) {
 
 }  // namespace
 
-std::optional<MeshSolid> MeshSolids::Get(Context* context, const Node& node, std::string* uri,
-                                         Eigen::Vector3d* scale, std::string* error) {
+std::optional<MeshSolid> MeshSolids::Get(Context* context, const Node& node, bool compute,
+                                         std::string* uri, Eigen::Vector3d* scale,
+                                         std::string* error) {
   auto [it, inserted] = entries_.try_emplace(&node);
   Entry& entry = it->second;
+  const std::string* file = node.Find("file");
+  const Element element = MakeElement(*context, node, "");
   if (inserted) {
-    const Element element = MakeElement(*context, node, "");
     if (auto v = Numbers(context, element, "scale", 3, -1, "scale")) {
       entry.scale = Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
     }
-    TriangleMesh mesh;
-    const std::string* file = node.Find("file");
     if (file != nullptr) {
       const Compiler& c = context->compiler;
       const std::string& dir = !c.meshdir.empty() ? c.meshdir : c.assetdir;
       const std::filesystem::path path(*file);
       entry.uri =
           path.is_absolute() || dir.empty() ? *file : (std::filesystem::path(dir) / path).string();
+    }
+  }
+  if (compute && !entry.computed) {
+    entry.computed = true;
+    TriangleMesh mesh;
+    if (file != nullptr) {
       std::filesystem::path full(entry.uri);
       if (full.is_relative() && model_file_ != "<stdin>") {
         full = std::filesystem::path(model_file_).parent_path() / full;
@@ -212,8 +218,8 @@ GeomReading ReadGeom(Context* context, const Element& element, bool want_mass, M
       return reading;
     }
     std::string error;
-    const std::optional<MeshSolid> solid =
-        meshes->Get(context, *mesh->second, &reading.geometry.uri, &reading.geometry.scale, &error);
+    const std::optional<MeshSolid> solid = meshes->Get(
+        context, *mesh->second, want_mass, &reading.geometry.uri, &reading.geometry.scale, &error);
     if (!want_mass) return reading;
     if (!solid) {
       reading.mass_error = error;

@@ -40,8 +40,8 @@ class MeshSolids {
   MeshSolids(const std::string& model_file, MeshMethod method)
       : model_file_(model_file), method_(method) {}
   /// The solid of the <mesh> asset `node` (its file or vertex/face, with its scale), or nullopt
-  /// and *error.
-  std::optional<MeshSolid> Get(Context* context, const Node& node, std::string* uri,
+  /// and *error; the mesh is read and integrated only when `compute` (else only uri and scale).
+  std::optional<MeshSolid> Get(Context* context, const Node& node, bool compute, std::string* uri,
                                Eigen::Vector3d* scale, std::string* error);
 
  private:
@@ -49,6 +49,7 @@ class MeshSolids {
     std::optional<MeshSolid> solid;
     std::string uri, error;
     Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+    bool computed = false;
   };
   std::string model_file_;
   MeshMethod method_;
