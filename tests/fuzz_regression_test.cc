@@ -53,6 +53,10 @@ TEST(FuzzRegressionTest, UrdfSeedsAndFoundInputsPass) {
 
 TEST(FuzzRegressionTest, SdfSeedsAndFoundInputsPass) { RunAll("sdf", {"sdf", "regressions/sdf"}); }
 
+TEST(FuzzRegressionTest, MjcfSeedsAndFoundInputsPass) {
+  RunAll("mjcf", {"mjcf", "regressions/mjcf"});
+}
+
 TEST(FuzzRegressionTest, FixSeedsAndFoundInputsReadBackAndAreIdempotent) {
   RunAll("fix", {"urdf", "sdf", "regressions/fix"});
 }

@@ -82,7 +82,7 @@ TEST(ModelReaderTest, TextThatIsNeitherUrdfNorSdfIsAnError) {
   const ReadResult other = ReadModelString("<world/>", "w.xml");
   ASSERT_EQ(other.errors.size(), 1u);
   EXPECT_EQ(other.errors[0].location.file, "w.xml");
-  EXPECT_NE(other.errors[0].message.find("neither URDF nor SDF"), std::string::npos);
+  EXPECT_NE(other.errors[0].message.find("neither URDF, SDF nor MJCF"), std::string::npos);
   const ReadResult empty = ReadModelString("", "e.urdf");
   ASSERT_EQ(empty.errors.size(), 1u);
   EXPECT_NE(empty.errors[0].message.find("empty"), std::string::npos);

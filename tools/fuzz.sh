@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target of tests/fuzz for SECONDS seconds under ASan + UBSan:
-#   tools/fuzz.sh urdf|sdf|fix|inertia SECONDS [extra libFuzzer flags...]
+#   tools/fuzz.sh urdf|sdf|mjcf|fix|inertia SECONDS [extra libFuzzer flags...]
 # Builds build-fuzz/ (or $FUZZ_BUILD_DIR) with clang++-14 (or $FUZZ_CXX) the first time. Seeds:
 # testdata/fuzz/<target>/ (fix: the urdf and sdf seeds); the growing corpus is kept in
 # build-fuzz/corpus/<target>/. A crash, leak, sanitizer report, timeout or broken invariant stops
@@ -9,11 +9,11 @@
 # tests/fuzz_regression_test.cc). Prints one summary line: executions, coverage (cov, ft).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-target=${1:?usage: tools/fuzz.sh urdf|sdf|fix|inertia SECONDS [libFuzzer flags...]}
-seconds=${2:?usage: tools/fuzz.sh urdf|sdf|fix|inertia SECONDS [libFuzzer flags...]}
+target=${1:?usage: tools/fuzz.sh urdf|sdf|mjcf|fix|inertia SECONDS [libFuzzer flags...]}
+seconds=${2:?usage: tools/fuzz.sh urdf|sdf|mjcf|fix|inertia SECONDS [libFuzzer flags...]}
 shift 2
-case $target in urdf | sdf | fix | inertia) ;; *)
-  echo "fuzz.sh: unknown target '$target' (urdf, sdf, fix, inertia)" >&2
+case $target in urdf | sdf | mjcf | fix | inertia) ;; *)
+  echo "fuzz.sh: unknown target '$target' (urdf, sdf, mjcf, fix, inertia)" >&2
   exit 2
   ;;
 esac

@@ -37,7 +37,7 @@ if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   # target runs even when an earlier one fails, so that one failure hides no other; the failed
   # targets are named at the end.
   failed=()
-  for target in urdf sdf fix inertia; do
+  for target in urdf sdf mjcf fix inertia; do
     # A fixed seed: the same inputs on every CI run, so that a run fails only for a real change.
     if ! "$here/tools/fuzz.sh" "$target" "${MASSPROPS_FUZZ_SECONDS:-60}" -seed=1; then
       failed+=("$target")

@@ -25,6 +25,7 @@
 
 // io
 #include "massprops/io/auto_inertia.h"
+#include "massprops/io/mjcf_reader.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/urdf_reader.h"
@@ -40,6 +41,7 @@
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/mass_repair.h"
 #include "massprops/analysis/mass_report.h"
+#include "massprops/analysis/model_diff.h"
 #include "massprops/analysis/materials.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/analysis/target_profile.h"

@@ -132,7 +132,7 @@ MeshResolveOptions MeshResolveFor(const Source& s, const std::vector<std::string
 }
 
 std::string FormatName(Model::Format format) {
-  return format == Model::Format::kSdf ? "sdf" : "urdf";
+  return ToString(format);
 }
 
 std::string GeometryTypeName(Geometry::Type type) {

@@ -90,6 +90,7 @@ std::optional<Model::Format> DetectModelFormat(std::string_view xml) {
       const std::string_view name = xml.substr(i + 1, end - i - 1);
       if (name == "robot") return Model::Format::kUrdf;
       if (name == "sdf") return Model::Format::kSdf;
+      if (name == "mujoco") return Model::Format::kMjcf;
       return std::nullopt;
     }
   }
@@ -150,13 +151,14 @@ ReadResult ReadModelString(const std::string& xml, const std::string& file_name,
   const std::optional<Model::Format> format = DetectModelFormat(xml);
   if (format == Model::Format::kUrdf) return ReadUrdfString(xml, file_name);
   if (format == Model::Format::kSdf) return ReadSdfString(xml, file_name, options.sdf);
+  if (format == Model::Format::kMjcf) return ReadMjcfString(xml, file_name, options.mjcf);
   ReadResult result;
   ReadError error;
   error.location.file = file_name;
   error.location.line = 1;
   error.element = "document";
   error.message = xml.empty() ? "the file is empty"
-                              : "neither URDF nor SDF: the first element is not <robot> or <sdf>";
+                              : "neither URDF, SDF nor MJCF: the first element is not <robot>, <sdf> or <mujoco>";
   if (const char* encoding = Utf16Or32(xml)) {
     error.message = std::string("the file is encoded in ") + encoding +
                     "; massprops reads UTF-8 (convert it, e.g. iconv -f " + encoding + " -t UTF-8)";

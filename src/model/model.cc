@@ -87,4 +87,16 @@ Eigen::Matrix3d RotationFromRollPitchYaw(double roll, double pitch, double yaw) 
       .toRotationMatrix();
 }
 
+const char* ToString(Model::Format format) {
+  switch (format) {
+    case Model::Format::kSdf:
+      return "sdf";
+    case Model::Format::kMjcf:
+      return "mjcf";
+    case Model::Format::kUrdf:
+      break;
+  }
+  return "urdf";
+}
+
 }  // namespace massprops

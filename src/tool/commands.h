@@ -29,6 +29,10 @@ void AddViewCommands(CLI::App& app, std::function<int()>* run);
 /// where it is). Defined in src/tool/cache_command.cc.
 void AddCacheCommands(CLI::App& app, std::function<int()>* run);
 
+/// `diff` (mass properties of two model files compared: per link, welded group and whole robot).
+/// Defined in src/tool/diff_command.cc.
+void AddDiffCommands(CLI::App& app, std::function<int()>* run);
+
 /// Writes the HTML view of `files` to standard output (`report --format html`); returns the exit
 /// code (0 written; 2 a file could not be read, a bad configuration file, or a write error).
 int RunHtmlView(const std::vector<std::string>& files, const std::vector<std::string>& model_paths,

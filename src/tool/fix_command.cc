@@ -233,6 +233,13 @@ bool ReadFixInput(const FixArgs& args, FixInput* input) {
     if (input->read.errors.empty()) std::cerr << input->name << ": no model found\n";
     return false;
   }
+  if (input->read.models.front().format == Model::Format::kMjcf) {
+    PrintReaderFindings(input->read, CheckOptions{});
+    std::cerr << input->name
+              << ": error: fix does not patch MJCF yet (docs/mjcf.md); nothing written. `massprops "
+                 "check` and `massprops report` read it.\n";
+    return false;
+  }
   return true;
 }
 

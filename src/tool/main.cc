@@ -138,7 +138,7 @@ bool CanListSubfolder(const fs::path& dir, int* skipped) {
 }
 
 // Files of a directory tree that look like robot models, sorted. *.urdf and *.sdf are always
-// taken; *.world and *.xml only when their root element is <robot> or <sdf>. Hidden folders are
+// taken; *.world and *.xml only when their root element is <robot>, <sdf> or <mujoco>. Hidden folders are
 // skipped; symbolic links to folders are not followed.
 // Extensions are matched case-insensitively (.URDF, .Sdf). Every other regular file (outside
 // hidden folders) and every subfolder that cannot be listed is counted in *skipped.
@@ -399,6 +399,7 @@ FileResult CheckFile(const std::string& file, const Settings& settings) {
   result.path = file == "-" ? "<stdin>" : file;
   massprops::ReadOptions read_options;
   read_options.sdf.model_paths = settings.model_paths;
+  read_options.mjcf.mujoco_mesh_inertia = settings.target == massprops::Target::kMujoco;
   const ReadResult read = massprops::ReadModelFile(file, read_options);
   result.errors = read.errors;
   for (const ReadError& warning : read.warnings) {
@@ -416,7 +417,7 @@ FileResult CheckFile(const std::string& file, const Settings& settings) {
     result.findings.push_back(std::move(finding));
   }
   for (const massprops::Model& model : read.models) {
-    result.format = model.format == massprops::Model::Format::kSdf ? "sdf" : "urdf";
+    result.format = massprops::ToString(model.format);
     result.models.push_back(model.name);
     CheckOptions check_options = settings.options;
     massprops::cli::UseGeometryShapes(model, settings.model_paths, &check_options,
@@ -533,9 +534,9 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
       "Check models for mass properties that no real body could have, and for CAD-export defects. "
       "With no FILE, checks the bundled example model.");
   check->add_option("FILE", args->files,
-                    "URDF or SDF files (detected by content), '-' for standard input, or folders "
-                    "(searched recursively for *.urdf, *.sdf, and *.world/*.xml with a <robot> or "
-                    "<sdf> root)");
+                    "URDF, SDF or MJCF files (detected by content), '-' for standard input, or "
+                    "folders (searched recursively for *.urdf, *.sdf, and *.world/*.xml with a "
+                    "<robot>, <sdf> or <mujoco> root)");
   if (wanted.Wants({"--format"})) {
     check->add_option("--format", args->format, "Output format")
         ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
@@ -671,6 +672,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddReportCommands(app, &run);
     massprops::cli::AddFixCommands(app, &run);
     massprops::cli::AddViewCommands(app, &run);
+    massprops::cli::AddDiffCommands(app, &run);
     massprops::cli::AddTraceCommand(app, &run);
     massprops::cli::AddCacheCommands(app, &run);
     massprops::cli::AddExplainCommand(app, &run);

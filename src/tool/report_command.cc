@@ -189,6 +189,7 @@ int RunReport(const ReportArgs& args) {
                                                          : MassReportFormat::kText;
   ReadOptions read_options;
   read_options.sdf.model_paths = args.model_paths;
+  read_options.mjcf.mujoco_mesh_inertia = args.target == "mujoco";
   std::vector<ModelMassReport> reports;
   std::vector<MassReportError> errors;
   MeshCache mesh_cache;

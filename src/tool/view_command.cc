@@ -438,7 +438,7 @@ json ModelJson(const Model& model, const std::vector<Finding>& reader_findings,
 
   return {{"name", model.name},
           {"file", model.file},
-          {"format", model.format == Model::Format::kSdf ? "sdf" : "urdf"},
+          {"format", ToString(model.format)},
           {"root_link", model.root_link},
           {"static", model.is_static},
           {"links", std::move(links)},

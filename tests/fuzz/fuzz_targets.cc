@@ -11,6 +11,7 @@
 #include "massprops/analysis/repair.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/rotational_inertia.h"
+#include "massprops/io/mjcf_reader.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/urdf_reader.h"
@@ -101,12 +102,34 @@ std::string FuzzSdf(const std::uint8_t* data, std::size_t size) {
   return CheckMergeFixed(text, read);
 }
 
+std::string FuzzMjcf(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  for (const bool mujoco : {false, true}) {
+    MjcfReadOptions options;
+    options.max_include_depth = 0;
+    options.mujoco_mesh_inertia = mujoco;
+    const ReadResult read = ReadMjcfString(text, "fuzz.xml", options);
+    CheckEverything(read);
+    for (const Model& model : read.models) {
+      if (model.links.empty() || model.links[0].name != "world") return "no world link first";
+      if (model.joints.size() + 1 != model.links.size()) return "not one joint per body";
+      for (const Joint& joint : model.joints) {
+        if (model.FindLink(joint.parent) < 0 || model.FindLink(joint.child) < 0) {
+          return "joint '" + joint.name + "' names a link the model does not have";
+        }
+      }
+    }
+  }
+  return "";
+}
+
 std::string FuzzFix(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   const ReadOptions options = NoEnvironment();
   const ReadResult read = ReadModelString(text, "fuzz.model", options);
   if (!read.ok() || read.models.empty()) return "";
   const Model::Format format = read.models.front().format;
+  if (format == Model::Format::kMjcf) return "";  // fix does not patch MJCF (docs/mjcf.md).
   const PatchResult first = PatchModelText(text, format, PlanAll(read));
   if (first.text == text) return "";
   const ReadResult reread = ReadModelString(first.text, "fuzz.model", options);
@@ -198,6 +221,7 @@ std::string FuzzInertia(const std::uint8_t* data, std::size_t size) {
 FuzzFunction FindFuzzTarget(const std::string& name) {
   if (name == "urdf") return &FuzzUrdf;
   if (name == "sdf") return &FuzzSdf;
+  if (name == "mjcf") return &FuzzMjcf;
   if (name == "fix") return &FuzzFix;
   if (name == "inertia") return &FuzzInertia;
   return nullptr;

@@ -19,6 +19,11 @@ std::string FuzzUrdf(const std::uint8_t* data, std::size_t size);
 /// merge-fixed, whose result (when it merges) must read again with the merged links gone.
 std::string FuzzSdf(const std::uint8_t* data, std::size_t size);
 
+/// MJCF text (includes refused: max_include_depth 0) → ReadMjcfString, with the exact and the
+/// MuJoCo mesh methods → every check, as FuzzUrdf. A model read must have one link per <body>
+/// plus the world, and every joint's parent and child among them.
+std::string FuzzMjcf(const std::uint8_t* data, std::size_t size);
+
 /// Model text (URDF or SDF, detected by content) → checks → PlanRepairs → PatchModelText. The
 /// patched text must read again when the input read, and a second fix of it must change nothing.
 std::string FuzzFix(const std::uint8_t* data, std::size_t size);
@@ -29,7 +34,7 @@ std::string FuzzFix(const std::uint8_t* data, std::size_t size);
 /// inertia shifted away from its center of mass stays valid.
 std::string FuzzInertia(const std::uint8_t* data, std::size_t size);
 
-/// The target by name ("urdf", "sdf", "fix", "inertia"), or nullptr.
+/// The target by name ("urdf", "sdf", "mjcf", "fix", "inertia"), or nullptr.
 using FuzzFunction = std::string (*)(const std::uint8_t*, std::size_t);
 FuzzFunction FindFuzzTarget(const std::string& name);
 

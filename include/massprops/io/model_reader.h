@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "massprops/io/mjcf_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/model/model.h"
 
@@ -19,11 +20,13 @@ inline constexpr std::size_t kMaxModelFileBytes = std::size_t{256} << 20;
 
 struct ReadOptions {
   SdfReadOptions sdf;  ///< Where SDF <include>s are looked up.
+  MjcfReadOptions mjcf;  ///< How MJCF mesh geoms are integrated.
   /// Inputs larger than this many bytes are refused with a ReadError.
   std::size_t max_file_bytes = kMaxModelFileBytes;
 };
 
-/// The format of a model text judged by its first element: <robot> is URDF, <sdf> is SDF.
+/// The format of a model text judged by its first element: <robot> is URDF, <sdf> is SDF,
+/// <mujoco> is MJCF.
 /// Skips a byte order mark, white space, the XML declaration, processing instructions, comments
 /// and a DOCTYPE. nullopt when the first element is something else or there is none.
 /// Cost: proportional to the text before the first element.
@@ -37,8 +40,8 @@ std::optional<ReadError> ReadInputFile(const std::string& path, std::size_t max_
                                        std::string* contents);
 
 /// Reads the model file at `path` ("-" = standard input), detects its format with
-/// DetectModelFormat and returns what ReadUrdfString or ReadSdfString returns. A text that is
-/// neither URDF nor SDF is a ReadError. Never throws for bad input.
+/// DetectModelFormat and returns what ReadUrdfString, ReadSdfString or ReadMjcfString returns. A
+/// text that is none of them is a ReadError. Never throws for bad input.
 ReadResult ReadModelFile(const std::string& path, const ReadOptions& options = {});
 
 /// Same as ReadModelFile for text already in memory; `file_name` names it in SourceLocations

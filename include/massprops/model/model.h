@@ -143,7 +143,7 @@ struct Joint {
 };
 
 struct Model {
-  enum class Format { kUrdf, kSdf };
+  enum class Format { kUrdf, kSdf, kMjcf };
   std::string name;
   Format format = Format::kUrdf;
   std::string file;         ///< The path as given.
@@ -162,6 +162,9 @@ struct Model {
   /// Index of the joint whose child is that link, or -1 (the root, or a free-floating SDF link).
   int FindParentJoint(const std::string& child_link) const;
 };
+
+/// "urdf", "sdf" or "mjcf": the names JSON and Python use.
+const char* ToString(Model::Format format);
 
 /// A problem in the input: the file could not be read, parsed, or understood. `element` names the
 /// XML element (e.g. "<inertia> of link 'arm'"); `message` says what is wrong and quotes the text.

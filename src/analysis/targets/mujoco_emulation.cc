@@ -50,6 +50,8 @@ class MujocoEmulator {
       : model_(model), options_(options) {}
 
   MujocoPrediction Run() {
+    // The MJCF reader compiles as MuJoCo does and reports its refusals (mjcf_reader.h).
+    if (model_.format == Model::Format::kMjcf) return out_;
     if (model_.format != Model::Format::kUrdf) {
       out_.unsupported.push_back("only URDF models are predicted (MuJoCo reads SDF not at all)");
       return out_;
