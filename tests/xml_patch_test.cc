@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
@@ -224,6 +226,112 @@ TEST(DiffLinesTest, ReportsRemovedAndAddedLineNumbers) {
   const LineChanges changes = DiffLines("a\nb\nc\nd\n", "a\nB\nc\nx\nd\n");
   EXPECT_EQ(changes.removed, std::vector<int>({2}));
   EXPECT_EQ(changes.added, std::vector<int>({2, 4}));
+}
+
+// MJCF (issue 36): the repair's Inertial is written into the <body>'s <inertial> attributes.
+Repair MjcfRepair(const std::string& body, int line, double mass, const Eigen::Vector3d& pos,
+                  const Eigen::Matrix3d& R, double ixx, double iyy, double izz, double ixy = 0) {
+  Repair r;
+  r.link = body;
+  r.link_line = line;
+  r.after.mass = mass;
+  r.after.X_BBi.p_AB = pos;
+  r.after.X_BBi.R_AB = R;
+  r.after.ixx = ixx;
+  r.after.iyy = iyy;
+  r.after.izz = izz;
+  r.after.ixy = ixy;
+  return r;
+}
+
+TEST(PatchMjcfTest, OnlyTheNumbersThatChangeAreRewritten) {
+  const std::string before =
+      "<mujoco model='m'>  <!-- <body name=\"arm\"> -->\n"
+      "  <worldbody>\n"
+      "    <body name='arm' pos='0 0 1'>\n"
+      "      <inertial  mass='1.000' pos='0 0 0.5' diaginertia='0.1 0.1 0.5'/>\n"
+      "    </body>\n"
+      "  </worldbody>\n"
+      "</mujoco>\n";
+  // mass 1 -> 2, izz 0.5 -> 0.2: "1.000" and "0.5" of diaginertia change; "0 0 0.5" is kept.
+  const Repair r = MjcfRepair("arm", 3, 2, {0, 0, 0.5}, Eigen::Matrix3d::Identity(), 0.1, 0.1, 0.2);
+  const PatchResult result = PatchModelText(before, Model::Format::kMjcf, {r});
+  ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
+  std::string expected = before;
+  expected.replace(expected.find("1.000"), 5, "2");
+  expected.replace(expected.find("0.1 0.5'/>") + 4, 3, "0.2");
+  EXPECT_EQ(result.text, expected);
+}
+
+TEST(PatchMjcfTest, ATensorNotDiagonalWithoutOrientationBecomesFullinertia) {
+  const std::string before =
+      "<mujoco>\n<worldbody>\n<body name=\"b\">\n"
+      "<inertial mass=\"1\" pos=\"0 0 0\" diaginertia=\"1 1 1\"/>\n</body>\n</worldbody>\n"
+      "</mujoco>\n";
+  const Repair r = MjcfRepair("b", 3, 1, {0, 0, 0}, Eigen::Matrix3d::Identity(), 1, 2, 2, 0.25);
+  const PatchResult result = PatchModelText(before, Model::Format::kMjcf, {r});
+  ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
+  // MuJoCo's order: M11 M22 M33 M12 M13 M23 (the MJCF reference, <inertial fullinertia>).
+  EXPECT_NE(result.text.find("<inertial mass=\"1\" pos=\"0 0 0\" fullinertia=\"1 2 2 0.25 0 0\"/>"),
+            std::string::npos)
+      << result.text;
+}
+
+TEST(PatchMjcfTest, ATensorNotDiagonalInAWrittenOrientationGetsItsPrincipalAxesAsQuat) {
+  const std::string before =
+      "<mujoco>\n<worldbody>\n<body name=\"b\">\n"
+      "<inertial mass=\"1\" pos=\"0 0 0\" euler=\"0 0 90\" diaginertia=\"1 1 1\"/>\n</body>\n"
+      "</worldbody>\n</mujoco>\n";
+  // The frame written is 90° about z; the repaired tensor in it has a product of inertia.
+  const Eigen::Matrix3d Rz = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).matrix();
+  const Repair r = MjcfRepair("b", 3, 1, {0, 0, 0}, Rz, 1, 2, 2, 0.25);
+  const PatchResult result = PatchModelText(before, Model::Format::kMjcf, {r});
+  ASSERT_TRUE(result.errors.empty()) << result.errors[0].message;
+  ASSERT_EQ(result.text.find("euler"), std::string::npos) << result.text;
+  const std::size_t quat = result.text.find("quat=\"");
+  const std::size_t diag = result.text.find("diaginertia=\"");
+  ASSERT_NE(quat, std::string::npos);
+  ASSERT_NE(diag, std::string::npos);
+  double q[4], d[3];
+  ASSERT_EQ(
+      std::sscanf(result.text.c_str() + quat, "quat=\"%lf %lf %lf %lf", &q[0], &q[1], &q[2], &q[3]),
+      4);
+  ASSERT_EQ(
+      std::sscanf(result.text.c_str() + diag, "diaginertia=\"%lf %lf %lf", &d[0], &d[1], &d[2]), 3);
+  // What the file now says, R diag(d) R^T, is the repair's tensor in the body frame, Rz I Rz^T.
+  Eigen::Matrix3d I;
+  I << 1, 0.25, 0, 0.25, 2, 0, 0, 0, 2;
+  const Eigen::Matrix3d R = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
+  const Eigen::Matrix3d written =
+      R * Eigen::Vector3d(d[0], d[1], d[2]).asDiagonal() * R.transpose();
+  EXPECT_LT((written - Rz * I * Rz.transpose()).norm(), 1e-12);
+}
+
+TEST(PatchMjcfTest, AGeomDerivedInertiaIsRefusedNamingTheDefaultClass) {
+  const std::string before =
+      "<mujoco>\n<default>\n  <default class=\"heavy\">\n    <geom density=\"8000\"/>\n"
+      "  </default>\n</default>\n<worldbody>\n<body name=\"b\">\n"
+      "<geom class=\"heavy\" size=\"0.1\"/>\n</body>\n</worldbody>\n</mujoco>\n";
+  Repair r = MjcfRepair("b", 8, 1, {0, 0, 0}, Eigen::Matrix3d::Identity(), 1, 1, 1);
+  r.inserts_inertial = true;
+  const PatchResult result = PatchModelText(before, Model::Format::kMjcf, {r});
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.text, before);
+  EXPECT_NE(result.errors[0].message.find("<default class='heavy'> at line 4"), std::string::npos)
+      << result.errors[0].message;
+}
+
+TEST(PatchMjcfTest, ACompilerSettingThatChangesTheWrittenNumbersIsRefused) {
+  const std::string before =
+      "<mujoco>\n<compiler settotalmass=\"5\"/>\n<worldbody>\n<body name=\"b\">\n"
+      "<inertial mass=\"1\" pos=\"0 0 0\" diaginertia=\"1 1 1\"/>\n</body>\n</worldbody>\n"
+      "</mujoco>\n";
+  const Repair r = MjcfRepair("b", 4, 2, {0, 0, 0}, Eigen::Matrix3d::Identity(), 1, 1, 1);
+  const PatchResult result = PatchModelText(before, Model::Format::kMjcf, {r});
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_NE(result.errors[0].message.find("<compiler> at line 2 sets settotalmass"),
+            std::string::npos)
+      << result.errors[0].message;
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #include "massprops/output/xml_patch.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -481,6 +483,218 @@ class Patcher {
   std::string error_;
 };
 
+// MJCF: the repairs are written into a <body>'s <inertial> attributes (mass, pos, diaginertia or
+// fullinertia, and an orientation when the repaired tensor is not diagonal in the written one).
+// A body without <inertial> (its mass from its geoms) or a compiler setting that changes the
+// written numbers (inertiafromgeom="true", boundmass, boundinertia, balanceinertia,
+// settotalmass) is refused, naming the element to change.
+class MjcfPatcher {
+ public:
+  explicit MjcfPatcher(std::string_view text) : t_(text) {
+    line_starts_.push_back(0);
+    for (std::size_t i = 0; i < t_.size(); ++i) {
+      if (t_[i] == '\n') line_starts_.push_back(i + 1);
+    }
+    Collect();
+  }
+
+  std::pair<std::vector<Edit>, std::string> EditsFor(const Repair& r) {
+    edits_.clear();
+    error_.clear();
+    if (!compiler_refusal_.empty()) return {{}, compiler_refusal_};
+    std::vector<const Span*> at_line;
+    for (const auto& [name, span] : bodies_) {
+      if (LineOf(span.open_begin) == r.link_line && (name == r.link || name.empty())) {
+        at_line.push_back(&span);
+      }
+    }
+    if (at_line.size() != 1) {
+      return {{},
+              at_line.empty()
+                  ? "this file has no <body name=\"" + r.link + "\"> at line " +
+                        std::to_string(r.link_line) +
+                        " under mujoco/worldbody (an <include>d file is not patched)"
+                  : "several <body> elements start at line " + std::to_string(r.link_line)};
+    }
+    const std::optional<Span> inertial = FirstChild(t_, *at_line.front(), "inertial");
+    if (!inertial || r.inserts_inertial) return {{}, FromGeoms(*at_line.front())};
+    const Inertial& a = r.after;
+    Replace(*inertial, "mass", {a.mass});
+    Replace(*inertial, "pos", {a.X_BBi.p_AB.x(), a.X_BBi.p_AB.y(), a.X_BBi.p_AB.z()});
+    Eigen::Matrix3d I_Bi;
+    I_Bi << a.ixx, a.ixy, a.ixz, a.ixy, a.iyy, a.iyz, a.ixz, a.iyz, a.izz;
+    const Eigen::Matrix3d I_B = a.X_BBi.R_AB * I_Bi * a.X_BBi.R_AB.transpose();
+    if (AttributeValue(t_, *inertial,
+                       "fullinertia")) {  // read in the body axes (orientation unused)
+      Replace(*inertial, "fullinertia",
+              {I_B(0, 0), I_B(1, 1), I_B(2, 2), I_B(0, 1), I_B(0, 2), I_B(1, 2)});
+      return {edits_, error_};
+    }
+    const double largest = I_Bi.diagonal().cwiseAbs().maxCoeff();
+    const bool diagonal = std::abs(a.ixy) <= 1e-12 * largest &&
+                          std::abs(a.ixz) <= 1e-12 * largest && std::abs(a.iyz) <= 1e-12 * largest;
+    if (diagonal) {
+      Replace(*inertial, "diaginertia", {a.ixx, a.iyy, a.izz});
+      return {edits_, error_};
+    }
+    const char* orientation = WrittenOrientation(*inertial);
+    if (orientation == nullptr) {  // no orientation: the body-axes tensor as fullinertia
+      Rename(*inertial, "diaginertia", "fullinertia",
+             {I_B(0, 0), I_B(1, 1), I_B(2, 2), I_B(0, 1), I_B(0, 2), I_B(1, 2)});
+      return {edits_, error_};
+    }
+    // An orientation is written: the principal axes as quat (w x y z), the moments as diaginertia.
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(I_B);
+    Eigen::Matrix3d R = eigen.eigenvectors();
+    if (R.determinant() < 0) R.col(2) = -R.col(2);
+    const Eigen::Quaterniond q(R);
+    Rename(*inertial, orientation, "quat", {q.w(), q.x(), q.y(), q.z()});
+    const Eigen::Vector3d d = eigen.eigenvalues();
+    Replace(*inertial, "diaginertia", {d.x(), d.y(), d.z()});
+    return {edits_, error_};
+  }
+
+ private:
+  int LineOf(std::size_t pos) const {
+    return static_cast<int>(std::upper_bound(line_starts_.begin(), line_starts_.end(), pos) -
+                            line_starts_.begin());
+  }
+
+  std::string Text(const std::pair<std::size_t, std::size_t>& range) const {
+    return std::string(t_.substr(range.first, range.second - range.first));
+  }
+
+  const char* WrittenOrientation(const Span& inertial) const {
+    for (const char* name : {"quat", "axisangle", "euler", "xyaxes", "zaxis"}) {
+      if (AttributeValue(t_, inertial, name)) return name;
+    }
+    return nullptr;
+  }
+
+  // Every <body> under mujoco/worldbody (iteratively: a hostile file may nest deeply), every
+  // <default class> under mujoco/default, and the compiler settings that change written numbers.
+  void Collect() {
+    std::size_t i = 0;
+    std::optional<Span> root;
+    while ((i = t_.find('<', i)) != kNpos) {
+      const std::size_t special = SkipSpecial(t_, i);
+      if (special == kNpos) {
+        root = ElementAt(t_, i);
+        break;
+      }
+      i = special;
+    }
+    if (!root || root->name != "mujoco") return;
+    std::vector<Span> pending;
+    for (const Span& child : Children(t_, *root)) {
+      if (child.name == "worldbody" || child.name == "default") pending.push_back(child);
+      if (child.name == "compiler") CompilerRefusal(child);
+    }
+    while (!pending.empty()) {
+      const Span parent = pending.back();
+      pending.pop_back();
+      for (const Span& child : Children(t_, parent)) {
+        const auto name = AttributeValue(t_, child, child.name == "default" ? "class" : "name");
+        if (child.name == "body") bodies_.push_back({name ? Text(*name) : "", child});
+        if (child.name == "default" && name) defaults_.push_back({Text(*name), child});
+        if (child.name == "body" || child.name == "default") pending.push_back(child);
+      }
+    }
+  }
+
+  void CompilerRefusal(const Span& compiler) {
+    const std::string where = "<compiler> at line " + std::to_string(LineOf(compiler.open_begin));
+    if (auto v = AttributeValue(t_, compiler, "inertiafromgeom"); v && Text(*v) == "true") {
+      compiler_refusal_ = where + " sets inertiafromgeom=\"true\": MuJoCo ignores every " +
+                          "<inertial>, so the geoms' mass or density is what to change";
+    }
+    for (const char* name : {"boundmass", "boundinertia", "settotalmass", "balanceinertia"}) {
+      const auto v = AttributeValue(t_, compiler, name);
+      if (!v || !compiler_refusal_.empty() || Text(*v) == "false" || Text(*v) == "0") continue;
+      compiler_refusal_ = where + " sets " + name + "=\"" + Text(*v) +
+                          "\": the compiled mass properties are not the written ones, so fix " +
+                          "does not patch them; remove it or change the <inertial> by hand";
+    }
+  }
+
+  // The refusal for a body whose mass comes from its geoms, naming the <default> classes (with
+  // their lines) that give them a mass or density when there are any.
+  std::string FromGeoms(const Span& body) const {
+    std::string message =
+        "the body has no <inertial>: MuJoCo derives its mass properties from its geoms "
+        "(inertiafromgeom); fix does not patch geoms: change their mass or density";
+    std::vector<std::string> classes;
+    for (const Span& child : Children(t_, body)) {
+      if (child.name != "geom") continue;
+      if (auto c = AttributeValue(t_, child, "class")) classes.push_back(Text(*c));
+    }
+    if (auto c = AttributeValue(t_, body, "childclass")) classes.push_back(Text(*c));
+    std::string named;
+    for (const auto& [name, span] : defaults_) {
+      if (std::find(classes.begin(), classes.end(), name) == classes.end()) continue;
+      const std::optional<Span> geom = FirstChild(t_, span, "geom");
+      if (!geom || named.find("'" + name + "'") != std::string::npos) continue;
+      if (!AttributeValue(t_, *geom, "mass") && !AttributeValue(t_, *geom, "density")) continue;
+      named += (named.empty() ? "" : ", ") + std::string("<default class='") + name +
+               "'> at line " + std::to_string(LineOf(geom->open_begin));
+    }
+    if (!named.empty()) message += "; their mass or density comes from " + named;
+    return message;
+  }
+
+  // Rewrites the numbers of attribute `name` that differ from `values` (the others are kept).
+  void Replace(const Span& e, const char* name, const std::vector<double>& values) {
+    const auto value = AttributeValue(t_, e, name);
+    if (!value) {
+      if (error_.empty()) error_ = std::string("attribute ") + name + " not found on <inertial>";
+      return;
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> tokens;
+    for (std::size_t i = value->first; i < value->second;) {
+      while (i < value->second && IsSpace(t_[i])) ++i;
+      if (i >= value->second) break;
+      const std::size_t b = i;
+      while (i < value->second && !IsSpace(t_[i])) ++i;
+      tokens.push_back({b, i});
+    }
+    if (tokens.size() != values.size()) {
+      if (error_.empty()) {
+        error_ = std::string(name) + " at line " + std::to_string(LineOf(value->first)) + " has " +
+                 std::to_string(tokens.size()) + " numbers, not " + std::to_string(values.size());
+      }
+      return;
+    }
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      const std::string old = Text(tokens[k]);
+      if (std::strtod(old.c_str(), nullptr) == values[k]) continue;
+      edits_.push_back(
+          {tokens[k].first, tokens[k].second - tokens[k].first, FormatShortest(values[k])});
+    }
+  }
+
+  // Replaces attribute `from` (name and value) by `to`="values".
+  void Rename(const Span& e, const char* from, const char* to, const std::vector<double>& values) {
+    const auto value = AttributeValue(t_, e, from);
+    const std::size_t name_begin = value ? t_.rfind(from, value->first) : kNpos;
+    if (!value || name_begin == kNpos) {
+      if (error_.empty()) error_ = std::string("attribute ") + from + " not found on <inertial>";
+      return;
+    }
+    std::string text = std::string(to) + "=\"";
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      text += (k ? " " : "") + FormatShortest(values[k]);
+    }
+    edits_.push_back({name_begin, value->second + 1 - name_begin, text + "\""});
+  }
+
+  std::string_view t_;
+  std::vector<std::size_t> line_starts_;
+  std::vector<std::pair<std::string, Span>> bodies_, defaults_;
+  std::string compiler_refusal_;
+  std::vector<Edit> edits_;
+  std::string error_;
+};
+
 // Lines of a text, each with its terminator.
 std::vector<std::string_view> SplitLines(std::string_view text) {
   std::vector<std::string_view> lines;
@@ -562,10 +776,12 @@ std::vector<Step> MyersDiff(const std::vector<std::string_view>& a,
 PatchResult PatchModelText(std::string_view original, Model::Format format,
                            const std::vector<Repair>& repairs, const PatchOptions& options) {
   Patcher patcher(original, format, options.included);
+  std::optional<MjcfPatcher> mjcf;
+  if (format == Model::Format::kMjcf) mjcf.emplace(original);
   PatchResult result;
   std::vector<Edit> edits;
   for (const Repair& r : repairs) {
-    auto [repair_edits, error] = patcher.EditsFor(r);
+    auto [repair_edits, error] = mjcf ? mjcf->EditsFor(r) : patcher.EditsFor(r);
     if (!error.empty()) {
       result.errors.push_back({r.link, r.link_line, error});
       continue;

@@ -233,13 +233,6 @@ bool ReadFixInput(const FixArgs& args, FixInput* input) {
     if (input->read.errors.empty()) std::cerr << input->name << ": no model found\n";
     return false;
   }
-  if (input->read.models.front().format == Model::Format::kMjcf) {
-    PrintReaderFindings(input->read, CheckOptions{});
-    std::cerr << input->name
-              << ": error: fix does not patch MJCF yet (docs/mjcf.md); nothing written. `massprops "
-                 "check` and `massprops report` read it.\n";
-    return false;
-  }
   return true;
 }
 
@@ -774,9 +767,10 @@ void AddFixCommands(CLI::App& app, std::function<int()>* run) {
       "the origin, masses from geometry) only with --apply RULE,... or --from-geometry. Every "
       "repair is checked again; one that leaves or creates a finding is not written. "
       "Default: the corrected file on standard output.");
-  fix->add_option("FILE", args->file,
-                  "URDF or SDF file (detected by content), '-', or a xacro package's top .xacro "
-                  "file (its sources are repaired: docs/xacro.md)");
+  fix->add_option(
+      "FILE", args->file,
+      "URDF, SDF or MJCF file (detected by content), '-', or a xacro package's top .xacro "
+      "file (its sources are repaired: docs/xacro.md)");
   AddXacroOptions(fix, &args->xacro);
   fix->add_flag("--dry-run", args->dry_run,
                 "Print what would change (rule, link, old -> new, why); write nothing");

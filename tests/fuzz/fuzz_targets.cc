@@ -129,7 +129,6 @@ std::string FuzzFix(const std::uint8_t* data, std::size_t size) {
   const ReadResult read = ReadModelString(text, "fuzz.model", options);
   if (!read.ok() || read.models.empty()) return "";
   const Model::Format format = read.models.front().format;
-  if (format == Model::Format::kMjcf) return "";  // fix does not patch MJCF (docs/mjcf.md).
   const PatchResult first = PatchModelText(text, format, PlanAll(read));
   if (first.text == text) return "";
   const ReadResult reread = ReadModelString(first.text, "fuzz.model", options);
