@@ -16,9 +16,10 @@
 // even at kMinBodyDensity. A URDF link whose group has no mass is judged only when the group
 // moves with mass outboard of it (`mass_outboard`: the massless-link-with-mass-outboard note):
 // a body on a joint that has no mass of its own. The root group of a URDF (fixed to the world or
-// a floating base: the file does not say) and a group welded to the world never move, so their
-// mass never matters; where the group's zero mass makes the mass matrix singular, the error
-// massless-moving-body says it.
+// a floating base: the file does not say) and a group welded to the world (in MJCF, every group
+// that does not move: it is welded to the <worldbody>) never move, so their mass never matters;
+// where the group's zero mass makes the mass matrix singular, the error massless-moving-body says
+// it.
 
 #include <cmath>
 #include <optional>
@@ -67,6 +68,9 @@ void CheckInertialMissing(RuleContext& ctx, const WeldedGroup& group, bool mass_
     return;
   }
   if (WeldedToWorld(ctx, group)) return;
+  // MJCF: the <worldbody> is the root link "world"; a group that does not move is welded to it
+  // (its floor and static scenery): its mass never enters the dynamics.
+  if (ctx.model.format == Model::Format::kMjcf && !group.is_moving) return;
   double group_mass = 0;
   for (int i : group.links) {
     const Link& link = ctx.model.links[i];
