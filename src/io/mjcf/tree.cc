@@ -3,7 +3,7 @@
 // 2.2.2's XML reader and compiler read them (src/xml/xml_native_reader.cc, and
 // mjCAlternative::Set and mjuu_z2quat in src/user/).
 
-#include "io/mjcf_tree.h"
+#include "io/mjcf/tree.h"
 
 #include <tinyxml2.h>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Private to the MJCF reader (src/io/mjcf_*.cc): the XML of an MJCF model as one tree with its
+// Private to the MJCF reader (src/io/mjcf/*.cc): the XML of an MJCF model as one tree with its
 // <include>s expanded in place, every element keeping its file and line; the <compiler>
 // settings; the <default> classes; and the numbers and orientations of attributes, read as
 // MuJoCo 2.2's XML reader reads them.

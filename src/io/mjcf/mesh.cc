@@ -7,7 +7,7 @@
 // exact solid (massprops' mesh_inertia.h). The arithmetic repeats MuJoCo's, float where MuJoCo
 // computes in float, so that the test against libmujoco can hold it to 1e-9.
 
-#include "io/mjcf_mesh.h"
+#include "io/mjcf/mesh.h"
 
 #include <Eigen/Eigenvalues>
 #include <array>

@@ -3,14 +3,13 @@
 // bodies, the inertial frame from the <inertial> or from the geoms, then the bounds and the
 // balancing. What is and is not reproduced is listed in docs/mjcf.md.
 
-#include "massprops/io/mjcf_reader.h"
-
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
-#include "io/mjcf_geom.h"
-#include "io/mjcf_tree.h"
+#include "io/mjcf/geom.h"
+#include "io/mjcf/tree.h"
+#include "massprops/io/mjcf_reader.h"
 
 namespace massprops {
 namespace {

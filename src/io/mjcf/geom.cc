@@ -2,9 +2,9 @@
 // capsule, cylinder, box, ellipsoid: the center, the z axis along it and the half length),
 // pos and orientation, and its mass: `mass` if given (then density = mass / volume), else
 // density (default 1000) × volume; primitives by the formulas of mjCGeom::GetVolume and
-// SetInertia (the exact solids), meshes by mjcf_mesh.h.
+// SetInertia (the exact solids), meshes by mesh.h.
 
-#include "io/mjcf_geom.h"
+#include "io/mjcf/geom.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>

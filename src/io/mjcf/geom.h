@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "io/mjcf_mesh.h"
-#include "io/mjcf_tree.h"
+#include "io/mjcf/mesh.h"
+#include "io/mjcf/tree.h"
 #include "massprops/model/model.h"
 
 namespace massprops {
