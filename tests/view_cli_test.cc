@@ -147,6 +147,32 @@ TEST(ViewCliTest, MeshesAreDrawnFromTheirFilesAndDecimated) {
       << error;
 }
 
+TEST(ViewCliTest, MjcfBodiesAreDrawnWithTheirGeomsAndEquivalentBoxes) {
+  // Gymnasium's ant (testdata/mjcf/MANIFEST.tsv): the world, the torso and 12 leg bodies; the
+  // torso a sphere of radius 0.25 at density 5 (the file's <default> geom), the legs 12 capsules
+  // written with fromto, the floor a plane of the world.
+  const ToolRun run =
+      RunTool(std::string("view '") + MASSPROPS_TESTDATA_DIR + "/mjcf/gymnasium/ant.xml'");
+  ASSERT_EQ(run.exit_code, 0);
+  const json data = PageData(run.output);
+  ASSERT_TRUE(data.is_object());
+  const json& model = data["models"][0];
+  EXPECT_EQ(model["links"].size(), 14u);
+  int capsules = 0;
+  for (const json& link : model["links"]) {
+    for (const json& g : link["geometry"]) capsules += g["type"] == "capsule" ? 1 : 0;
+  }
+  EXPECT_EQ(capsules, 12);
+  const json& torso = Link(model, "torso");
+  ASSERT_EQ(torso["geometry"].size(), 1u);
+  EXPECT_EQ(torso["geometry"][0]["type"], "sphere");
+  EXPECT_DOUBLE_EQ(torso["geometry"][0]["radius"].get<double>(), 0.25);
+  // m = ρ·4/3·π·r³; a solid sphere's equivalent box: m/6·a² = 2/5·m·r², so a = r·√2.4.
+  const double r = 0.25, mass = 5 * 4.0 / 3 * M_PI * r * r * r;
+  EXPECT_NEAR(torso["mass"].get<double>(), mass, 1e-12 * mass);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(torso["box"][i].get<double>(), r * std::sqrt(2.4), 1e-12);
+}
+
 TEST(ViewCliTest, ReportFormatHtmlWritesTheSamePage) {
   const ToolRun view = RunTool("view " + kFixture + " -o -");
   const ToolRun report = RunTool("report --format html " + kFixture);

@@ -265,7 +265,8 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
       "report",
       "Report mass, center of mass, inertia about the center of mass, principal moments and axes "
       "and the equivalent box of every link, welded group and the whole model.");
-  report->add_option("FILE", report_args->files, "URDF or SDF files (detected by content), '-'")
+  report
+      ->add_option("FILE", report_args->files, "URDF, SDF or MJCF files (detected by content), '-'")
       ->required();
   report->add_option("--format", report_args->format, "Output format")
       ->check(CLI::IsMember({"text", "json", "csv", "html"}))

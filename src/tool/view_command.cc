@@ -626,7 +626,7 @@ void AddViewCommands(CLI::App& app, std::function<int()>* run) {
       "view",
       "Write one self-contained HTML page (no network needed) that draws each link's geometry, "
       "its equivalent inertia box or ellipsoid at its center of mass, and its findings.");
-  view->add_option("FILE", args->files, "URDF or SDF files (detected by content), or '-'")
+  view->add_option("FILE", args->files, "URDF, SDF or MJCF files (detected by content), or '-'")
       ->required();
   view->add_option("-o,--output", args->output, "The HTML file to write ('-': standard output)")
       ->type_name("OUT")
