@@ -124,8 +124,9 @@ TEST_F(MeshResolutionCliTest, CheckFindsTheRepositorysPackagesAndSaysHowInJson) 
   run = RunTool("check --no-geometry --format json " + Quote(urdf));
   EXPECT_EQ(nlohmann::json::parse(run.output).at("files").at(0).at("mesh_uris").size(), 0u);
 
-  // --geometry resolves the same way (mesh-unreadable names only the lost mesh).
-  run = RunTool("check --geometry " + Quote(urdf));
+  // --geometry resolves the same way (mesh-unreadable names only the lost mesh; the whole
+  // error, with the folder searched, is the reasoning that --explain prints).
+  run = RunTool("check --geometry --explain " + Quote(urdf));
   EXPECT_NE(run.output.find("[mesh-unreadable]"), std::string::npos) << run.output;
   EXPECT_NE(
       run.output.find("package 'nowhere_pkg' not found in the packages under " + repo.string()),
