@@ -299,8 +299,10 @@ void DefRotationalInertiaAccessors(py::class_<RI>& c) {
 
 // Equality, sum, difference, scaling and the product with a vector of a RotationalInertia.
 void DefRotationalInertiaArithmetic(py::class_<RI>& c) {
-  c.def(py::self == py::self, "Exact equality of all six entries (NaN compares unequal).")
-      .def(py::self != py::self)
+  // pybind11's operator idiom (py::self == py::self) is no redundant expression.
+  c.def(py::self == py::self,  // NOLINT(misc-redundant-expression)
+        "Exact equality of all six entries (NaN compares unequal).")
+      .def(py::self != py::self)  // NOLINT(misc-redundant-expression)
       .def(py::self + py::self, "The sum (about the same point, in the same frame).")
       .def(
           "__sub__", [](const RI& a, const RI& b) { return Checked(a - b, "operator-"); },

@@ -549,7 +549,7 @@ class MjcfPatcher {
     if (R.determinant() < 0) R.col(2) = -R.col(2);
     const Eigen::Quaterniond q(R);
     Rename(*inertial, orientation, "quat", {q.w(), q.x(), q.y(), q.z()});
-    const Eigen::Vector3d d = eigen.eigenvalues();
+    const Eigen::Vector3d& d = eigen.eigenvalues();
     Replace(*inertial, "diaginertia", {d.x(), d.y(), d.z()});
     return {edits_, error_};
   }

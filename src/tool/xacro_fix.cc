@@ -119,8 +119,9 @@ class EditPlanner {
                "not written");
         continue;
       }
+      const Edit& planned_edit = edit;  // a lambda may not capture a structured binding
       const bool duplicate = std::any_of(edits_.begin(), edits_.end(), [&](const Edit& e) {
-        return e.file == edit.file && e.offset == edit.offset;
+        return e.file == planned_edit.file && e.offset == planned_edit.offset;
       });
       if (!duplicate) edits_.push_back(edit);
     }

@@ -99,7 +99,7 @@ std::optional<MeshSolid> MujocoSolid(const TriangleMesh& mesh, const Eigen::Vect
   Eigen::Matrix3d inertia;
   inertia << P[1] + P[2], -P[3], -P[4], -P[3], P[0] + P[2], -P[5], -P[4], -P[5], P[0] + P[1];
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(inertia);
-  const Eigen::Vector3d e = eigen.eigenvalues();  // Ascending.
+  const Eigen::Vector3d& e = eigen.eigenvalues();  // Ascending.
   if (e[0] <= 0) {
     *error = "eigenvalue of mesh inertia must be positive";
     return std::nullopt;
@@ -125,7 +125,7 @@ std::optional<MeshSolid> MujocoSolid(const TriangleMesh& mesh, const Eigen::Vect
   const Eigen::Vector3d moments(box[1] * box[1] + box[2] * box[2],
                                 box[0] * box[0] + box[2] * box[2],
                                 box[0] * box[0] + box[1] * box[1]);
-  const Eigen::Matrix3d V = eigen.eigenvectors();
+  const Eigen::Matrix3d& V = eigen.eigenvectors();
   solid.I_GGcm_G_per_density = V * (solid.volume * moments / 3).asDiagonal() * V.transpose();
   return solid;
 }

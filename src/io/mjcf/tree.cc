@@ -140,7 +140,8 @@ bool ParseBool(const std::string& text, bool* value) {
 
 void ReadCompiler(const Node& node, Context* context) {
   Compiler& c = context->compiler;
-  for (const auto& [key, value] : node.attributes) {
+  for (const auto& [key, attribute] : node.attributes) {
+    const std::string& value = attribute;  // a lambda may not capture a structured binding
     bool ok = true;
     char* end = nullptr;
     const auto number = [&](double* out) {
