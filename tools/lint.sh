@@ -7,16 +7,25 @@
 #   3. clang-tidy            .clang-tidy's checks, readability-function-size among them (no
 #                            function over 120 lines), on every source of src/ and python/src/ in
 #                            BUILD/compile_commands.json, and on the headers they include.
-# Usage: tools/lint.sh [--tidy-only] [BUILD]   (BUILD: a configured build folder, default build/;
-# its generated sources, e.g. the embedded page, are left out). Jobs: MASSPROPS_LINT_JOBS, else
-# nproc. Exit 0 when all pass; else 1, each violation named by file and line.
+# Usage: tools/lint.sh [--tidy-only] [--long-only] [BUILD]   (BUILD: a configured build folder,
+# default build/; its generated sources, e.g. the embedded page, are left out). --long-only:
+# clang-tidy only on the sources where a function could be over the limit, as their text shows
+# (tools/long_blocks.py: a block of 100+ lines in the source or in a header of src/ or include/ it
+# includes): the size check at a fraction of the cost, as the ctest runs it; without it, every
+# source (docs/development.md, "Size limits"). Jobs: MASSPROPS_LINT_JOBS, else nproc. Exit 0 when
+# all pass; else 1, each violation named by file and line.
 set -uo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 tidy_only=0
-if [[ ${1:-} == --tidy-only ]]; then
-  tidy_only=1
+long_only=0
+while [[ ${1:-} == --* ]]; do
+  case $1 in
+    --tidy-only) tidy_only=1 ;;
+    --long-only) long_only=1 ;;
+    *) echo "lint.sh: unknown option $1" >&2; exit 2 ;;
+  esac
   shift
-fi
+done
 build=${1:-$here/build}
 jobs=${MASSPROPS_LINT_JOBS:-$(nproc)}
 status=0
@@ -52,6 +61,31 @@ if ((${#sources[@]} == 0)); then
   echo "lint.sh: no sources of src/ or python/src/ in $build/compile_commands.json" >&2
   exit 1
 fi
+if ((long_only)); then
+  # The sources with a long block, and those that name a header with one (a header that no
+  # source names, included only through other headers: every source).
+  chosen=$(python3 - "$here" "${sources[@]}" <<'PY'
+import os, pathlib, subprocess, sys
+root = pathlib.Path(sys.argv[1])
+sources = [s for s in sys.argv[2:] if os.path.isfile(s)]  # a stale database may name gone files
+headers = [str(p) for d in ("include", "src", "python/src") for p in (root / d).rglob("*.h")]
+scan = [root / "tools" / "long_blocks.py"]
+long = set(subprocess.run([sys.executable, *scan, *sources, *headers], check=True,
+                          capture_output=True, text=True).stdout.split())
+chosen = [s for s in sources if s in long]
+for h in sorted(long - set(sources)):
+    name = os.path.basename(h)
+    users = [s for s in sources if name in open(s, encoding="utf-8", errors="replace").read()]
+    chosen += users if users else sources
+print("\n".join(dict.fromkeys(chosen)))
+PY
+  ) || { echo "lint.sh: tools/long_blocks.py failed" >&2; exit 1; }
+  mapfile -t sources < <(printf '%s' "$chosen" | sed '/^$/d')
+  if ((${#sources[@]} == 0)); then
+    echo "lint.sh: no source holds a block of 100 lines or more: no function can be over 120"
+    exit $status
+  fi
+fi
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 start=$SECONDS
@@ -66,5 +100,6 @@ if ((tidy_status != 0)); then
   status=1
 else
   echo "lint.sh: clang-tidy passed on ${#sources[@]} sources ($((SECONDS - start)) s, $jobs jobs)"
+  if ((long_only)); then printf '  %s\n' "${sources[@]#"$here"/}"; fi
 fi
 exit $status

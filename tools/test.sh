@@ -3,9 +3,10 @@
 #   1. build/        Release, warnings are errors, with the lint (tools/lint.sh: sizes, layers,
 #                    clang-tidy); then the Debian package (tools/package_test.sh) and a ROS 2
 #                    workspace (tools/colcon_test.sh), their objects from ccache;
-#   2. build-asan/   Debug under AddressSanitizer + UndefinedBehaviorSanitizer.
-#   3. build-fuzz/   each libFuzzer target of tests/fuzz for 60 s under ASan + UBSan (clang-14;
-#                    tools/fuzz.sh). Set MASSPROPS_FUZZ_SECONDS to change the time per target.
+#   2. build-asan/   clang-14 at -O1 under AddressSanitizer + UndefinedBehaviorSanitizer: the
+#                    tests, then each libFuzzer target of tests/fuzz for 60 s (tools/fuzz.sh),
+#                    as many at once as there are cores. MASSPROPS_FUZZ_SECONDS: the time per
+#                    target.
 # Set MASSPROPS_SKIP_SANITIZERS=1 to run only the first (no sanitizer build, no fuzzing).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -16,6 +17,28 @@ jobs=$(nproc)
 # hit. A cache of the checkout's own unless CCACHE_DIR names one (docs/development.md, "CI time").
 export CCACHE_DIR=${CCACHE_DIR:-$here/build-ccache}
 BUILD_DIR="$here/build" "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_TESTS=ON
+
+# One clang-14 tree for both sanitizer passes: the tests under ASan + UBSan, and the libFuzzer
+# targets (MASSPROPS_FUZZ=ON instruments everything for coverage too; only the fuzz targets link
+# libFuzzer's main), at -O1 with line tables only (enough for symbolized reports): the library is
+# compiled once for both (docs/development.md, "CI time"). It builds in the background while the
+# Release pass runs its tests and packaging, which leave a core idle much of the time.
+asan=$here/build-asan
+asan_pid=
+if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
+  if [[ -f $asan/CMakeCache.txt ]] && ! grep -q '^MASSPROPS_FUZZ:BOOL=ON' "$asan/CMakeCache.txt"
+  then
+    rm -rf "$asan"  # an older tree of gcc's (before the two passes shared one)
+  fi
+  mkdir -p "$asan"
+  # In a process group of its own (setsid), so that a failure of the Release pass stops it whole.
+  CC=clang-14 CXX=clang++-14 BUILD_DIR="$asan" BUILD_TYPE=Debug setsid "$here/tools/setup.sh" \
+    -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_FUZZ=ON \
+    -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" >"$asan/build.log" 2>&1 &
+  asan_pid=$!
+  trap '[[ -z $asan_pid ]] || kill -- -"$asan_pid" 2>/dev/null || true' EXIT
+fi
+
 (cd "$here/build" && ctest --output-on-failure -j "$jobs")
 
 # As users install it (docs/install.md): the .deb built, judged by lintian and run from its files
@@ -23,28 +46,39 @@ BUILD_DIR="$here/build" "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON -DMASSPROPS
 bash "$here/tools/package_test.sh" -DMASSPROPS_WERROR=ON
 bash "$here/tools/colcon_test.sh" -DMASSPROPS_WERROR=ON
 
-if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
-  BUILD_DIR="$here/build-asan" BUILD_TYPE=Debug "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON \
-    -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_SANITIZE=address,undefined
-  (cd "$here/build-asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-     LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
-     ctest --output-on-failure -j "$jobs" -LE lint)  # the lint ran in the Release pass
-fi
+[[ -n ${MASSPROPS_SKIP_SANITIZERS:-} ]] && exit 0
 
-if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
-  # A short fuzz run: any crash, sanitizer report or broken invariant fails the run (the input is
-  # left in build-fuzz/artifacts/TARGET/; keep it in testdata/fuzz/regressions/TARGET/). Every
-  # target runs even when an earlier one fails, so that one failure hides no other; the failed
-  # targets are named at the end.
-  failed=()
-  for target in urdf sdf mjcf fix inertia; do
-    # A fixed seed: the same inputs on every CI run, so that a run fails only for a real change.
-    if ! "$here/tools/fuzz.sh" "$target" "${MASSPROPS_FUZZ_SECONDS:-60}" -seed=1; then
-      failed+=("$target")
-    fi
-  done
-  if ((${#failed[@]} > 0)); then
-    echo "tools/test.sh: fuzz target(s) failed: ${failed[*]} (inputs in build-fuzz/artifacts/)" >&2
-    exit 1
-  fi
+if ! wait "$asan_pid"; then
+  asan_pid=
+  tail -60 "$asan/build.log"
+  echo "tools/test.sh: the sanitizer build failed (log: build-asan/build.log)" >&2
+  exit 1
+fi
+asan_pid=
+(cd "$asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+   LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
+   ctest --output-on-failure -j "$jobs" -LE lint)  # the lint ran in the Release pass
+
+# A short fuzz run, $jobs targets at a time: any crash, sanitizer report or broken invariant fails
+# the run (the input is left in build-asan/artifacts/TARGET/; keep it in
+# testdata/fuzz/regressions/TARGET/). Every target runs even when an earlier one fails, so that
+# one failure hides no other; the failed targets are named at the end.
+export FUZZ_BUILD_DIR=$asan MASSPROPS_FUZZ_PREBUILT=1
+failed=()
+declare -A running=()
+finish_one() {
+  local pid
+  wait -n -p pid "${!running[@]}" || failed+=("${running[$pid]}")
+  unset "running[$pid]"
+}
+for target in urdf sdf mjcf fix inertia; do
+  ((${#running[@]} < jobs)) || finish_one
+  # A fixed seed: the same start on every CI run, so that a run fails only for a real change.
+  "$here/tools/fuzz.sh" "$target" "${MASSPROPS_FUZZ_SECONDS:-60}" -seed=1 &
+  running[$!]=$target
+done
+while ((${#running[@]} > 0)); do finish_one; done
+if ((${#failed[@]} > 0)); then
+  echo "tools/test.sh: fuzz target(s) failed: ${failed[*]} (inputs in build-asan/artifacts/)" >&2
+  exit 1
 fi
