@@ -98,41 +98,39 @@ const Loaded& Module() {
   return module;
 }
 
-// The module's entry `name` (a function returning a const T*).
+// The module's entry `name` (a function returning a const T*), looked up once per T
+// (thread-safe): each T has one entry.
 template <typename T>
 const T* Entry(const char* name, std::string* error) {
-  const Loaded& module = Module();
-  if (module.handle == nullptr) {
-    if (error != nullptr) *error = module.error;
-    return nullptr;
-  }
-  using EntryFunction = const T* (*)();
-  const auto entry = reinterpret_cast<EntryFunction>(dlsym(module.handle, name));
-  if (entry == nullptr) {
-    if (error != nullptr) *error = std::string(kBackendFile) + " has no entry " + name;
-    return nullptr;
-  }
-  return entry();
+  static std::once_flag once;
+  static std::string failure;
+  static const T* value = nullptr;
+  std::call_once(once, [name] {
+    const Loaded& module = Module();
+    if (module.handle == nullptr) {
+      failure = module.error;
+      return;
+    }
+    using EntryFunction = const T* (*)();
+    const auto entry = reinterpret_cast<EntryFunction>(dlsym(module.handle, name));
+    if (entry == nullptr) {
+      failure = std::string(kBackendFile) + " has no entry " + name;
+      return;
+    }
+    value = entry();
+  });
+  if (value == nullptr && error != nullptr) *error = failure;
+  return value;
 }
 
 }  // namespace
 
 const MeshBackend* GetMeshBackend(std::string* error) {
-  static std::once_flag once;
-  static std::string failure;
-  static const MeshBackend* backend = nullptr;
-  std::call_once(once, [] { backend = Entry<MeshBackend>("massprops_mesh_backend_v1", &failure); });
-  if (backend == nullptr && error != nullptr) *error = failure;
-  return backend;
+  return Entry<MeshBackend>("massprops_mesh_backend_v1", error);
 }
 
 const YamlReader* GetYamlReader(std::string* error) {
-  static std::once_flag once;
-  static std::string failure;
-  static const YamlReader* reader = nullptr;
-  std::call_once(once, [] { reader = Entry<YamlReader>("massprops_yaml_reader_v1", &failure); });
-  if (reader == nullptr && error != nullptr) *error = failure;
-  return reader;
+  return Entry<YamlReader>("massprops_yaml_reader_v1", error);
 }
 
 #endif
