@@ -4,6 +4,8 @@
 #include <mutex>
 #include <string>
 
+#include "io/yaml_scalars.h"
+
 #ifndef MASSPROPS_MESH_BACKEND_STATIC
 #include <dlfcn.h>
 #include <link.h>
@@ -17,6 +19,7 @@ namespace massprops::internal {
 #ifdef MASSPROPS_MESH_BACKEND_STATIC
 
 const MeshBackend* GetMeshBackend(std::string* /*error*/) { return massprops_mesh_backend_v1(); }
+const YamlReader* GetYamlReader(std::string* /*error*/) { return massprops_yaml_reader_v1(); }
 
 #else
 
@@ -67,43 +70,67 @@ std::vector<std::string> Candidates() {
 }
 
 struct Loaded {
-  const MeshBackend* backend = nullptr;
+  void* handle = nullptr;
   std::string error;
 };
 
-Loaded Load() {
+Loaded LoadModule() {
   Loaded loaded;
   std::string tried;
-  void* handle = nullptr;
   for (const std::string& candidate : Candidates()) {
-    handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (handle != nullptr) break;
+    loaded.handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (loaded.handle != nullptr) break;
     const char* why = dlerror();
     tried += (tried.empty() ? "" : "; ") + std::string(why != nullptr ? why : candidate);
   }
-  if (handle == nullptr) {
+  if (loaded.handle == nullptr) {
     loaded.error = "the mesh libraries (" + std::string(kBackendFile) +
                    ", assimp and qhull) cannot be loaded: " + tried;
-    return loaded;
   }
-  using Entry = const MeshBackend* (*)();
-  const auto entry = reinterpret_cast<Entry>(dlsym(handle, "massprops_mesh_backend_v1"));
-  if (entry == nullptr) {
-    loaded.error = std::string(kBackendFile) + " has no entry massprops_mesh_backend_v1";
-    return loaded;
-  }
-  loaded.backend = entry();
   return loaded;  // The handle stays open for the life of the process.
+}
+
+// The module, loaded on the first call (thread-safe).
+const Loaded& Module() {
+  static std::once_flag once;
+  static Loaded module;
+  std::call_once(once, [] { module = LoadModule(); });
+  return module;
+}
+
+// The module's entry `name` (a function returning a const T*), looked up once per T
+// (thread-safe): each T has one entry.
+template <typename T>
+const T* Entry(const char* name, std::string* error) {
+  static std::once_flag once;
+  static std::string failure;
+  static const T* value = nullptr;
+  std::call_once(once, [name] {
+    const Loaded& module = Module();
+    if (module.handle == nullptr) {
+      failure = module.error;
+      return;
+    }
+    using EntryFunction = const T* (*)();
+    const auto entry = reinterpret_cast<EntryFunction>(dlsym(module.handle, name));
+    if (entry == nullptr) {
+      failure = std::string(kBackendFile) + " has no entry " + name;
+      return;
+    }
+    value = entry();
+  });
+  if (value == nullptr && error != nullptr) *error = failure;
+  return value;
 }
 
 }  // namespace
 
 const MeshBackend* GetMeshBackend(std::string* error) {
-  static std::once_flag once;
-  static Loaded loaded;
-  std::call_once(once, [] { loaded = Load(); });
-  if (loaded.backend == nullptr && error != nullptr) *error = loaded.error;
-  return loaded.backend;
+  return Entry<MeshBackend>("massprops_mesh_backend_v1", error);
+}
+
+const YamlReader* GetYamlReader(std::string* error) {
+  return Entry<YamlReader>("massprops_yaml_reader_v1", error);
 }
 
 #endif

@@ -5,6 +5,8 @@
 // never reads a mesh (`massprops check` without --geometry) neither maps those libraries nor
 // binds their symbols: about half of the tool's start-up time (docs/benchmarks.md). Static builds
 // (BUILD_SHARED_LIBS=OFF) link it into the library instead (MASSPROPS_MESH_BACKEND_STATIC).
+// The same module holds yaml-cpp's reading of YAML files (src/io/yaml_scalars.h): its own entry,
+// loaded the first time a xacro package's .yaml file is read.
 
 #include <array>
 #include <cstdint>
