@@ -4,8 +4,6 @@
 #include <mutex>
 #include <string>
 
-#include "io/yaml_scalars.h"
-
 #ifndef MASSPROPS_MESH_BACKEND_STATIC
 #include <dlfcn.h>
 #include <link.h>
@@ -19,7 +17,6 @@ namespace massprops::internal {
 #ifdef MASSPROPS_MESH_BACKEND_STATIC
 
 const MeshBackend* GetMeshBackend(std::string* /*error*/) { return massprops_mesh_backend_v1(); }
-const YamlReader* GetYamlReader(std::string* /*error*/) { return massprops_yaml_reader_v1(); }
 
 #else
 
@@ -98,39 +95,23 @@ const Loaded& Module() {
   return module;
 }
 
-// The module's entry `name` (a function returning a const T*), looked up once per T
-// (thread-safe): each T has one entry.
-template <typename T>
-const T* Entry(const char* name, std::string* error) {
-  static std::once_flag once;
-  static std::string failure;
-  static const T* value = nullptr;
-  std::call_once(once, [name] {
-    const Loaded& module = Module();
-    if (module.handle == nullptr) {
-      failure = module.error;
-      return;
-    }
-    using EntryFunction = const T* (*)();
-    const auto entry = reinterpret_cast<EntryFunction>(dlsym(module.handle, name));
-    if (entry == nullptr) {
-      failure = std::string(kBackendFile) + " has no entry " + name;
-      return;
-    }
-    value = entry();
-  });
-  if (value == nullptr && error != nullptr) *error = failure;
-  return value;
-}
-
 }  // namespace
 
-const MeshBackend* GetMeshBackend(std::string* error) {
-  return Entry<MeshBackend>("massprops_mesh_backend_v1", error);
+void* ModuleSymbol(const char* name, std::string* error) {
+  const Loaded& module = Module();
+  if (module.handle == nullptr) {
+    if (error != nullptr) *error = module.error;
+    return nullptr;
+  }
+  void* symbol = dlsym(module.handle, name);
+  if (symbol == nullptr && error != nullptr) {
+    *error = std::string(kBackendFile) + " has no entry " + name;
+  }
+  return symbol;
 }
 
-const YamlReader* GetYamlReader(std::string* error) {
-  return Entry<YamlReader>("massprops_yaml_reader_v1", error);
+const MeshBackend* GetMeshBackend(std::string* error) {
+  return ModuleEntry<MeshBackend>("massprops_mesh_backend_v1", error);
 }
 
 #endif
