@@ -5,8 +5,8 @@
 
 #include "io/urdf/reader.h"
 
-// The Model comes from urdf::parseURDF (urdfdom) whenever urdfdom returns a model; a tinyxml2 index
-// of the same text gives the line of each element. Only when urdfdom refuses the file does
+// The Model comes from urdf::parseURDF (urdfdom) whenever urdfdom returns a model; an index of the
+// same text gives the line of each element. Only when urdfdom refuses the file does
 // massprops read the elements that carry mass properties itself (LenientReader below).
 // The reader's parts are in src/io/urdf/ (reader.h says which file holds which); this file reads
 // the text's bytes and root and calls them in turn.
@@ -26,21 +26,9 @@ ReadResult Reader::Read(const std::string& xml) {
               ": this is not a text (XML) file");
     return std::move(result_);
   }
-  {
-    // The index is built and the DOM freed before urdfdom builds its own, to keep the peak low.
-    XMLDocument doc(/*processEntities=*/true, tinyxml2::PRESERVE_WHITESPACE);
-    if (!ParseDom(xml, &doc)) return std::move(result_);
-    const XMLElement* robot = doc.FirstChildElement("robot");
-    if (robot == nullptr) {
-      const XMLElement* root = doc.RootElement();
-      Error(LineOf(root), "document",
-            root != nullptr ? std::string("the root element is <") + root->Name() +
-                                  ">, not <robot>: this is not a URDF file"
-                            : std::string("no <robot> element: this is not a URDF file"));
-      return std::move(result_);
-    }
-    BuildIndex(robot);
-  }
+  // The index comes from one light pass over the text when it is written in the XML that URDF
+  // files use (scan.cc), else from a tinyxml2 DOM (index.cc), which also says what is wrong.
+  if (!ScanIndex(xml) && !IndexWithTinyxml2(xml)) return std::move(result_);
 
   std::vector<std::string> errors;
   const urdf::ModelInterfaceSharedPtr urdf = ParseWithUrdfdom(xml, &errors);

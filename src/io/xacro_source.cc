@@ -1,7 +1,6 @@
 #include "io/xacro_source.h"
 
 #include <tinyxml2.h>
-#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cctype>
@@ -10,6 +9,8 @@
 #include <set>
 #include <sstream>
 #include <system_error>
+
+#include "io/yaml_scalars.h"
 
 namespace massprops::xacro {
 namespace {
@@ -140,47 +141,6 @@ class XmlIndexer {
   std::size_t cursor_ = 0;
 };
 
-void WalkYaml(const YAML::Node& node, std::vector<std::string>* path, int depth,
-              std::map<std::size_t, std::size_t>* by_offset, SourceIndex* index, int file,
-              int* visits) {
-  if (++*visits > kMaxYamlVisits || depth > 64) return;
-  if (node.IsMap()) {
-    // PyYAML keeps the last of duplicated keys: walk them all, later ones win by being later.
-    for (auto it = node.begin(); it != node.end(); ++it) {
-      path->push_back(it->first.IsScalar() ? it->first.Scalar() : std::string("?"));
-      WalkYaml(it->second, path, depth + 1, by_offset, index, file, visits);
-      path->pop_back();
-    }
-  } else if (node.IsSequence()) {
-    for (std::size_t i = 0; i < node.size(); ++i) {
-      path->push_back("[" + std::to_string(i) + "]");
-      WalkYaml(node[i], path, depth + 1, by_offset, index, file, visits);
-      path->pop_back();
-    }
-  } else if (node.IsScalar()) {
-    const YAML::Mark mark = node.Mark();
-    if (mark.pos < 0) return;
-    const auto offset = static_cast<std::size_t>(mark.pos);
-    auto found = by_offset->find(offset);
-    if (found != by_offset->end()) {
-      index->yaml[found->second].paths.push_back(*path);
-      return;
-    }
-    YamlScalar scalar;
-    scalar.file = file;
-    scalar.line = mark.line + 1;
-    scalar.offset = offset;
-    scalar.text = node.Scalar();
-    scalar.length = scalar.text.size();
-    const std::string& text = index->files[static_cast<std::size_t>(file)].text;
-    scalar.editable = offset + scalar.length <= text.size() &&
-                      text.compare(offset, scalar.length, scalar.text) == 0;
-    scalar.paths.push_back(*path);
-    (*by_offset)[offset] = index->yaml.size();
-    index->yaml.push_back(std::move(scalar));
-  }
-}
-
 bool ReadFile(const fs::path& path, std::string* out) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
@@ -276,16 +236,25 @@ SourceIndex IndexSources(const std::vector<std::string>& roots,
     const std::string ext = Lower(real.extension().string());
     const std::string& text = index.files.back().text;
     if (ext == ".yaml" || ext == ".yml") {
-      try {
-        const YAML::Node root = YAML::Load(text);
-        std::vector<std::string> path;
-        std::map<std::size_t, std::size_t> by_offset;
-        int visits = 0;
-        WalkYaml(root, &path, 0, &by_offset, &index, id, &visits);
-      } catch (const std::exception& error) {
-        index.errors.push_back(
-            MakeReadError(shown, 0, "", std::string("YAML not read: ") + error.what()));
+      std::string error;
+      const internal::YamlReader* reader = internal::GetYamlReader(&error);
+      std::vector<internal::YamlScalarFound> scalars;
+      // What was walked before yaml-cpp threw is kept, then the error.
+      const bool read =
+          reader != nullptr && reader->read_scalars(text, kMaxYamlVisits, &scalars, &error);
+      for (internal::YamlScalarFound& found_scalar : scalars) {
+        YamlScalar scalar;
+        scalar.file = id;
+        scalar.line = found_scalar.line;
+        scalar.offset = found_scalar.offset;
+        scalar.length = found_scalar.text.size();
+        scalar.editable = scalar.offset + scalar.length <= text.size() &&
+                          text.compare(scalar.offset, scalar.length, found_scalar.text) == 0;
+        scalar.text = std::move(found_scalar.text);
+        scalar.paths = std::move(found_scalar.paths);
+        index.yaml.push_back(std::move(scalar));
       }
+      if (!read) index.errors.push_back(MakeReadError(shown, 0, "", "YAML not read: " + error));
       continue;
     }
     tinyxml2::XMLDocument doc;

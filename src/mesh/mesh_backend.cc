@@ -67,43 +67,51 @@ std::vector<std::string> Candidates() {
 }
 
 struct Loaded {
-  const MeshBackend* backend = nullptr;
+  void* handle = nullptr;
   std::string error;
 };
 
-Loaded Load() {
+Loaded LoadModule() {
   Loaded loaded;
   std::string tried;
-  void* handle = nullptr;
   for (const std::string& candidate : Candidates()) {
-    handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (handle != nullptr) break;
+    loaded.handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (loaded.handle != nullptr) break;
     const char* why = dlerror();
     tried += (tried.empty() ? "" : "; ") + std::string(why != nullptr ? why : candidate);
   }
-  if (handle == nullptr) {
+  if (loaded.handle == nullptr) {
     loaded.error = "the mesh libraries (" + std::string(kBackendFile) +
                    ", assimp and qhull) cannot be loaded: " + tried;
-    return loaded;
   }
-  using Entry = const MeshBackend* (*)();
-  const auto entry = reinterpret_cast<Entry>(dlsym(handle, "massprops_mesh_backend_v1"));
-  if (entry == nullptr) {
-    loaded.error = std::string(kBackendFile) + " has no entry massprops_mesh_backend_v1";
-    return loaded;
-  }
-  loaded.backend = entry();
   return loaded;  // The handle stays open for the life of the process.
+}
+
+// The module, loaded on the first call (thread-safe).
+const Loaded& Module() {
+  static std::once_flag once;
+  static Loaded module;
+  std::call_once(once, [] { module = LoadModule(); });
+  return module;
 }
 
 }  // namespace
 
+void* ModuleSymbol(const char* name, std::string* error) {
+  const Loaded& module = Module();
+  if (module.handle == nullptr) {
+    if (error != nullptr) *error = module.error;
+    return nullptr;
+  }
+  void* symbol = dlsym(module.handle, name);
+  if (symbol == nullptr && error != nullptr) {
+    *error = std::string(kBackendFile) + " has no entry " + name;
+  }
+  return symbol;
+}
+
 const MeshBackend* GetMeshBackend(std::string* error) {
-  static std::once_flag once;
-  static Loaded loaded;
-  std::call_once(once, [] { loaded = Load(); });
-  if (loaded.backend == nullptr && error != nullptr) *error = loaded.error;
-  return loaded.backend;
+  return ModuleEntry<MeshBackend>("massprops_mesh_backend_v1", error);
 }
 
 #endif

@@ -5,9 +5,13 @@
 // never reads a mesh (`massprops check` without --geometry) neither maps those libraries nor
 // binds their symbols: about half of the tool's start-up time (docs/benchmarks.md). Static builds
 // (BUILD_SHARED_LIBS=OFF) link it into the library instead (MASSPROPS_MESH_BACKEND_STATIC).
+// The same module holds yaml-cpp's reading of YAML files (src/io/yaml_scalars.h): its own entry,
+// looked up (ModuleEntry, from src/io/yaml_reader.cc) the first time a xacro package's .yaml
+// file is read.
 
 #include <array>
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -32,6 +36,31 @@ struct MeshBackend {
 /// Returns null and sets *error (if not null) when the shared object cannot be loaded; the
 /// message names it and says why (dlerror).
 const MeshBackend* GetMeshBackend(std::string* error);
+
+#ifndef MASSPROPS_MESH_BACKEND_STATIC
+/// The address of the module's symbol `name` (dlsym), the module loaded on the first call
+/// (thread-safe). Null, with *error (if not null) set, when the module cannot be loaded or has no
+/// such symbol. For the parts above mesh that keep an entry in the module (the YAML reader of
+/// src/io/yaml_scalars.h): see ModuleEntry.
+void* ModuleSymbol(const char* name, std::string* error);
+
+/// The module's entry `name`, a C function returning a const T*, called once per T
+/// (thread-safe); each T has one entry. Null, with *error (if not null) set, when it is missing.
+template <typename T>
+const T* ModuleEntry(const char* name, std::string* error) {
+  static std::once_flag once;
+  static std::string failure;
+  static const T* value = nullptr;
+  std::call_once(once, [name] {
+    using EntryFunction = const T* (*)();
+    if (void* symbol = ModuleSymbol(name, &failure)) {
+      value = reinterpret_cast<EntryFunction>(symbol)();
+    }
+  });
+  if (value == nullptr && error != nullptr) *error = failure;
+  return value;
+}
+#endif
 
 }  // namespace massprops::internal
 

@@ -2,11 +2,11 @@
 /// @file
 /// Reading URDF into a massprops Model through urdfdom (ROS's URDF parser, `urdf::parseURDF`), so
 /// that massprops judges exactly the model that robot_state_publisher, MoveIt and the URDF
-/// importers of Gazebo and Drake load. A light tinyxml2 index of the same text adds the line of
-/// every <link>, <joint>, <inertial>, <mass>, <inertia>, <origin>, <collision> and <visual>, and
-/// the
+/// importers of Gazebo and Drake load. A light index of the same text adds the line of every
+/// <link>, <joint>, <inertial>, <mass>, <inertia>, <origin>, <collision> and <visual>, and the
 /// `<!-- massprops: ignore ... -->` comments of each link; the index decides nothing about
-/// validity.
+/// validity. It comes from one pass over the text (no second XML parse) when the text is written
+/// in the XML URDF files use, else from a tinyxml2 DOM, with the same lines.
 ///
 /// What urdfdom says while it reads (through console_bridge) is captured, never printed:
 /// - urdfdom refuses the file: a ReadFinding "urdf-not-loadable" quoting urdfdom's reason, located
@@ -30,6 +30,7 @@
 /// back (docs/urdf.md, "console_bridge").
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "massprops/model/model.h"
@@ -43,10 +44,20 @@ inline constexpr std::size_t kMaxUrdfFileBytes = std::size_t{256} << 20;  // 256
 /// Reads the URDF file at `path`; "-" reads standard input to its end (locations then name the
 /// file "<stdin>"). Yields one Model unless the input cannot be read as XML with a <robot> root.
 /// Never throws for bad input: each problem is a ReadError, a warning or a ReadFinding naming the
-/// file, line and element. Cost: that of urdf::parseURDF plus one tinyxml2 parse of the text.
+/// file, line and element. Cost: that of urdf::parseURDF plus one pass over the text (a tinyxml2
+/// parse for text the pass does not read: a DOCTYPE, CDATA, entities in the indexed values).
 ReadResult ReadUrdfFile(const std::string& path);
 
 /// Same as ReadUrdfFile for URDF text already in memory; `file_name` is used in SourceLocations.
 ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name);
+
+namespace internal {
+/// For tests: the reader's index of `xml` (each line it takes from the text, the ignore comments,
+/// the underflowing numbers, the index's warnings) as text, from the light scan of the text
+/// (`from_tinyxml2` false) or from a tinyxml2 DOM (true); nullopt when that way gives no index
+/// (the scan gives up on text outside the XML it reads; tinyxml2 on text that is not XML with a
+/// <robot> root).
+std::optional<std::string> DescribeUrdfIndex(const std::string& xml, bool from_tinyxml2);
+}  // namespace internal
 
 }  // namespace massprops

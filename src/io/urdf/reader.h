@@ -1,8 +1,10 @@
 #pragma once
 // Private to io: the state of one URDF read (urdf_reader.cc, docs/architecture.md), shared by the
 // files of src/io/urdf/, one per seam of the reader:
-//   index.cc         a tinyxml2 index of the text: each element's line, ignore comments, numbers
-//                    urdfdom reads other than as written (underflows);
+//   index.cc         the index of the text from a tinyxml2 DOM: each element's line, ignore
+//                    comments, numbers urdfdom reads other than as written (underflows);
+//   scan.cc          the same index from one light pass over the text, without a DOM, for the
+//                    XML that URDF files are written in (anything else goes to index.cc);
 //   urdfdom.cc       urdf::parseURDF with its console_bridge messages captured per thread;
 //   from_urdfdom.cc  the Model from urdfdom's, with the index's lines, and the inertials urdfdom
 //                    cannot read;
@@ -89,6 +91,20 @@ struct Underflow {
   unsigned number = 0;  // which number (an Inertial::unknown bit)
 };
 
+// A number of an <inertial> in urdfdom's order of reading (urdf_parser/src/link.cpp): origin xyz,
+// rpy, mass, inertia ixx ... izz; each is the attribute of the first child element of its name.
+struct InertialNumber {
+  const char* element;
+  const char* attribute;
+  unsigned number;  // an Inertial::unknown bit
+};
+inline constexpr InertialNumber kInertialNumbers[] = {
+    {"origin", "xyz", kInertialPosition}, {"origin", "rpy", kInertialOrientation},
+    {"mass", "value", kInertialMass},     {"inertia", "ixx", kInertialIxx},
+    {"inertia", "ixy", kInertialIxy},     {"inertia", "ixz", kInertialIxz},
+    {"inertia", "iyy", kInertialIyy},     {"inertia", "iyz", kInertialIyz},
+    {"inertia", "izz", kInertialIzz}};
+
 // The lines of the elements that carry mass properties, by name and order. Decides nothing.
 struct UrdfIndex {
   int robot_line = 0;
@@ -102,8 +118,12 @@ class Reader {
  public:
   explicit Reader(std::string file_name) : file_(std::move(file_name)) {}
   ReadResult Read(const std::string& xml);
+  /// The index of `xml` (with no NUL byte) and its warnings as text, from the light scan or from
+  /// tinyxml2; nullopt when that way gives no index (for tests: internal::DescribeUrdfIndex).
+  std::optional<std::string> DescribeIndex(const std::string& xml, bool from_tinyxml2);
 
  private:
+  friend class IndexScanner;
   SourceLocation Loc(int line) const { return SourceLocation{file_, line, 0}; }
   void Warning(int line, std::string element, std::string message) {
     result_.warnings.push_back(ReadError{Loc(line), std::move(element), std::move(message)});
@@ -112,9 +132,13 @@ class Reader {
     result_.errors.push_back(ReadError{Loc(line), std::move(element), std::move(message)});
   }
   bool ParseDom(const std::string& xml, XMLDocument* doc);
+  bool ScanIndex(const std::string& xml);
+  bool IndexWithTinyxml2(const std::string& xml);
   void BuildIndex(const XMLElement* robot);
   void IndexUnderflow(const XMLElement* inertial, int link);
+  bool IndexUnderflowOf(int link, int line, const InertialNumber& n, std::string_view text);
   void CollectIgnoreComments(const XMLNode* node, const std::string& link, IndexedLink* out);
+  void IndexComment(std::string_view text, int line, const std::string& link, IndexedLink* out);
   void WarnAboutTextUrdfdomSkips();
   Model FromUrdfdom(const urdf::ModelInterface& urdf, const std::vector<std::string>& errors,
                     const std::string& xml);
