@@ -59,7 +59,7 @@ asan_pid=
    LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
    ctest --output-on-failure -j "$jobs" -LE 'lint|sdformat')
 # Left out here, run in the Release pass: the lint, and the comparisons with libsdformat (label
-# sdformat), whose time goes to libsdformat's own allocations through ASan's allocator (2-3 min
+# sdformat), whose time goes to libsdformat's own allocations through ASan's allocator (61-80 s
 # each); the same corpus goes through our readers here in corpus_sdf_test and the CLI tests.
 
 # A short fuzz run, $jobs targets at a time: any crash, sanitizer report or broken invariant fails
