@@ -22,7 +22,8 @@ cxx=${FUZZ_CXX:-clang++-14}
 cc=${FUZZ_CC:-${cxx/clang++/clang}}
 
 if [[ ! -f $build/CMakeCache.txt ]]; then
-  CC=$cc CXX=$cxx cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="-O1 -g" \
+  CC=$cc CXX=$cxx cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Debug \
+    -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" \
     -DMASSPROPS_FUZZ=ON -DMASSPROPS_BUILD_TESTS=OFF -DMASSPROPS_BUILD_BENCH=OFF \
     -DMASSPROPS_WERROR=ON >/dev/null
 fi

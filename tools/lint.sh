@@ -73,9 +73,13 @@ scan = [root / "tools" / "long_blocks.py"]
 long = set(subprocess.run([sys.executable, *scan, *sources, *headers], check=True,
                           capture_output=True, text=True).stdout.split())
 chosen = [s for s in sources if s in long]
-for h in sorted(long - set(sources)):
+headers_long = sorted(long - set(sources))
+texts = {}
+if headers_long:  # each source read once, whatever the number of long headers
+    texts = {s: open(s, encoding="utf-8", errors="replace").read() for s in sources}
+for h in headers_long:
     name = os.path.basename(h)
-    users = [s for s in sources if name in open(s, encoding="utf-8", errors="replace").read()]
+    users = [s for s in sources if name in texts[s]]
     chosen += users if users else sources
 print("\n".join(dict.fromkeys(chosen)))
 PY
