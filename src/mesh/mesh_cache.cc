@@ -1,12 +1,14 @@
 // MeshCache (mesh_loader.h): each mesh file read once per run, its numbers kept between runs.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <utility>
 
 #include "massprops/mesh/mesh_loader.h"
+#include "mesh/mesh_coincidence.h"
 #include "mesh/mesh_store.h"
 #include "mesh/stl_direct.h"
 
@@ -24,6 +26,17 @@ bool IsStlPath(const std::string& path) {
 // The start of CalcMeshMassProperties' reason when it integrates an open mesh as a closed solid
 // because MeshInertiaOptions::open_mesh_model says so (the only closed solid that depends on it).
 constexpr char kIntegratedDespite[] = "integrated as a closed solid despite";
+
+bool IsIdentity(const Eigen::Vector3d& scale) { return scale == Eigen::Vector3d::Ones(); }
+
+// Whether vertices at distinct positions stay distinct once scaled (mesh_coincidence.h).
+bool StayDistinct(const Eigen::Vector3d& scale) {
+  for (int i = 0; i < 3; ++i) {
+    const double s = std::abs(scale[i]);
+    if (!(s >= 1e-30 && s <= 1e30)) return false;
+  }
+  return true;
+}
 
 internal::MassKey KeyOf(const Eigen::Vector3d& scale, const MeshInertiaOptions& options) {
   return {scale.x(),
@@ -74,11 +87,15 @@ struct MeshCache::FileState {
   internal::StoredMesh stored;
   bool dirty = false;
   // This run.
-  bool loaded = false;  // LoadMeshFile tried
+  std::string bytes;  // the file's bytes, once read for its content hash, until read directly
+  bool bytes_read = false;
+  bool loaded = false;  // LoadMeshFile's mesh known (or tried)
   std::shared_ptr<const TriangleMesh> mesh;
   std::string load_error;
   bool direct_tried = false;  // the direct STL reader tried
-  std::shared_ptr<const TriangleMesh> direct;
+  // An STL read directly (DirectStl): its triangles; LoadMeshFile's mesh is made from it on
+  // demand when it is joined (a binary STL).
+  std::shared_ptr<const internal::DirectStl> direct;
   bool bounded = false;
   std::string bounds_error;
   bool pointed = false;
@@ -127,15 +144,35 @@ void MeshCache::LookUp(FileState& state, const std::string& path) {
   if (!store) return;
   state.stat_ok = internal::MeshStore::Stat(path, &state.key);
   if (!state.stat_ok) return;
-  if (std::optional<internal::StoredMesh> found = store->Find(&state.key, true)) {
+  // The content hash, when the path, size and time are not known: from the bytes the direct
+  // reader then uses (one read of the file); other formats are read by assimp from the path.
+  auto content = [&]() -> const std::string* {
+    state.bytes_read = internal::ReadWholeFile(path, &state.bytes);
+    return state.bytes_read ? &state.bytes : nullptr;
+  };
+  std::optional<internal::StoredMesh> found = store->Find(&state.key, content);
+  if (!IsStlPath(path) || found) ReleaseBytes(state);
+  if (found) {
     state.stored = std::move(*found);
     std::lock_guard<std::mutex> lock(mutex_);
     ++files_from_store_;
   }
 }
 
+void MeshCache::ReleaseBytes(FileState& state) {
+  std::string().swap(state.bytes);
+  state.bytes_read = false;
+}
+
 std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, const std::string& path,
                                                           std::string* error) {
+  if (!state.loaded) {
+    ReadDirectLocked(state, path);
+    if (state.direct && state.direct->joined) {  // a binary STL: LoadMeshFile's mesh, from it
+      state.loaded = true;
+      state.mesh = std::make_shared<TriangleMesh>(internal::JoinedMesh(*state.direct));
+    }
+  }
   if (!state.loaded) {
     state.loaded = true;
     auto mesh = std::make_shared<TriangleMesh>();
@@ -147,24 +184,31 @@ std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, cons
   return state.mesh;
 }
 
-// One read of a binary STL gives its triangles and its hull-bound points; an ascii STL its
-// triangles. Nothing for other files (then LoadMeshFile).
+// One read of an STL file (DirectStl): a binary STL's distinct positions (its hull-bound points),
+// its triangles on them and what LoadMeshFile's mesh is made of (so assimp is not needed for
+// it); an ascii STL's triangles. Nothing for other files (then LoadMeshFile).
 void MeshCache::ReadDirectLocked(FileState& state, const std::string& path) {
   if (state.direct_tried) return;
   state.direct_tried = true;
   if (!IsStlPath(path)) return;
-  auto mesh = std::make_shared<TriangleMesh>();
-  auto points = std::make_shared<MeshPoints>();
-  bool has_points = false;
-  if (!internal::ReadStlDirect(path, mesh.get(), state.stored.points ? nullptr : points.get(),
-                               &has_points)) {
-    return;
+  auto stl = std::make_shared<internal::DirectStl>();
+  std::string own_bytes;
+  const std::string* bytes = &state.bytes;
+  if (!state.bytes_read) {
+    if (!internal::ReadWholeFile(path, &own_bytes)) return;
+    bytes = &own_bytes;
   }
-  state.direct = std::move(mesh);
-  if (has_points) {
+  const bool read = internal::ReadStlDirect(*bytes, stl.get());
+  ReleaseBytes(state);
+  if (!read) return;
+  if (stl->joined && !state.stored.points) {
+    auto points = std::make_shared<MeshPoints>();
+    points->positions = stl->mesh.vertices;
+    points->loader_vertices = static_cast<std::int64_t>(stl->vertex_position.size());
     state.stored.points = std::move(points);
     state.dirty = true;
   }
+  state.direct = std::move(stl);
   std::lock_guard<std::mutex> lock(mutex_);
   ++files_loaded_;
 }
@@ -212,10 +256,10 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
   unit_density.density = 1;
   std::string why;
   try {
-    // The directly read STL when it bounds a solid (the same triangles as assimp's, so the same
-    // numbers); assimp's mesh for everything else (its hull and shell are computed from it).
-    // The probe models an open mesh as a thin shell (cheap: no hull), a result that is then
-    // dropped; a closed solid's numbers do not depend on open_mesh_model.
+    // An STL read directly: its triangles are LoadMeshFile's, so the same numbers when they bound
+    // a solid (the probe models an open mesh as a thin shell, cheap: no hull; its result is then
+    // dropped). Else LoadMeshFile's mesh (a binary STL's from the same read; the hull is computed
+    // from its vertex list).
     ReadDirectLocked(state, path);
     std::optional<MeshMassProperties> properties;
     if (state.direct) {
@@ -223,7 +267,14 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
       if (probe.open_mesh_model != MeshSolidModel::kClosedSolid) {
         probe.open_mesh_model = MeshSolidModel::kThinShell;
       }
-      properties = CalcMeshMassProperties(ScaleMesh(*state.direct, scale), probe);
+      const TriangleMesh* triangles = &state.direct->mesh;
+      TriangleMesh scaled;
+      if (!IsIdentity(scale)) {
+        scaled = ScaleMesh(*triangles, scale);
+        triangles = &scaled;
+      }
+      properties = internal::CalcMeshMassProperties(*triangles, probe,
+                                                    state.direct->joined && StayDistinct(scale));
       if (properties->diagnostics.model != MeshSolidModel::kClosedSolid) properties.reset();
     }
     if (!properties) {
@@ -250,7 +301,15 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
   LookUp(state, path);
   if (!state.bounded && !state.stored.box) {
     state.bounded = true;
-    const TriangleMesh* mesh = state.mesh ? state.mesh.get() : state.direct.get();
+    // An STL: its box from the one read that gives the rest (a file Bounds read).
+    const bool unread = !state.direct_tried && !state.loaded;
+    ReadDirectLocked(state, path);
+    if (unread && state.direct) {
+      std::lock_guard<std::mutex> lock_counters(mutex_);
+      ++files_bounded_;
+    }
+    const TriangleMesh* mesh = state.mesh ? state.mesh.get() : nullptr;
+    if (mesh == nullptr && state.direct) mesh = &state.direct->mesh;
     if (mesh != nullptr) {  // read already: its box, no second read
       Eigen::AlignedBox3d box;
       for (const Eigen::Vector3d& v : mesh->vertices) box.extend(v);

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "mesh/mesh_backend.h"
+#include "mesh/mesh_coincidence.h"
 
 namespace massprops {
 namespace {
@@ -310,15 +311,33 @@ void CountEdgeUses(const TriangleMesh& mesh, const std::vector<std::int32_t>& re
 
 }  // namespace
 
-MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
+namespace {
+
+// AnalyzeMeshTopology; with `distinct` (mesh_coincidence.h), each vertex is its own
+// representative, else they are found by hashing the positions.
+MeshDiagnostics AnalyzeTopology(const TriangleMesh& mesh, bool distinct) {
   ValidateMesh(mesh);
   MeshDiagnostics d;
   d.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
   d.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
-  const std::vector<std::int32_t> representative = MergeCoincidentVertices(mesh, &d);
+  std::vector<std::int32_t> representative;
+  if (distinct) {
+    representative.resize(mesh.vertices.size());
+    for (std::size_t i = 0; i < representative.size(); ++i) {
+      representative[i] = static_cast<std::int32_t>(i);
+    }
+  } else {
+    representative = MergeCoincidentVertices(mesh, &d);
+  }
   const std::vector<char> has_edges = MarkTrianglesWithEdges(mesh, representative, &d);
   CountEdgeUses(mesh, representative, has_edges, &d);
   return d;
+}
+
+}  // namespace
+
+MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
+  return AnalyzeTopology(mesh, false);
 }
 
 namespace {
@@ -454,6 +473,14 @@ bool CalcConvexHull(const TriangleMesh& mesh, TriangleMesh* hull, std::string* e
 
 MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
                                           const MeshInertiaOptions& options) {
+  return internal::CalcMeshMassProperties(mesh, options, false);
+}
+
+namespace internal {
+
+MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
+                                          const MeshInertiaOptions& options,
+                                          bool distinct_vertices) {
   if (!(options.density >= 0) || !std::isfinite(options.density) ||
       !(options.shell_thickness >= 0) || !std::isfinite(options.shell_thickness)) {
     std::ostringstream message;
@@ -461,7 +488,7 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
             << options.shell_thickness << " must be finite and non-negative";
     throw std::invalid_argument(message.str());
   }
-  MeshDiagnostics diagnostics = AnalyzeMeshTopology(mesh);
+  MeshDiagnostics diagnostics = AnalyzeTopology(mesh, distinct_vertices);
   const double diagonal = BoundingBoxDiagonal(mesh);
   // A closed mesh whose volume is below this is flat (e.g. a double-sided plane).
   const double negligible_volume = 1e-12 * diagonal * diagonal * diagonal;
@@ -536,6 +563,8 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
   shell.diagnostics = diagnostics;
   return shell;
 }
+
+}  // namespace internal
 
 MeshMassProperties ScaleToMass(const MeshMassProperties& properties, double mass) {
   if (!(properties.mass > 0) || !(mass >= 0) || !std::isfinite(mass)) {

@@ -15,6 +15,8 @@
 #include <iterator>
 #include <system_error>
 
+#include "mesh/stl_direct.h"
+
 namespace massprops::internal {
 namespace fs = std::filesystem;
 
@@ -152,12 +154,7 @@ MeshMassProperties GetProperties(Reader* in) {
   return p;
 }
 
-bool ReadFile(const std::string& path, std::string* bytes) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  bytes->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return !in.bad();
-}
+bool ReadFile(const std::string& path, std::string* bytes) { return ReadWholeFile(path, bytes); }
 
 std::string StatName(const FileKey& key) {
   std::uint64_t h = HashBytes(key.path.data(), key.path.size(), key.size);
@@ -180,12 +177,16 @@ std::string EntryName(const FileKey& key) {
   return "d-" + Hex(key.content_hash) + "-" + std::to_string(key.size);
 }
 
-bool HashFile(FileKey* key) {
-  std::string bytes;
-  if (!ReadFile(key->path, &bytes) || bytes.size() != key->size) return false;
-  key->content_hash = HashBytes(bytes.data(), bytes.size());
+bool HashContent(FileKey* key, const std::string* bytes) {
+  if (bytes == nullptr || bytes->size() != key->size) return false;
+  key->content_hash = HashBytes(bytes->data(), bytes->size());
   key->hashed = true;
   return true;
+}
+
+bool HashFile(FileKey* key) {
+  std::string bytes;
+  return ReadWholeFile(key->path, &bytes) && HashContent(key, &bytes);
 }
 
 }  // namespace
@@ -306,7 +307,8 @@ bool MeshStore::Stat(const std::string& path, FileKey* key) {
   return true;
 }
 
-std::optional<StoredMesh> MeshStore::Find(FileKey* key, bool read_content) const {
+std::optional<StoredMesh> MeshStore::Find(
+    FileKey* key, const std::function<const std::string*()>& content) const {
   std::string bytes;
   bool from_stat = false;
   if (!key->hashed && ReadFile(folder_ + "/" + StatName(*key), &bytes)) {
@@ -320,7 +322,7 @@ std::optional<StoredMesh> MeshStore::Find(FileKey* key, bool read_content) const
       key->hashed = from_stat = true;
     }
   }
-  if (!key->hashed && !(read_content && HashFile(key))) return std::nullopt;
+  if (!key->hashed && !HashContent(key, content())) return std::nullopt;
   if (!ReadFile(folder_ + "/" + EntryName(*key), &bytes)) return std::nullopt;
   std::optional<StoredMesh> mesh = ParseStoredMesh(bytes);
   if (mesh && !from_stat && !RecentlyModified(*key)) {  // found by content: remember its stat

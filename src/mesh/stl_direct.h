@@ -1,29 +1,85 @@
 #pragma once
-// Private to the library: STL files read without assimp (src/mesh/mesh_bounds.cc holds the
-// readers, shared with LoadMeshBounds). MeshCache::MassProperties uses it when
-// MeshInertiaOptions::read_stl_directly is set (the density rules): loading assimp and its
-// post-processing cost 5 to 7 times what the whole `massprops check` of a robot with STL meshes
-// costs otherwise (docs/rules.md).
+// Private to the library: STL files read without assimp (src/mesh/stl_direct.cc). MeshCache reads
+// each STL file once with ReadStlDirect, for its box, its hull-bound points and its mass
+// properties; LoadMeshBounds (src/mesh/mesh_bounds.cc) shares the ascii scan. Loading assimp and
+// its post-processing cost 5 to 7 times what the whole `massprops check` of a robot with STL meshes
+// costs otherwise (docs/rules.md, docs/benchmarks.md section 8).
 
+#include <Eigen/Core>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <string>
+#include <vector>
 
 #include "massprops/mesh/mesh_inertia.h"
 #include "massprops/mesh/mesh_loader.h"
 
 namespace massprops::internal {
 
-/// The triangles of the STL file at `path` (binary: 84 + 50·n bytes exactly, as assimp 5.2 tells
-/// it from ascii; ascii: starts with "solid", every facet a "vertex" triple), each triangle with
-/// its own three vertices in file order, coordinates as the 32-bit floats assimp keeps (strtof
-/// for ascii). The same triangles, in the same order and with the same coordinates, as assimp
-/// gives (it joins identical vertices, which the mass properties do not depend on). Returns false
-/// (and leaves *mesh empty) when the file is not such an STL, has no triangle or a coordinate is
-/// not finite: LoadMeshFile then asks assimp, which says what is wrong. When `points` is not null,
-/// the same read also gives a binary STL's hull-bound points (*has_points true; see
-/// BinaryStlPoints in mesh_bounds.cc: the distinct positions, and the vertex count LoadMeshFile
-/// gives); not an ascii STL's, nor a file of colored facets ("COLOR=" in its header): then
-/// *has_points is false. Never throws.
-bool ReadStlDirect(const std::string& path, TriangleMesh* mesh, MeshPoints* points = nullptr,
-                   bool* has_points = nullptr);
+/// What one read of an STL file gives.
+struct DirectStl {
+  /// A binary STL (84 + 50·n bytes exactly, as assimp 5.2 tells it from ascii) without colored
+  /// facets (bit 15 of a facet's attribute): each distinct position once, in order of first
+  /// appearance (-0 and +0 the same, written +0), and the triangles naming them. An ascii STL:
+  /// every corner its own vertex, the "vertex" triples in order. Either way the same triangles,
+  /// in the same order and with the same corner coordinates, as LoadMeshFile's mesh (the 32-bit
+  /// floats assimp keeps; strtof for ascii), so the same integrals; not its vertex list.
+  TriangleMesh mesh;
+  /// The binary case above. Then `mesh`'s vertices are distinct and are the file's hull-bound
+  /// points (MeshPoints::positions), and JoinedMesh() gives LoadMeshFile's mesh: assimp 5.2's
+  /// importer gives each corner the facet's normal, and its aiProcess_JoinIdenticalVertices keeps
+  /// a corner unless an earlier kept one has the same position and a normal within 1e-5; its
+  /// vertex k is the kept corner k, at position vertex_position[k], and its triangles name them.
+  bool joined = false;
+  std::vector<std::int32_t> vertex_position;
+  std::vector<std::array<std::int32_t, 3>> joined_triangles;
+};
+
+/// LoadMeshFile's mesh of a joined DirectStl (vertex for vertex, triangle for triangle).
+TriangleMesh JoinedMesh(const DirectStl& stl);
+
+/// Reads the STL file whose bytes are `bytes` into *stl. Returns false (and leaves *stl empty)
+/// when the bytes are not such an STL, hold no triangle, or a coordinate is not finite:
+/// LoadMeshFile then asks assimp, which says what is wrong. Never throws.
+bool ReadStlDirect(const std::string& bytes, DirectStl* stl);
+
+/// The bytes of the file at `path`, in one read (POSIX); false when it cannot be read.
+bool ReadWholeFile(const std::string& path, std::string* bytes);
+
+/// Calls visit(p) for every "vertex x y z" of an ascii STL, in order (facets and loops need not be
+/// checked: their vertices are all the full loader keeps). Returns false when a vertex is not
+/// three finite numbers. strtof stops at the end of the buffer's text: std::string's bytes are
+/// followed by '\0'.
+template <typename Visit>
+bool ForEachAsciiStlVertex(const std::string& bytes, Visit visit) {
+  const char* const end = bytes.data() + bytes.size();
+  for (const char* at = bytes.data(); at < end;) {
+    const char* found = static_cast<const char*>(std::memchr(at, 'v', end - at));
+    if (found == nullptr) break;
+    const bool word_start =
+        found == bytes.data() || std::isspace(static_cast<unsigned char>(found[-1]));
+    if (!word_start || end - found < 7 || std::strncmp(found, "vertex", 6) != 0 ||
+        !std::isspace(static_cast<unsigned char>(found[6]))) {
+      at = found + 1;
+      continue;
+    }
+    float xyz[3];
+    const char* cursor = found + 6;
+    for (float& c : xyz) {
+      char* next = nullptr;
+      c = std::strtof(cursor, &next);
+      if (next == cursor) return false;
+      cursor = next;
+    }
+    const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
+    if (!p.allFinite()) return false;
+    visit(p);
+    at = cursor;
+  }
+  return true;
+}
 
 }  // namespace massprops::internal

@@ -1,0 +1,235 @@
+// ReadStlDirect (stl_direct.h): an STL file's triangles in one pass over its bytes, without assimp.
+#include "mesh/stl_direct.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <exception>
+#include <utility>
+
+namespace massprops::internal {
+namespace {
+
+// A binary STL (its size already checked: 84 + 50·count bytes) as DirectStl says. Assimp 5.2's
+// STL importer gives every corner the facet's normal; aiProcess_JoinIdenticalVertices then walks
+// the corners in order and keeps one unless an earlier kept corner is at the same position (its
+// spatial sort's tolerance of a few ULPs of the squared distance is exact equality at any length
+// above 1e-20) with a normal within 1e-5 (squared distance in float arithmetic, not above 1e-10;
+// a NaN normal matches). Where several kept corners could take one, they share its position, so
+// every number derived from the mesh is the same whichever is named. Positions are compared in
+// float (-0 == +0) through one hash table. False when a coordinate is not finite, a facet has a
+// color (bit 15 of its attribute: assimp then gives every corner a color, which its join compares
+// too; whatever the header says, no facet color means no vertex color), or there are more than
+// 2^31 - 1 corners.
+bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, sizeof(count));
+  const std::size_t corners = 3 * static_cast<std::size_t>(count);
+  if (count == 0 || corners > 0x7fffffff) return false;
+  for (std::uint32_t t = 0; t < count; ++t) {
+    std::uint16_t attribute = 0;
+    std::memcpy(&attribute, bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 48, 2);
+    if (attribute & 0x8000) return false;
+  }
+  // One slot per distinct position (open addressing, linear probing, at most half full): the
+  // position, its index and its last kept corner; the kept corners at one position are chained
+  // from the last back (previous). A slot holds all a probe needs, in 20 bytes.
+  struct Slot {
+    std::array<float, 3> p;
+    std::int32_t position = -1;  // -1: empty
+    std::int32_t last = -1;
+  };
+  std::size_t capacity = 1024;
+  while (capacity < corners / 2) capacity *= 2;  // about twice the positions of a closed mesh
+  std::vector<Slot> table(capacity);
+  std::vector<std::array<float, 3>> normal_of;  // per kept corner
+  std::vector<std::int32_t> previous;           // per kept corner: the one kept before it there
+  normal_of.reserve(corners);
+  previous.reserve(corners);
+  stl->vertex_position.reserve(corners);
+  stl->joined_triangles.resize(count);
+  TriangleMesh& mesh = stl->mesh;
+  mesh.vertices.reserve(corners / 4);
+  mesh.triangles.resize(count);
+  auto bits = [](float v) {
+    std::uint32_t u;
+    const float w = v + 0.0f;  // -0 + 0 == +0
+    std::memcpy(&u, &w, sizeof u);
+    return u;
+  };
+  auto hash_of = [&](const std::array<float, 3>& p) {
+    std::uint64_t h = bits(p[0]) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 29) ^ bits(p[1])) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 32) ^ bits(p[2])) * 0x94D049BB133111EBull;
+    return h ^ (h >> 31);
+  };
+  auto slot_of = [&](const std::array<float, 3>& p) {
+    std::size_t slot = hash_of(p) & (capacity - 1);
+    while (table[slot].position >= 0 && table[slot].p != p) slot = (slot + 1) & (capacity - 1);
+    return slot;
+  };
+  // The slots are where the time goes (a cache miss each): those of a triangle a few ahead are
+  // asked for early.
+  constexpr std::uint32_t kAhead = 8;
+  for (std::uint32_t t = 0; t < count; ++t) {
+    if (t + kAhead < count) {
+      const char* ahead = bytes.data() + 84 + 50 * static_cast<std::size_t>(t + kAhead);
+      for (int v = 0; v < 3; ++v) {
+        std::array<float, 3> p;
+        std::memcpy(p.data(), ahead + 12 * (v + 1), sizeof(p));
+        __builtin_prefetch(&table[hash_of(p) & (capacity - 1)]);
+      }
+    }
+    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
+    std::array<float, 3> normal;
+    std::memcpy(normal.data(), facet, sizeof(normal));
+    for (int v = 0; v < 3; ++v) {
+      std::array<float, 3> p;
+      std::memcpy(p.data(), facet + 12 * (v + 1), sizeof(p));
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
+      Slot* slot = &table[slot_of(p)];
+      if (slot->position < 0) {
+        slot->p = p;
+        slot->position = static_cast<std::int32_t>(mesh.vertices.size());
+        // + 0.0: LoadMeshFile applies the scene's (identity) transform, whose translation turns
+        // a -0 coordinate into +0.
+        mesh.vertices.emplace_back(p[0] + 0.0, p[1] + 0.0, p[2] + 0.0);
+        if (2 * mesh.vertices.size() > capacity) {  // grow: every slot moved to a table twice as big
+          std::vector<Slot> old(2 * capacity);
+          old.swap(table);
+          capacity *= 2;
+          for (const Slot& moved : old) {
+            if (moved.position >= 0) table[slot_of(moved.p)] = moved;
+          }
+          slot = &table[slot_of(p)];
+        }
+      }
+      std::int32_t joined = -1;
+      for (std::int32_t k = slot->last; k >= 0 && joined < 0; k = previous[k]) {
+        const std::array<float, 3>& n = normal_of[static_cast<std::size_t>(k)];
+        const float dx = normal[0] - n[0], dy = normal[1] - n[1], dz = normal[2] - n[2];
+        const float square_epsilon = 1e-5f * 1e-5f;
+        if (!(dx * dx + dy * dy + dz * dz > square_epsilon)) joined = k;
+      }
+      if (joined < 0) {
+        joined = static_cast<std::int32_t>(normal_of.size());
+        normal_of.push_back(normal);
+        previous.push_back(slot->last);
+        stl->vertex_position.push_back(slot->position);
+        slot->last = joined;
+      }
+      stl->joined_triangles[t][static_cast<std::size_t>(v)] = joined;
+      mesh.triangles[t][static_cast<std::size_t>(v)] = slot->position;
+    }
+  }
+  stl->joined = true;
+  return true;
+}
+
+// Every corner of a binary STL its own vertex (a file with colored facets: its triangles only).
+bool BinaryStlCorners(const std::string& bytes, TriangleMesh* mesh) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, bytes.data() + 80, sizeof(count));
+  if (count == 0 || 3 * static_cast<std::uint64_t>(count) > 0x7fffffff) return false;
+  mesh->vertices.reserve(3 * static_cast<std::size_t>(count));
+  mesh->triangles.reserve(count);
+  for (std::uint32_t t = 0; t < count; ++t) {
+    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
+    const std::int32_t first = static_cast<std::int32_t>(mesh->vertices.size());
+    for (int v = 0; v < 3; ++v) {
+      float xyz[3];
+      std::memcpy(xyz, facet + 12 * (v + 1), sizeof(xyz));  // after the 12-byte normal
+      const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
+      if (!p.allFinite()) return false;
+      mesh->vertices.push_back(p);
+    }
+    mesh->triangles.push_back({first, first + 1, first + 2});
+  }
+  return true;
+}
+
+// The triangles of an ascii STL: its "vertex" triples in order; as many as its "endfacet"s (a
+// facet of another vertex count is left to assimp).
+bool AsciiStlTriangles(const std::string& bytes, TriangleMesh* mesh) {
+  std::size_t facets = 0;
+  for (std::size_t at = bytes.find("endfacet"); at != std::string::npos;
+       at = bytes.find("endfacet", at + 8)) {
+    ++facets;
+  }
+  if (!ForEachAsciiStlVertex(bytes,
+                             [&](const Eigen::Vector3d& p) { mesh->vertices.push_back(p); })) {
+    return false;
+  }
+  const std::size_t n = mesh->vertices.size();
+  if (n == 0 || n != 3 * facets || n > 0x7fffffff) return false;
+  for (std::size_t t = 0; t < facets; ++t) {
+    const std::int32_t first = static_cast<std::int32_t>(3 * t);
+    mesh->triangles.push_back({first, first + 1, first + 2});
+  }
+  return true;
+}
+
+}  // namespace
+
+bool ReadStlDirect(const std::string& bytes, DirectStl* stl) {
+  DirectStl found;
+  bool ok = false;
+  try {
+    std::uint32_t count = 0;
+    if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, sizeof(count));
+    if (bytes.size() >= 84 && 84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) {
+      ok = BinaryStlJoined(bytes, &found);
+      if (!ok) {
+        found = DirectStl();
+        ok = BinaryStlCorners(bytes, &found.mesh);
+      }
+    } else {
+      const std::size_t first = bytes.find_first_not_of(" \t\r\n\f\v");
+      ok = first != std::string::npos && bytes.compare(first, 5, "solid") == 0 &&
+           AsciiStlTriangles(bytes, &found.mesh);
+    }
+  } catch (const std::exception&) {  // std::bad_alloc on a huge file: assimp's message
+    ok = false;
+  }
+  if (ok) *stl = std::move(found);
+  return ok;
+}
+
+TriangleMesh JoinedMesh(const DirectStl& stl) {
+  TriangleMesh joined;
+  joined.vertices.reserve(stl.vertex_position.size());
+  for (const std::int32_t p : stl.vertex_position) {
+    joined.vertices.push_back(stl.mesh.vertices[static_cast<std::size_t>(p)]);
+  }
+  joined.triangles = stl.joined_triangles;
+  return joined;
+}
+
+bool ReadWholeFile(const std::string& path, std::string* bytes) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat info {};
+  bool ok = ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode);
+  try {
+    if (ok) bytes->resize(static_cast<std::size_t>(info.st_size));
+  } catch (const std::exception&) {  // std::bad_alloc
+    ok = false;
+  }
+  std::size_t done = 0;
+  while (ok && done < bytes->size()) {
+    const ssize_t got = ::read(fd, bytes->data() + done, bytes->size() - done);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;  // the file shrank: keep what was read
+    done += static_cast<std::size_t>(got);
+  }
+  ::close(fd);
+  if (!ok) return false;
+  bytes->resize(done);  // a file that shrank while it was read: what it held
+  return true;
+}
+
+}  // namespace massprops::internal

@@ -1,0 +1,187 @@
+// A binary STL read once, without assimp (src/mesh/stl_direct.cc): MeshCache's mesh of it must be
+// LoadMeshFile's (assimp 5.2's importer and vertex joining), vertex for vertex, so that every
+// number derived from it is the same. The reference in every test is assimp itself (LoadMeshFile
+// reads through it), the second library the direct reader is held to.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "massprops/mesh/mesh_inertia.h"
+#include "massprops/mesh/mesh_loader.h"
+
+namespace massprops {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kMeshDir = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh";
+
+// Exactly the same vertices (value and sign of zero) in the same order, and the same triangles.
+void ExpectSameMesh(const TriangleMesh& got, const TriangleMesh& expected, const std::string& what) {
+  ASSERT_EQ(got.vertices.size(), expected.vertices.size()) << what;
+  ASSERT_EQ(got.triangles.size(), expected.triangles.size()) << what;
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < got.vertices.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const double a = got.vertices[i][k], b = expected.vertices[i][k];
+      if (!(a == b) || std::signbit(a) != std::signbit(b)) ++differing;
+    }
+  }
+  EXPECT_EQ(differing, 0u) << what;
+  // Where assimp could join a corner to either of two kept corners at one position, the index
+  // may differ but not the position: the triangles are compared by their corners' positions.
+  std::size_t moved = 0;
+  for (std::size_t t = 0; t < got.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      if (!(got.vertices[got.triangles[t][k]] == expected.vertices[expected.triangles[t][k]])) {
+        ++moved;
+      }
+    }
+  }
+  EXPECT_EQ(moved, 0u) << what;
+}
+
+std::string Facet(const std::array<float, 3>& n, const std::array<std::array<float, 3>, 3>& corners,
+                  std::uint16_t attribute) {
+  std::string bytes(reinterpret_cast<const char*>(n.data()), 12);
+  for (const auto& c : corners) bytes.append(reinterpret_cast<const char*>(c.data()), 12);
+  bytes.append(reinterpret_cast<const char*>(&attribute), 2);
+  return bytes;
+}
+
+// A closed tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), wound outward, with a -0 written for
+// some zero coordinates, a facet normal within 1e-5 of another's at two shared corners (joined by
+// assimp), `header` as its 80-byte header and `attribute` on the last facet.
+std::string Tetrahedron(const std::string& header, std::uint16_t attribute) {
+  std::string bytes = header;
+  bytes.resize(80, ' ');
+  const std::uint32_t count = 4;
+  bytes.append(reinterpret_cast<const char*>(&count), 4);
+  const float r = 1 / std::sqrt(3.0f);
+  bytes += Facet({0, 0, -1}, {{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}}, 0);
+  bytes += Facet({0, -1, 0}, {{{-0.0f, 0, 0}, {1, 0, -0.0f}, {0, 0, 1}}}, 0);
+  // The normal written is not the facet's (files often hold wrong ones): within 1e-5 of the
+  // first facet's, so assimp joins the two corners this facet shares with it.
+  bytes += Facet({0, 1e-6f, -1}, {{{0, 0, 0}, {0, 0, 1}, {0, 1, 0}}}, 0);
+  bytes += Facet({r, r, r + 1e-6f}, {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, attribute);
+  return bytes;
+}
+
+class StlOneReadTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "massprops-stl-test-XXXXXX").string();
+    folder_ = mkdtemp(pattern.data());
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(folder_, ec);
+  }
+  std::string Write(const std::string& name, const std::string& bytes) {
+    const std::string path = folder_ + "/" + name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+  }
+  std::string folder_;
+};
+
+void ExpectLoaderMesh(const std::string& path) {
+  MeshCache cache;
+  std::string error;
+  const std::shared_ptr<const TriangleMesh> direct = cache.Load(path, &error);
+  ASSERT_TRUE(direct) << path << ": " << error;
+  TriangleMesh assimp;
+  ASSERT_TRUE(LoadMeshFile(path, &assimp, &error)) << path << ": " << error;
+  ExpectSameMesh(*direct, assimp, path);
+  // The hull-bound points: each position of assimp's mesh once, in order of first appearance
+  // (counted here with a plain search), and its vertex count.
+  std::vector<Eigen::Vector3d> positions;
+  for (const Eigen::Vector3d& v : assimp.vertices) {
+    bool seen = false;
+    for (const Eigen::Vector3d& p : positions) seen = seen || p == v;
+    if (!seen) positions.push_back(v);
+  }
+  const std::shared_ptr<const MeshPoints> points = cache.Points(path, &error);
+  ASSERT_TRUE(points) << error;
+  EXPECT_EQ(points->loader_vertices, static_cast<std::int64_t>(assimp.vertices.size())) << path;
+  ASSERT_EQ(points->positions.size(), positions.size()) << path;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    EXPECT_TRUE(points->positions[i] == positions[i]) << path << " point " << i;
+  }
+  // The mass properties, from the same read, as assimp's mesh gives them (and as the model it
+  // needs: closed solid or, when open, the convex hull of the loader's vertices).
+  MeshInertiaOptions options;
+  options.open_mesh_model = MeshSolidModel::kConvexHull;
+  const auto from_cache = cache.MassProperties(path, Eigen::Vector3d(1, 1, 1), options, &error);
+  ASSERT_TRUE(from_cache) << error;
+  const MeshMassProperties expected = CalcMeshMassProperties(assimp, options);
+  EXPECT_EQ(from_cache->volume, expected.volume) << path;
+  EXPECT_TRUE(from_cache->p_GoGcm_G == expected.p_GoGcm_G) << path;
+  EXPECT_TRUE(from_cache->I_GGcm_G.CopyToFullMatrix3() == expected.I_GGcm_G.CopyToFullMatrix3())
+      << path;
+  EXPECT_EQ(from_cache->diagnostics.model, expected.diagnostics.model) << path;
+  EXPECT_EQ(from_cache->diagnostics.boundary_edges, expected.diagnostics.boundary_edges) << path;
+}
+
+TEST_F(StlOneReadTest, BinaryStlIsTheLoadersMeshWithSignedZerosAndNearNormals) {
+  ExpectLoaderMesh(Write("tetra.stl", Tetrahedron("plain", 0)));
+  // The volume of the unit corner tetrahedron, 1/6, as assimp's mesh gives it.
+  MeshCache cache;
+  std::string error;
+  const auto p = cache.MassProperties(Write("again.stl", Tetrahedron("plain", 0)),
+                                      Eigen::Vector3d(1, 1, 1), MeshInertiaOptions{}, &error);
+  ASSERT_TRUE(p) << error;
+  EXPECT_NEAR(p->volume, 1.0 / 6, 1e-12);
+}
+
+// SolidWorks writes "COLOR=" and "MATERIAL=" in the header of every export; assimp gives colors to
+// the vertices only when a facet sets bit 15 of its attribute, and then compares them when it
+// joins vertices: such a file is left to assimp, the others read directly. Both must give
+// assimp's mesh.
+TEST_F(StlOneReadTest, ColorHeaderWithAndWithoutColoredFacets) {
+  const std::string header = std::string("COLOR=") + "\x7f\x7f\x7f\xff" + " MATERIAL=";
+  ExpectLoaderMesh(Write("header_only.stl", Tetrahedron(header, 0)));
+  ExpectLoaderMesh(Write("colored_facet.stl", Tetrahedron(header, 0x8000 | 0x1f)));
+}
+
+// An open mesh (one facet of the tetrahedron left out): the convex hull of the loader's vertices.
+TEST_F(StlOneReadTest, OpenMeshGetsTheHullOfTheLoadersVertices) {
+  std::string bytes = Tetrahedron("open", 0);
+  const std::uint32_t count = 3;
+  bytes.replace(80, 4, reinterpret_cast<const char*>(&count), 4);
+  bytes.resize(84 + 50 * 3);
+  ExpectLoaderMesh(Write("open.stl", bytes));
+}
+
+// Every binary STL shipped in testdata and in ../shared/corpus.
+TEST(StlOneReadCorpusTest, EveryBinaryStlIsTheLoadersMesh) {
+  std::vector<std::string> files;
+  for (const std::string& root : {kMeshDir, std::string(MASSPROPS_CORPUS_DIR)}) {
+    if (!fs::exists(root)) continue;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+      std::string extension = entry.path().extension().string();
+      for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (entry.is_regular_file() && extension == ".stl") files.push_back(entry.path().string());
+    }
+  }
+  ASSERT_GE(files.size(), 3u);
+  int checked = 0;
+  for (const std::string& file : files) {
+    TriangleMesh assimp;
+    std::string error;
+    if (!LoadMeshFile(file, &assimp, &error)) continue;  // unreadable fixtures
+    ExpectLoaderMesh(file);
+    ++checked;
+  }
+  EXPECT_GE(checked, 3);
+}
+
+}  // namespace
+}  // namespace massprops
