@@ -128,9 +128,17 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
       }
       // The resolved file (CalcGeometryMassProperties resolves it as every other reader does,
       // included SDF files relative to their own file), then its vertices, scaled and posed.
+      // Where it succeeds modelling an open mesh as a thin shell, it succeeds with its convex hull
+      // too (the hull's last fallback is that shell): the hull (qhull) is computed only when the
+      // shell fails, so that the same geometries are used as before at a fraction of the cost.
       std::string error;
-      const std::optional<GeometryMassProperties> props =
-          CalcGeometryMassProperties(geometry, resolve, &error);
+      std::optional<GeometryMassProperties> props;
+      if (resolve.inertia.open_mesh_model == MeshSolidModel::kConvexHull) {
+        MeshResolveOptions shell = resolve;
+        shell.inertia.open_mesh_model = MeshSolidModel::kThinShell;
+        props = CalcGeometryMassProperties(geometry, shell, &error);
+      }
+      if (!props) props = CalcGeometryMassProperties(geometry, resolve, &error);
       std::shared_ptr<const MeshPoints> points;
       if (props && !props->mesh_path.empty()) {
         if (resolve.cache != nullptr) {

@@ -538,8 +538,8 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
            << " relative when the reference point moves)";
       return finish_solid(signed_result, MeshSolidModel::kClosedSolid, note.str());
     }
-    if (options.open_mesh_model == MeshSolidModel::kClosedSolid) {
-      return finish_solid(CalcClosedMeshMassPropertiesSigned(mesh), MeshSolidModel::kClosedSolid,
+    if (options.open_mesh_model == MeshSolidModel::kClosedSolid) {  // the same integral again
+      return finish_solid(signed_result, MeshSolidModel::kClosedSolid,
                           "integrated as a closed solid despite " + reason);
     }
   }

@@ -13,6 +13,7 @@
 #include <exception>
 #include <limits>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -25,19 +26,104 @@ extern "C" {
 namespace massprops::internal {
 namespace {
 
+// Which vertices of an aiMesh assimp 5.2.4's aiProcess_JoinIdenticalVertices keeps (`kept`, in
+// order) and, per vertex, the kept one it becomes (`index`). Its JoinVerticesProcess::ProcessMesh
+// leaves a mesh without positions or faces as it is; else it takes the vertices some face uses in
+// order and looks each up in a std::unordered_map reserved for all the vertices, hashed by the
+// position (boost's hash_combine of std::hash<float> of x, y, z), whose hash is noexcept: so
+// libstdc++ keeps no hash code in a node, and a lookup walks the whole bucket, newest first,
+// taking the first element "equal" to the vertex: in float arithmetic, position, normal, first
+// texture coordinate, tangent and bitangent each within a squared distance of 1e-10 (a missing
+// channel is zero; NaN compares equal; colors are not compared). Else the vertex is kept, at the
+// front of its bucket. The same buckets (the count libstdc++'s reserve gives), order and test are
+// used here, so the same result, two nearby positions in one bucket included; what costs assimp
+// four to five times the import of a DAE (its vertex of 16 vectors and 8 colors copied into
+// every node, a second std::unordered_set of the used indices, the bucket's end found by hashing
+// the next node again) is left out (docs/benchmarks.md section 8).
+struct Joined {
+  std::vector<unsigned> kept;
+  std::vector<unsigned> index;
+};
+
+Joined JoinIdenticalVertices(const aiMesh& mesh) {
+  Joined joined;
+  const unsigned n = mesh.mNumVertices;
+  joined.index.assign(n, 0);
+  if (!mesh.HasPositions() || !mesh.HasFaces()) {
+    for (unsigned v = 0; v < n; ++v) {
+      joined.kept.push_back(v);
+      joined.index[v] = v;
+    }
+    return joined;
+  }
+  std::vector<char> used(n, 0);
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    const aiFace& face = mesh.mFaces[f];
+    for (unsigned k = 0; k < face.mNumIndices; ++k) {
+      if (face.mIndices[k] < n) used[face.mIndices[k]] = 1;
+    }
+  }
+  const aiVector3D zero(0, 0, 0);
+  auto attribute = [&](const aiVector3D* channel, unsigned v) {
+    return channel != nullptr ? channel[v] : zero;
+  };
+  auto near = [](const aiVector3D& a, const aiVector3D& b) {
+    return !((a - b).SquareLength() > 1e-5f * 1e-5f);
+  };
+  auto equal = [&](unsigned a, unsigned b) {
+    return near(mesh.mVertices[a], mesh.mVertices[b]) &&
+           near(attribute(mesh.mNormals, a), attribute(mesh.mNormals, b)) &&
+           near(attribute(mesh.mTextureCoords[0], a), attribute(mesh.mTextureCoords[0], b)) &&
+           near(attribute(mesh.mTangents, a), attribute(mesh.mTangents, b)) &&
+           near(attribute(mesh.mBitangents, a), attribute(mesh.mBitangents, b));
+  };
+  const std::size_t buckets = [&] {
+    std::unordered_map<unsigned, unsigned> probe;
+    probe.reserve(n);
+    return probe.bucket_count();
+  }();
+  std::vector<std::int64_t> newest(buckets, -1);  // per bucket: its newest kept vertex
+  std::vector<std::int64_t> older;                // per kept vertex: the next older in its bucket
+  for (unsigned v = 0; v < n; ++v) {
+    if (!used[v]) continue;
+    std::size_t seed = 0;
+    for (const float c : {mesh.mVertices[v].x, mesh.mVertices[v].y, mesh.mVertices[v].z}) {
+      seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
+    }
+    const std::size_t bucket = seed % buckets;
+    std::int64_t match = -1;
+    for (std::int64_t k = newest[bucket]; k >= 0 && match < 0; k = older[k]) {
+      if (equal(v, joined.kept[k])) match = k;
+    }
+    if (match < 0) {
+      match = static_cast<std::int64_t>(joined.kept.size());
+      joined.kept.push_back(v);
+      older.push_back(newest[bucket]);
+      newest[bucket] = match;
+    }
+    joined.index[v] = static_cast<unsigned>(match);
+  }
+  return joined;
+}
+
 bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
   try {
     Assimp::Importer importer;
     // URDF and SDF use mesh coordinates as written: do not rotate a Z_UP (or X_UP) DAE to Y_UP.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     const aiScene* scene =
-        importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+        importer.ReadFile(path, aiProcess_Triangulate);  // and JoinIdenticalVertices, below
     if (scene == nullptr || scene->mRootNode == nullptr) {
       if (error) {
         *error =
             "mesh file '" + std::string(path) + "' cannot be read: " + importer.GetErrorString();
       }
       return false;
+    }
+    std::vector<Joined> joins;
+    joins.reserve(scene->mNumMeshes);
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      joins.push_back(JoinIdenticalVertices(*scene->mMeshes[m]));
     }
     TriangleMesh result;
     std::string problem;
@@ -52,12 +138,13 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
         if (node->mMeshes[m] >= scene->mNumMeshes) continue;
         const aiMesh* part = scene->mMeshes[node->mMeshes[m]];
         const std::size_t offset = result.vertices.size();
-        if (offset + part->mNumVertices >
+        const Joined& joined = joins[node->mMeshes[m]];
+        if (offset + joined.kept.size() >
             static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
           problem = "more than 2^31 vertices";
           break;
         }
-        for (unsigned v = 0; v < part->mNumVertices; ++v) {
+        for (const unsigned v : joined.kept) {
           const aiVector3D p = X_FileNode * part->mVertices[v];
           result.vertices.emplace_back(p.x, p.y, p.z);
           if (!result.vertices.back().allFinite()) problem = "a vertex is not finite";
@@ -65,8 +152,13 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
         for (unsigned f = 0; f < part->mNumFaces; ++f) {
           const aiFace& face = part->mFaces[f];
           if (face.mNumIndices != 3) continue;  // Points and lines have no volume.
+          if (face.mIndices[0] >= part->mNumVertices || face.mIndices[1] >= part->mNumVertices ||
+              face.mIndices[2] >= part->mNumVertices) {
+            problem = "a face names a vertex its mesh does not have";
+            break;
+          }
           const auto index = [&](unsigned k) {
-            return static_cast<std::int32_t>(offset + face.mIndices[k]);
+            return static_cast<std::int32_t>(offset + joined.index[face.mIndices[k]]);
           };
           if (mirrored) {
             result.triangles.push_back({index(0), index(2), index(1)});

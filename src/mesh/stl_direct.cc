@@ -9,43 +9,132 @@
 #include <cerrno>
 #include <cmath>
 #include <exception>
+#include <functional>
+#include <unordered_map>
 #include <utility>
 
 namespace massprops::internal {
 namespace {
 
 // A binary STL (its size already checked: 84 + 50·count bytes) as DirectStl says. Assimp 5.2's
-// STL importer gives every corner the facet's normal; aiProcess_JoinIdenticalVertices then walks
-// the corners in order and keeps one unless an earlier kept corner is at the same position (its
-// spatial sort's tolerance of a few ULPs of the squared distance is exact equality at any length
-// above 1e-20) with a normal within 1e-5 (squared distance in float arithmetic, not above 1e-10;
-// a NaN normal matches). Where several kept corners could take one, they share its position, so
-// every number derived from the mesh is the same whichever is named. Positions are compared in
-// float (-0 == +0) through one hash table. False when a coordinate is not finite, a facet has a
-// color (bit 15 of its attribute: assimp then gives every corner a color, which its join compares
-// too; whatever the header says, no facet color means no vertex color), or there are more than
-// 2^31 - 1 corners.
+// STL importer gives every corner the facet's normal; its aiProcess_JoinIdenticalVertices then
+// walks the corners in order and keeps one unless an element of its hash bucket (see
+// JoinIdenticalVertices in mesh_libraries.cc) has a position and a normal each within 1e-5
+// (squared distance in float arithmetic, not above 1e-10; a NaN distance matches). Within a
+// bucket that is the same position (-0 and +0 alike), unless two positions within 1e-5 of each
+// other share a bucket: such a file is left to assimp. Where several kept corners could take one,
+// they share its position, so every number derived from the mesh is the same whichever is named.
+// False when a coordinate is not finite, a facet has a color (bit 15 of its attribute: assimp
+// then gives every corner a color; whatever the header says, no facet color means no vertex
+// color), two positions could be joined as above, or there are more than 2^31 - 1 corners.
+// The distinct positions of a binary STL: one slot per position (open addressing, linear probing,
+// at most half full) holding the position, its index and its last kept corner, all a probe needs
+// in 20 bytes. Positions are compared in float (-0 == +0).
+class PositionTable {
+ public:
+  struct Slot {
+    std::array<float, 3> p;
+    std::int32_t position = -1;  // -1: empty
+    std::int32_t last = -1;      // the last corner kept at this position, or -1
+  };
+
+  explicit PositionTable(std::size_t corners) {
+    while (capacity_ < corners / 2) capacity_ *= 2;  // about twice the positions of a closed mesh
+    table_.resize(capacity_);
+  }
+
+  // The slot of p (empty when p is new).
+  Slot& Find(const std::array<float, 3>& p) { return table_[SlotOf(p)]; }
+  // Asks the memory for p's first probe early: these are where the time goes, a cache miss each.
+  void Prefetch(const std::array<float, 3>& p) const {
+    __builtin_prefetch(&table_[Hash(p) & (capacity_ - 1)]);
+  }
+  // Fills the empty slot of p as position `position`; the slot of p again (the table may grow).
+  Slot& Insert(Slot& slot, const std::array<float, 3>& p, std::int32_t position) {
+    slot.p = p;
+    slot.position = position;
+    if (2 * static_cast<std::size_t>(++positions_) <= capacity_) return slot;
+    std::vector<Slot> old(2 * capacity_);  // grow: every slot moved to a table twice as big
+    old.swap(table_);
+    capacity_ *= 2;
+    for (const Slot& moved : old) {
+      if (moved.position >= 0) table_[SlotOf(moved.p)] = moved;
+    }
+    return Find(p);
+  }
+
+ private:
+  static std::uint32_t Bits(float v) {
+    std::uint32_t u;
+    const float w = v + 0.0f;  // -0 + 0 == +0
+    std::memcpy(&u, &w, sizeof u);
+    return u;
+  }
+  static std::uint64_t Hash(const std::array<float, 3>& p) {
+    std::uint64_t h = Bits(p[0]) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 29) ^ Bits(p[1])) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 32) ^ Bits(p[2])) * 0x94D049BB133111EBull;
+    return h ^ (h >> 31);
+  }
+  std::size_t SlotOf(const std::array<float, 3>& p) const {
+    std::size_t slot = Hash(p) & (capacity_ - 1);
+    while (table_[slot].position >= 0 && table_[slot].p != p) slot = (slot + 1) & (capacity_ - 1);
+    return slot;
+  }
+  std::size_t capacity_ = 1024;
+  std::int64_t positions_ = 0;
+  std::vector<Slot> table_;
+};
+
+// Assimp's join looks a vertex up in a std::unordered_map reserved for every corner, hashed by its
+// position (mesh_libraries.cc), and compares it with every element of its bucket: a position
+// within 1e-5 of another in the same bucket (float arithmetic) could be joined to it. Add() tells
+// whether a new position has such a neighbour in assimp's bucket.
+class AssimpBuckets {
+ public:
+  explicit AssimpBuckets(std::size_t corners) {
+    std::unordered_map<unsigned, unsigned> probe;  // the bucket count assimp's map gets
+    probe.reserve(corners);
+    head_.assign(probe.bucket_count(), -1);
+  }
+  // True when p (not yet added) is within 1e-5 of an earlier position of its bucket; else adds it
+  // as the next position.
+  bool Add(const std::array<float, 3>& p, const std::vector<Eigen::Vector3d>& positions) {
+    std::size_t seed = 0;
+    for (const float c : p) seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
+    const std::size_t bucket = seed % head_.size();
+    for (std::int32_t q = head_[bucket]; q >= 0; q = next_[static_cast<std::size_t>(q)]) {
+      const Eigen::Vector3d& v = positions[static_cast<std::size_t>(q)];
+      const float dx = p[0] - static_cast<float>(v.x()), dy = p[1] - static_cast<float>(v.y()),
+                  dz = p[2] - static_cast<float>(v.z());
+      if (!(dx * dx + dy * dy + dz * dz > 1e-5f * 1e-5f)) return true;
+    }
+    next_.push_back(head_[bucket]);
+    head_[bucket] = static_cast<std::int32_t>(next_.size() - 1);
+    return false;
+  }
+
+ private:
+  std::vector<std::int32_t> head_;  // per bucket: its last position
+  std::vector<std::int32_t> next_;  // per position: the one before it in its bucket
+};
+
+bool HasColoredFacet(const std::string& bytes, std::uint32_t count) {
+  for (std::uint32_t t = 0; t < count; ++t) {
+    std::uint16_t attribute = 0;
+    std::memcpy(&attribute, bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 48, 2);
+    if (attribute & 0x8000) return true;
+  }
+  return false;
+}
+
 bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
   std::uint32_t count = 0;
   std::memcpy(&count, bytes.data() + 80, sizeof(count));
   const std::size_t corners = 3 * static_cast<std::size_t>(count);
-  if (count == 0 || corners > 0x7fffffff) return false;
-  for (std::uint32_t t = 0; t < count; ++t) {
-    std::uint16_t attribute = 0;
-    std::memcpy(&attribute, bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 48, 2);
-    if (attribute & 0x8000) return false;
-  }
-  // One slot per distinct position (open addressing, linear probing, at most half full): the
-  // position, its index and its last kept corner; the kept corners at one position are chained
-  // from the last back (previous). A slot holds all a probe needs, in 20 bytes.
-  struct Slot {
-    std::array<float, 3> p;
-    std::int32_t position = -1;  // -1: empty
-    std::int32_t last = -1;
-  };
-  std::size_t capacity = 1024;
-  while (capacity < corners / 2) capacity *= 2;  // about twice the positions of a closed mesh
-  std::vector<Slot> table(capacity);
+  if (count == 0 || corners > 0x7fffffff || HasColoredFacet(bytes, count)) return false;
+  PositionTable table(corners);
+  AssimpBuckets buckets(corners);
   std::vector<std::array<float, 3>> normal_of;  // per kept corner
   std::vector<std::int32_t> previous;           // per kept corner: the one kept before it there
   normal_of.reserve(corners);
@@ -55,65 +144,32 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
   TriangleMesh& mesh = stl->mesh;
   mesh.vertices.reserve(corners / 4);
   mesh.triangles.resize(count);
-  auto bits = [](float v) {
-    std::uint32_t u;
-    const float w = v + 0.0f;  // -0 + 0 == +0
-    std::memcpy(&u, &w, sizeof u);
-    return u;
+  auto corner = [&](std::uint32_t t, int v) {
+    std::array<float, 3> p;
+    std::memcpy(p.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 12 * (v + 1), 12);
+    return p;
   };
-  auto hash_of = [&](const std::array<float, 3>& p) {
-    std::uint64_t h = bits(p[0]) * 0x9E3779B97F4A7C15ull;
-    h = (h ^ (h >> 29) ^ bits(p[1])) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 32) ^ bits(p[2])) * 0x94D049BB133111EBull;
-    return h ^ (h >> 31);
-  };
-  auto slot_of = [&](const std::array<float, 3>& p) {
-    std::size_t slot = hash_of(p) & (capacity - 1);
-    while (table[slot].position >= 0 && table[slot].p != p) slot = (slot + 1) & (capacity - 1);
-    return slot;
-  };
-  // The slots are where the time goes (a cache miss each): those of a triangle a few ahead are
-  // asked for early.
-  constexpr std::uint32_t kAhead = 8;
+  constexpr std::uint32_t kAhead = 8;  // the slots of a triangle this far ahead are prefetched
   for (std::uint32_t t = 0; t < count; ++t) {
-    if (t + kAhead < count) {
-      const char* ahead = bytes.data() + 84 + 50 * static_cast<std::size_t>(t + kAhead);
-      for (int v = 0; v < 3; ++v) {
-        std::array<float, 3> p;
-        std::memcpy(p.data(), ahead + 12 * (v + 1), sizeof(p));
-        __builtin_prefetch(&table[hash_of(p) & (capacity - 1)]);
-      }
-    }
-    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
+    for (int v = 0; v < 3 && t + kAhead < count; ++v) table.Prefetch(corner(t + kAhead, v));
     std::array<float, 3> normal;
-    std::memcpy(normal.data(), facet, sizeof(normal));
+    std::memcpy(normal.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t), 12);
     for (int v = 0; v < 3; ++v) {
-      std::array<float, 3> p;
-      std::memcpy(p.data(), facet + 12 * (v + 1), sizeof(p));
+      const std::array<float, 3> p = corner(t, v);
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
-      Slot* slot = &table[slot_of(p)];
+      PositionTable::Slot* slot = &table.Find(p);
       if (slot->position < 0) {
-        slot->p = p;
-        slot->position = static_cast<std::int32_t>(mesh.vertices.size());
+        if (buckets.Add(p, mesh.vertices)) return false;  // left to assimp
+        slot = &table.Insert(*slot, p, static_cast<std::int32_t>(mesh.vertices.size()));
         // + 0.0: LoadMeshFile applies the scene's (identity) transform, whose translation turns
         // a -0 coordinate into +0.
         mesh.vertices.emplace_back(p[0] + 0.0, p[1] + 0.0, p[2] + 0.0);
-        if (2 * mesh.vertices.size() > capacity) {  // grow: every slot moved to a table twice as big
-          std::vector<Slot> old(2 * capacity);
-          old.swap(table);
-          capacity *= 2;
-          for (const Slot& moved : old) {
-            if (moved.position >= 0) table[slot_of(moved.p)] = moved;
-          }
-          slot = &table[slot_of(p)];
-        }
       }
       std::int32_t joined = -1;
       for (std::int32_t k = slot->last; k >= 0 && joined < 0; k = previous[k]) {
         const std::array<float, 3>& n = normal_of[static_cast<std::size_t>(k)];
         const float dx = normal[0] - n[0], dy = normal[1] - n[1], dz = normal[2] - n[2];
-        const float square_epsilon = 1e-5f * 1e-5f;
-        if (!(dx * dx + dy * dy + dz * dz > square_epsilon)) joined = k;
+        if (!(dx * dx + dy * dy + dz * dz > 1e-5f * 1e-5f)) joined = k;
       }
       if (joined < 0) {
         joined = static_cast<std::int32_t>(normal_of.size());

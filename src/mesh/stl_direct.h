@@ -22,7 +22,8 @@ namespace massprops::internal {
 /// What one read of an STL file gives.
 struct DirectStl {
   /// A binary STL (84 + 50·n bytes exactly, as assimp 5.2 tells it from ascii) without colored
-  /// facets (bit 15 of a facet's attribute): each distinct position once, in order of first
+  /// facets (bit 15 of a facet's attribute) nor two positions assimp's join could merge
+  /// (stl_direct.cc): each distinct position once, in order of first
   /// appearance (-0 and +0 the same, written +0), and the triangles naming them. An ascii STL:
   /// every corner its own vertex, the "vertex" triples in order. Either way the same triangles,
   /// in the same order and with the same corner coordinates, as LoadMeshFile's mesh (the 32-bit
@@ -32,7 +33,8 @@ struct DirectStl {
   /// points (MeshPoints::positions), and JoinedMesh() gives LoadMeshFile's mesh: assimp 5.2's
   /// importer gives each corner the facet's normal, and its aiProcess_JoinIdenticalVertices keeps
   /// a corner unless an earlier kept one has the same position and a normal within 1e-5; its
-  /// vertex k is the kept corner k, at position vertex_position[k], and its triangles name them.
+  /// vertex k is the kept corner k, at position vertex_position[k], and its triangles name them
+  /// (joined_triangles).
   bool joined = false;
   std::vector<std::int32_t> vertex_position;
   std::vector<std::array<std::int32_t, 3>> joined_triangles;
