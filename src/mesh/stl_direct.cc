@@ -45,9 +45,10 @@ class PositionTable {
 
   // The slot of p (empty when p is new).
   Slot& Find(const std::array<float, 3>& p) { return table_[SlotOf(p)]; }
-  // Asks the memory for p's first probe early: these are where the time goes, a cache miss each.
-  void Prefetch(const std::array<float, 3>& p) const {
-    __builtin_prefetch(&table_[Hash(p) & (capacity_ - 1)]);
+  // Where p's first probe looks: asked of the memory early (__builtin_prefetch), as these are
+  // where the time goes, a cache miss each.
+  const Slot* FirstProbe(const std::array<float, 3>& p) const {
+    return table_.data() + (Hash(p) & (capacity_ - 1));
   }
   // Fills the empty slot of p as position `position`; the slot of p again (the table may grow).
   Slot& Insert(Slot& slot, const std::array<float, 3>& p, std::int32_t position) {
@@ -88,35 +89,53 @@ class PositionTable {
 
 // Assimp's join looks a vertex up in a std::unordered_map reserved for every corner, hashed by its
 // position (mesh_libraries.cc), and compares it with every element of its bucket: a position
-// within 1e-5 of another in the same bucket (float arithmetic) could be joined to it. Add() tells
-// whether a new position has such a neighbour in assimp's bucket.
+// within 1e-5 of another in the same bucket (float arithmetic) could be joined to it. NearPair()
+// tells whether two of the distinct positions are such a pair. Few buckets hold two positions (a
+// closed mesh has about a sixth as many positions as corners): one bit per bucket (a table small
+// enough to stay in cache) finds them, then only the positions of those buckets are compared.
 class AssimpBuckets {
  public:
   explicit AssimpBuckets(std::size_t corners) {
     std::unordered_map<unsigned, unsigned> probe;  // the bucket count assimp's map gets
     probe.reserve(corners);
-    head_.assign(probe.bucket_count(), -1);
+    buckets_ = probe.bucket_count();
+    seen_.assign((buckets_ + 63) / 64, 0);
   }
-  // True when p (not yet added) is within 1e-5 of an earlier position of its bucket; else adds it
-  // as the next position.
-  bool Add(const std::array<float, 3>& p, const std::vector<Eigen::Vector3d>& positions) {
+  // Notes the next position (positions are added in order).
+  void Add(const std::array<float, 3>& p) {
     std::size_t seed = 0;
     for (const float c : p) seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
-    const std::size_t bucket = seed % head_.size();
-    for (std::int32_t q = head_[bucket]; q >= 0; q = next_[static_cast<std::size_t>(q)]) {
-      const Eigen::Vector3d& v = positions[static_cast<std::size_t>(q)];
-      const float dx = p[0] - static_cast<float>(v.x()), dy = p[1] - static_cast<float>(v.y()),
-                  dz = p[2] - static_cast<float>(v.z());
-      if (!(dx * dx + dy * dy + dz * dz > 1e-5f * 1e-5f)) return true;
+    const std::size_t bucket = seed % buckets_;
+    bucket_of_.push_back(bucket);
+    std::uint64_t& word = seen_[bucket / 64];
+    const std::uint64_t bit = std::uint64_t{1} << (bucket % 64);
+    if (word & bit) shared_.push_back(bucket);
+    word |= bit;
+  }
+  bool NearPair(const std::vector<Eigen::Vector3d>& positions) const {
+    if (shared_.empty()) return false;
+    std::unordered_map<std::size_t, std::vector<std::size_t>> members;
+    for (const std::size_t bucket : shared_) members[bucket];
+    for (std::size_t i = 0; i < bucket_of_.size(); ++i) {
+      const auto it = members.find(bucket_of_[i]);
+      if (it != members.end()) it->second.push_back(i);
     }
-    next_.push_back(head_[bucket]);
-    head_[bucket] = static_cast<std::int32_t>(next_.size() - 1);
+    for (const auto& [bucket, list] : members) {
+      for (std::size_t a = 0; a < list.size(); ++a) {
+        for (std::size_t b = a + 1; b < list.size(); ++b) {
+          const Eigen::Vector3f d = positions[list[a]].cast<float>() - positions[list[b]].cast<float>();
+          if (!(d.x() * d.x() + d.y() * d.y() + d.z() * d.z() > 1e-5f * 1e-5f)) return true;
+        }
+      }
+    }
     return false;
   }
 
  private:
-  std::vector<std::int32_t> head_;  // per bucket: its last position
-  std::vector<std::int32_t> next_;  // per position: the one before it in its bucket
+  std::size_t buckets_ = 1;
+  std::vector<std::uint64_t> seen_;      // one bit per bucket: holds a position
+  std::vector<std::size_t> bucket_of_;   // per position
+  std::vector<std::size_t> shared_;      // buckets found holding a second position
 };
 
 bool HasColoredFacet(const std::string& bytes, std::uint32_t count) {
@@ -151,7 +170,9 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
   };
   constexpr std::uint32_t kAhead = 8;  // the slots of a triangle this far ahead are prefetched
   for (std::uint32_t t = 0; t < count; ++t) {
-    for (int v = 0; v < 3 && t + kAhead < count; ++v) table.Prefetch(corner(t + kAhead, v));
+    if (t + kAhead < count) {
+      for (int v = 0; v < 3; ++v) __builtin_prefetch(table.FirstProbe(corner(t + kAhead, v)));
+    }
     std::array<float, 3> normal;
     std::memcpy(normal.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t), 12);
     for (int v = 0; v < 3; ++v) {
@@ -159,7 +180,7 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
       PositionTable::Slot* slot = &table.Find(p);
       if (slot->position < 0) {
-        if (buckets.Add(p, mesh.vertices)) return false;  // left to assimp
+        buckets.Add(p);
         slot = &table.Insert(*slot, p, static_cast<std::int32_t>(mesh.vertices.size()));
         // + 0.0: LoadMeshFile applies the scene's (identity) transform, whose translation turns
         // a -0 coordinate into +0.
@@ -182,6 +203,7 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
       mesh.triangles[t][static_cast<std::size_t>(v)] = slot->position;
     }
   }
+  if (buckets.NearPair(mesh.vertices)) return false;  // left to assimp
   stl->joined = true;
   return true;
 }
