@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "massprops/mesh/mesh_inertia.h"
@@ -158,6 +159,43 @@ TEST_F(StlOneReadTest, OpenMeshGetsTheHullOfTheLoadersVertices) {
   bytes.replace(80, 4, reinterpret_cast<const char*>(&count), 4);
   bytes.resize(84 + 50 * 3);
   ExpectLoaderMesh(Write("open.stl", bytes));
+}
+
+// Assimp 5.2.4 joins a vertex with any element of its hash bucket that is within 1e-5 in position
+// and normal, not only with one at the same position: two nearby positions that share a bucket
+// are joined. The direct reader leaves such a file to assimp. The file: the tetrahedron with the
+// origin corner of its third facet (whose normal is within 1e-5 of the first's) moved by d < 1e-5
+// along x, d chosen so that both positions land in one bucket of assimp's table (its hash: boost's
+// hash_combine of std::hash<float>; its bucket count: a std::unordered_map reserved for the 12
+// corners, as assimp reserves its own). Assimp's mesh then has one vertex fewer than exact
+// positions would give: the test fails if the direct reader does not leave the file to assimp.
+TEST_F(StlOneReadTest, NearbyPositionsInOneBucketOfAssimpsTable) {
+  std::unordered_map<unsigned, unsigned> probe;
+  probe.reserve(12);
+  const std::size_t buckets = probe.bucket_count();
+  auto bucket = [&](float x) {
+    std::size_t seed = 0;
+    for (const float c : {x, 0.0f, 0.0f}) {
+      seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
+    }
+    return seed % buckets;
+  };
+  float d = 0;
+  for (int k = 1; k < 90 && d == 0; ++k) {
+    if (bucket(k * 1e-7f) == bucket(0.0f)) d = k * 1e-7f;
+  }
+  ASSERT_GT(d, 0) << "no offset below 1e-5 shares the origin's bucket";
+  std::string bytes = Tetrahedron("near", 0);
+  // Facet 3 starts at 84 + 2·50; its first corner after the 12-byte normal.
+  bytes.replace(84 + 2 * 50 + 12, 4, reinterpret_cast<const char*>(&d), 4);
+  const std::string path = Write("near.stl", bytes);
+  TriangleMesh assimp;
+  std::string error;
+  ASSERT_TRUE(LoadMeshFile(path, &assimp, &error)) << error;
+  // 12 corners: facet 3's corner (0, 1, 0) joined by its near normal, and its corner (d, 0, 0)
+  // joined to the origin (counted by hand: 3 + 3 + 1 + 3 kept).
+  EXPECT_EQ(assimp.vertices.size(), 10u);
+  ExpectLoaderMesh(path);
 }
 
 // Every binary STL shipped in testdata and in ../shared/corpus.
