@@ -116,19 +116,30 @@ void ExpectLoaderMesh(const std::string& path) {
   for (std::size_t i = 0; i < positions.size(); ++i) {
     EXPECT_TRUE(points->positions[i] == positions[i]) << path << " point " << i;
   }
-  // The mass properties, from the same read, as assimp's mesh gives them (and as the model it
-  // needs: closed solid or, when open, the convex hull of the loader's vertices).
-  MeshInertiaOptions options;
-  options.open_mesh_model = MeshSolidModel::kConvexHull;
-  const auto from_cache = cache.MassProperties(path, Eigen::Vector3d(1, 1, 1), options, &error);
-  ASSERT_TRUE(from_cache) << error;
-  const MeshMassProperties expected = CalcMeshMassProperties(assimp, options);
-  EXPECT_EQ(from_cache->volume, expected.volume) << path;
-  EXPECT_TRUE(from_cache->p_GoGcm_G == expected.p_GoGcm_G) << path;
-  EXPECT_TRUE(from_cache->I_GGcm_G.CopyToFullMatrix3() == expected.I_GGcm_G.CopyToFullMatrix3())
-      << path;
-  EXPECT_EQ(from_cache->diagnostics.model, expected.diagnostics.model) << path;
-  EXPECT_EQ(from_cache->diagnostics.boundary_edges, expected.diagnostics.boundary_edges) << path;
+  // The mass properties, from the same read, as assimp's mesh gives them, with each model of an
+  // open mesh (closed solid: integrated as it is; convex hull of the loader's vertices; thin
+  // shell), and what users are told about the mesh.
+  for (const MeshSolidModel model : {MeshSolidModel::kClosedSolid, MeshSolidModel::kConvexHull,
+                                     MeshSolidModel::kThinShell}) {
+    MeshInertiaOptions options;
+    options.open_mesh_model = model;
+    const auto from_cache = cache.MassProperties(path, Eigen::Vector3d(1, 1, 1), options, &error);
+    ASSERT_TRUE(from_cache) << error;
+    const MeshMassProperties expected = CalcMeshMassProperties(assimp, options);
+    const std::string what = path + " as " + ToString(model);
+    EXPECT_EQ(from_cache->volume, expected.volume) << what;
+    EXPECT_EQ(from_cache->area, expected.area) << what;
+    EXPECT_TRUE(from_cache->p_GoGcm_G == expected.p_GoGcm_G) << what;
+    EXPECT_TRUE(from_cache->I_GGcm_G.CopyToFullMatrix3() == expected.I_GGcm_G.CopyToFullMatrix3())
+        << what;
+    EXPECT_EQ(from_cache->diagnostics.model, expected.diagnostics.model) << what;
+    EXPECT_EQ(from_cache->diagnostics.boundary_edges, expected.diagnostics.boundary_edges) << what;
+    EXPECT_EQ(from_cache->diagnostics.fallback_reason, expected.diagnostics.fallback_reason)
+        << what;
+    EXPECT_EQ(DescribeMeshDiagnostics(from_cache->diagnostics),
+              DescribeMeshDiagnostics(expected.diagnostics))
+        << what;
+  }
 }
 
 TEST_F(StlOneReadTest, BinaryStlIsTheLoadersMeshWithSignedZerosAndNearNormals) {

@@ -256,17 +256,16 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
   unit_density.density = 1;
   std::string why;
   try {
-    // An STL read directly: its triangles are LoadMeshFile's, so the same numbers when they bound
-    // a solid (the probe models an open mesh as a thin shell, cheap: no hull; its result is then
-    // dropped). Else LoadMeshFile's mesh (a binary STL's from the same read; the hull is computed
-    // from its vertex list).
+    // An STL read directly: a binary STL's triangles are LoadMeshFile's, so the same numbers for
+    // every model but the convex hull, which qhull computes from the vertex list. With the hull
+    // model, the probe models an open mesh as a thin shell (cheap) and its result is dropped when
+    // the mesh turns out open: then LoadMeshFile's mesh (a binary STL's from the same read).
     ReadDirectLocked(state, path);
     std::optional<MeshMassProperties> properties;
     if (state.direct) {
+      const bool hull = unit_density.open_mesh_model == MeshSolidModel::kConvexHull;
       MeshInertiaOptions probe = unit_density;
-      if (probe.open_mesh_model != MeshSolidModel::kClosedSolid) {
-        probe.open_mesh_model = MeshSolidModel::kThinShell;
-      }
+      if (hull) probe.open_mesh_model = MeshSolidModel::kThinShell;
       const TriangleMesh* triangles = &state.direct->mesh;
       TriangleMesh scaled;
       if (!IsIdentity(scale)) {
@@ -275,7 +274,12 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
       }
       properties = internal::CalcMeshMassProperties(*triangles, probe,
                                                     state.direct->joined && StayDistinct(scale));
-      if (properties->diagnostics.model != MeshSolidModel::kClosedSolid) properties.reset();
+      // An ascii STL's triangles are assimp's only when no nearby positions share one of its
+      // buckets (stl_direct.cc), which is not checked there: its numbers are kept only for a
+      // closed solid, whose integral any such join would hardly change, as before.
+      const bool keep = properties->diagnostics.model == MeshSolidModel::kClosedSolid ||
+                        (!hull && state.direct->joined);
+      if (!keep) properties.reset();
     }
     if (!properties) {
       if (std::shared_ptr<const TriangleMesh> mesh = LoadLocked(state, path, &why)) {

@@ -24,9 +24,10 @@ namespace {
 // bucket that is the same position (-0 and +0 alike), unless two positions within 1e-5 of each
 // other share a bucket: such a file is left to assimp. Where several kept corners could take one,
 // they share its position, so every number derived from the mesh is the same whichever is named.
-// False when a coordinate is not finite, a facet has a color (bit 15 of its attribute: assimp
-// then gives every corner a color; whatever the header says, no facet color means no vertex
-// color), two positions could be joined as above, or there are more than 2^31 - 1 corners.
+// Colors (a SolidWorks "COLOR=" header, bit 15 of a facet's attribute) do not matter: assimp
+// 5.2.4's join does not compare them. False when a coordinate is not finite, two positions could
+// be joined as above (assimp's triangles then differ from the file's), or there are more than
+// 2^31 - 1 corners.
 // The distinct positions of a binary STL: one slot per position (open addressing, linear probing,
 // at most half full) holding the position, its index and its last kept corner, all a probe needs
 // in 20 bytes. Positions are compared in float (-0 == +0).
@@ -138,20 +139,11 @@ class AssimpBuckets {
   std::vector<std::size_t> shared_;      // buckets found holding a second position
 };
 
-bool HasColoredFacet(const std::string& bytes, std::uint32_t count) {
-  for (std::uint32_t t = 0; t < count; ++t) {
-    std::uint16_t attribute = 0;
-    std::memcpy(&attribute, bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 48, 2);
-    if (attribute & 0x8000) return true;
-  }
-  return false;
-}
-
 bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
   std::uint32_t count = 0;
   std::memcpy(&count, bytes.data() + 80, sizeof(count));
   const std::size_t corners = 3 * static_cast<std::size_t>(count);
-  if (count == 0 || corners > 0x7fffffff || HasColoredFacet(bytes, count)) return false;
+  if (count == 0 || corners > 0x7fffffff) return false;
   PositionTable table(corners);
   AssimpBuckets buckets(corners);
   std::vector<std::array<float, 3>> normal_of;  // per kept corner
@@ -208,28 +200,6 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
   return true;
 }
 
-// Every corner of a binary STL its own vertex (a file with colored facets: its triangles only).
-bool BinaryStlCorners(const std::string& bytes, TriangleMesh* mesh) {
-  std::uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, sizeof(count));
-  if (count == 0 || 3 * static_cast<std::uint64_t>(count) > 0x7fffffff) return false;
-  mesh->vertices.reserve(3 * static_cast<std::size_t>(count));
-  mesh->triangles.reserve(count);
-  for (std::uint32_t t = 0; t < count; ++t) {
-    const char* facet = bytes.data() + 84 + 50 * static_cast<std::size_t>(t);
-    const std::int32_t first = static_cast<std::int32_t>(mesh->vertices.size());
-    for (int v = 0; v < 3; ++v) {
-      float xyz[3];
-      std::memcpy(xyz, facet + 12 * (v + 1), sizeof(xyz));  // after the 12-byte normal
-      const Eigen::Vector3d p(xyz[0], xyz[1], xyz[2]);
-      if (!p.allFinite()) return false;
-      mesh->vertices.push_back(p);
-    }
-    mesh->triangles.push_back({first, first + 1, first + 2});
-  }
-  return true;
-}
-
 // The triangles of an ascii STL: its "vertex" triples in order; as many as its "endfacet"s (a
 // facet of another vertex count is left to assimp).
 bool AsciiStlTriangles(const std::string& bytes, TriangleMesh* mesh) {
@@ -261,10 +231,6 @@ bool ReadStlDirect(const std::string& bytes, DirectStl* stl) {
     if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, sizeof(count));
     if (bytes.size() >= 84 && 84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) {
       ok = BinaryStlJoined(bytes, &found);
-      if (!ok) {
-        found = DirectStl();
-        ok = BinaryStlCorners(bytes, &found.mesh);
-      }
     } else {
       const std::size_t first = bytes.find_first_not_of(" \t\r\n\f\v");
       ok = first != std::string::npos && bytes.compare(first, 5, "solid") == 0 &&

@@ -21,9 +21,8 @@ namespace massprops::internal {
 
 /// What one read of an STL file gives.
 struct DirectStl {
-  /// A binary STL (84 + 50·n bytes exactly, as assimp 5.2 tells it from ascii) without colored
-  /// facets (bit 15 of a facet's attribute) nor two positions assimp's join could merge
-  /// (stl_direct.cc): each distinct position once, in order of first
+  /// A binary STL (84 + 50·n bytes exactly, as assimp 5.2 tells it from ascii) without two
+  /// nearby positions assimp's join could merge (stl_direct.cc): each distinct position once, in order of first
   /// appearance (-0 and +0 the same, written +0), and the triangles naming them. An ascii STL:
   /// every corner its own vertex, the "vertex" triples in order. Either way the same triangles,
   /// in the same order and with the same corner coordinates, as LoadMeshFile's mesh (the 32-bit
