@@ -82,15 +82,24 @@ Joined JoinIdenticalVertices(const aiMesh& mesh) {
     probe.reserve(n);
     return probe.bucket_count();
   }();
-  std::vector<std::int64_t> newest(buckets, -1);  // per bucket: its newest kept vertex
-  std::vector<std::int64_t> older;                // per kept vertex: the next older in its bucket
+  // Each used vertex's bucket first (a pass over the positions), so that the bucket a few
+  // vertices ahead is asked of the memory early: its first read is a cache miss.
+  std::vector<std::size_t> bucket_of(n, 0);
   for (unsigned v = 0; v < n; ++v) {
     if (!used[v]) continue;
     std::size_t seed = 0;
     for (const float c : {mesh.mVertices[v].x, mesh.mVertices[v].y, mesh.mVertices[v].z}) {
       seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
     }
-    const std::size_t bucket = seed % buckets;
+    bucket_of[v] = seed % buckets;
+  }
+  std::vector<std::int64_t> newest(buckets, -1);  // per bucket: its newest kept vertex
+  std::vector<std::int64_t> older;                // per kept vertex: the next older in its bucket
+  constexpr unsigned kAhead = 16;
+  for (unsigned v = 0; v < n; ++v) {
+    if (v + kAhead < n) __builtin_prefetch(&newest[bucket_of[v + kAhead]]);
+    if (!used[v]) continue;
+    const std::size_t bucket = bucket_of[v];
     std::int64_t match = -1;
     for (std::int64_t k = newest[bucket]; k >= 0 && match < 0; k = older[k]) {
       if (equal(v, joined.kept[k])) match = k;

@@ -61,11 +61,11 @@ struct MeshInertiaOptions {
   double closure_tolerance = 1e-6;
   /// Density of the material: mass = density × volume.
   double density = 1.0;
-  /// MeshCache::MassProperties only: read an STL file's triangles directly, without assimp
-  /// (the same triangles, floats and order, so the same volume, center and inertia; the vertices
-  /// are not joined, so num_vertices and duplicate_vertices_merged count every corner). Loading
-  /// assimp and its post-processing cost 5 to 7 times a whole `massprops check` of a robot with
-  /// STL meshes: the density rules, which run by default, set it (docs/rules.md).
+  /// MeshCache::MassProperties only, kept for the cache's key: MeshCache reads an STL file's
+  /// triangles directly, without assimp, whatever it says (the same triangles, floats and order,
+  /// so the same volume, center and inertia; num_vertices and duplicate_vertices_merged may then
+  /// count the file's distinct positions or every corner rather than LoadMeshFile's vertices).
+  /// The density rules, which run by default, set it (docs/rules.md).
   bool read_stl_directly = false;
 };
 

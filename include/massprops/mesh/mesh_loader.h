@@ -101,8 +101,9 @@ std::optional<std::string> ResolveGeometryMeshUri(const Geometry& geometry,
 /// where the format says so: the scene graph's node transforms are applied, and a DAE
 /// <unit meter="..."> is honoured (assimp 5.2 puts it into the root node's transform; the DAE
 /// <up_axis> is ignored: URDF and SDF take mesh coordinates as they are written). Only assimp's
-/// aiProcess_Triangulate and aiProcess_JoinIdenticalVertices are applied (nothing that changes the
-/// geometry); points and lines are dropped. Assimp holds coordinates as 32-bit floats, so
+/// aiProcess_Triangulate is applied, and identical vertices are joined exactly as assimp 5.2.4's
+/// aiProcess_JoinIdenticalVertices joins them, at a fraction of its cost (docs/meshes.md,
+/// "Vertex joining"): nothing that changes the geometry; points and lines are dropped. Assimp holds coordinates as 32-bit floats, so
 /// vertices carry a relative rounding of up to 6e-8. Returns false and sets *error (if not null)
 /// when the file cannot be read or parsed, or holds no triangle.
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error);
@@ -136,9 +137,9 @@ constexpr std::uint64_t kDefaultMeshCacheBytes = std::uint64_t{512} << 20;
 
 /// Mesh files read once per run: their boxes, hull-bound points and mass properties per (file,
 /// scale, options), and, with UsePersistentCache, kept between runs. A binary STL is read once,
-/// directly (no assimp), for all of them; assimp (LoadMeshFile) reads other formats, and an STL
-/// whose mass properties need its convex hull or thin shell (an open mesh), so that every number
-/// is the one LoadMeshFile's mesh gives. Thread-safe: different files are read in parallel.
+/// directly (no assimp), for all of them and for Load (LoadMeshFile's mesh made from the same
+/// read; docs/meshes.md, "Binary STL, one read"); assimp (LoadMeshFile) reads other formats, so
+/// that every number is the one LoadMeshFile's mesh gives. Thread-safe: different files are read in parallel.
 class MeshCache {
  public:
   MeshCache();
