@@ -8,22 +8,17 @@
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <assimp/Importer.hpp>
-#include <cctype>
-#include <cmath>
-#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "massprops/mesh/mesh_loader.h"
+#include "mesh_test_support.h"
 
 namespace massprops {
 namespace {
-namespace fs = std::filesystem;
-
 // Assimp's import with its own joining, as one mesh in the file's frame; false if it fails.
 bool AssimpJoined(const std::string& path, TriangleMesh* out) {
   Assimp::Importer importer;
@@ -62,49 +57,22 @@ bool AssimpJoined(const std::string& path, TriangleMesh* out) {
 }
 
 TEST(MeshJoinTest, LoadMeshFileIsAssimpsJoinedMesh) {
-  std::vector<std::string> files;
-  for (const std::string& root : {std::string(MASSPROPS_TESTDATA_DIR) + "/mesh",
-                                  std::string(MASSPROPS_CORPUS_DIR)}) {
-    if (!fs::exists(root)) continue;
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-      std::string extension = entry.path().extension().string();
-      for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (entry.is_regular_file() &&
-          (extension == ".dae" || extension == ".obj" || extension == ".stl" ||
-           extension == ".glb" || extension == ".gltf" || extension == ".ply")) {
-        files.push_back(entry.path().string());
-      }
-    }
-  }
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = testing_support::MeshFilesUnder(
+      {std::string(MASSPROPS_TESTDATA_DIR) + "/mesh", std::string(MASSPROPS_CORPUS_DIR)},
+      {".dae", ".obj", ".stl", ".glb", ".gltf", ".ply"});
   int compared = 0, dae = 0;
   for (const std::string& file : files) {
     TriangleMesh expected, got;
     std::string error;
     const bool assimp_read = AssimpJoined(file, &expected);
     const bool read = LoadMeshFile(file, &got, &error);
-    if (!assimp_read) continue;  // an unreadable fixture: LoadMeshFile's message is tested elsewhere
+    // An unreadable fixture: LoadMeshFile's message is tested elsewhere.
+    if (!assimp_read) continue;
     ASSERT_TRUE(read) << file << ": " << error;
-    ASSERT_EQ(got.vertices.size(), expected.vertices.size()) << file;
-    ASSERT_EQ(got.triangles.size(), expected.triangles.size()) << file;
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < got.vertices.size(); ++i) {
-      for (int k = 0; k < 3; ++k) {
-        const double a = got.vertices[i][k], b = expected.vertices[i][k];
-        if (!(a == b) || std::signbit(a) != std::signbit(b)) ++differing;
-      }
-    }
-    for (std::size_t t = 0; t < got.triangles.size(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        if (!(got.vertices[got.triangles[t][k]] == expected.vertices[expected.triangles[t][k]])) {
-          ++differing;
-        }
-      }
-    }
-    EXPECT_EQ(differing, 0u) << file;
+    testing_support::ExpectSameMesh(got, expected, file);
     ++compared;
-    if (file.size() > 4 && (file.substr(file.size() - 4) == ".dae" ||
-                            file.substr(file.size() - 4) == ".DAE")) {
+    if (file.size() > 4 &&
+        (file.substr(file.size() - 4) == ".dae" || file.substr(file.size() - 4) == ".DAE")) {
       ++dae;
     }
   }

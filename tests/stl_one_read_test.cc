@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -17,6 +16,7 @@
 
 #include "massprops/mesh/mesh_inertia.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "mesh_test_support.h"
 
 namespace massprops {
 namespace {
@@ -24,30 +24,7 @@ namespace fs = std::filesystem;
 
 const std::string kMeshDir = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh";
 
-// Exactly the same vertices (value and sign of zero) in the same order, and the same triangles.
-void ExpectSameMesh(const TriangleMesh& got, const TriangleMesh& expected, const std::string& what) {
-  ASSERT_EQ(got.vertices.size(), expected.vertices.size()) << what;
-  ASSERT_EQ(got.triangles.size(), expected.triangles.size()) << what;
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < got.vertices.size(); ++i) {
-    for (int k = 0; k < 3; ++k) {
-      const double a = got.vertices[i][k], b = expected.vertices[i][k];
-      if (!(a == b) || std::signbit(a) != std::signbit(b)) ++differing;
-    }
-  }
-  EXPECT_EQ(differing, 0u) << what;
-  // Where assimp could join a corner to either of two kept corners at one position, the index
-  // may differ but not the position: the triangles are compared by their corners' positions.
-  std::size_t moved = 0;
-  for (std::size_t t = 0; t < got.triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      if (!(got.vertices[got.triangles[t][k]] == expected.vertices[expected.triangles[t][k]])) {
-        ++moved;
-      }
-    }
-  }
-  EXPECT_EQ(moved, 0u) << what;
-}
+using testing_support::ExpectSameMesh;
 
 std::string Facet(const std::array<float, 3>& n, const std::array<std::array<float, 3>, 3>& corners,
                   std::uint16_t attribute) {
@@ -119,8 +96,8 @@ void ExpectLoaderMesh(const std::string& path) {
   // The mass properties, from the same read, as assimp's mesh gives them, with each model of an
   // open mesh (closed solid: integrated as it is; convex hull of the loader's vertices; thin
   // shell), and what users are told about the mesh.
-  for (const MeshSolidModel model : {MeshSolidModel::kClosedSolid, MeshSolidModel::kConvexHull,
-                                     MeshSolidModel::kThinShell}) {
+  for (const MeshSolidModel model :
+       {MeshSolidModel::kClosedSolid, MeshSolidModel::kConvexHull, MeshSolidModel::kThinShell}) {
     MeshInertiaOptions options;
     options.open_mesh_model = model;
     const auto from_cache = cache.MassProperties(path, Eigen::Vector3d(1, 1, 1), options, &error);
@@ -211,15 +188,8 @@ TEST_F(StlOneReadTest, NearbyPositionsInOneBucketOfAssimpsTable) {
 
 // Every binary STL shipped in testdata and in ../shared/corpus.
 TEST(StlOneReadCorpusTest, EveryBinaryStlIsTheLoadersMesh) {
-  std::vector<std::string> files;
-  for (const std::string& root : {kMeshDir, std::string(MASSPROPS_CORPUS_DIR)}) {
-    if (!fs::exists(root)) continue;
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-      std::string extension = entry.path().extension().string();
-      for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (entry.is_regular_file() && extension == ".stl") files.push_back(entry.path().string());
-    }
-  }
+  const std::vector<std::string> files =
+      testing_support::MeshFilesUnder({kMeshDir, std::string(MASSPROPS_CORPUS_DIR)}, {".stl"});
   ASSERT_GE(files.size(), 3u);
   int checked = 0;
   for (const std::string& file : files) {

@@ -13,7 +13,6 @@
 #include <exception>
 #include <limits>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -21,6 +20,7 @@ extern "C" {
 #include <libqhull_r/qhull_ra.h>
 }
 
+#include "mesh/assimp_join_hash.h"
 #include "mesh/mesh_backend.h"
 
 namespace massprops::internal {
@@ -77,21 +77,14 @@ Joined JoinIdenticalVertices(const aiMesh& mesh) {
            near(attribute(mesh.mTangents, a), attribute(mesh.mTangents, b)) &&
            near(attribute(mesh.mBitangents, a), attribute(mesh.mBitangents, b));
   };
-  const std::size_t buckets = [&] {
-    std::unordered_map<unsigned, unsigned> probe;
-    probe.reserve(n);
-    return probe.bucket_count();
-  }();
+  const std::size_t buckets = AssimpJoinBuckets(n);
   // Each used vertex's bucket first (a pass over the positions), so that the bucket a few
   // vertices ahead is asked of the memory early: its first read is a cache miss.
   std::vector<std::size_t> bucket_of(n, 0);
   for (unsigned v = 0; v < n; ++v) {
     if (!used[v]) continue;
-    std::size_t seed = 0;
-    for (const float c : {mesh.mVertices[v].x, mesh.mVertices[v].y, mesh.mVertices[v].z}) {
-      seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
-    }
-    bucket_of[v] = seed % buckets;
+    const aiVector3D& p = mesh.mVertices[v];
+    bucket_of[v] = AssimpJoinHash(p.x, p.y, p.z) % buckets;
   }
   std::vector<std::int64_t> newest(buckets, -1);  // per bucket: its newest kept vertex
   std::vector<std::int64_t> older;                // per kept vertex: the next older in its bucket

@@ -154,8 +154,6 @@ MeshMassProperties GetProperties(Reader* in) {
   return p;
 }
 
-bool ReadFile(const std::string& path, std::string* bytes) { return ReadWholeFile(path, bytes); }
-
 std::string StatName(const FileKey& key) {
   std::uint64_t h = HashBytes(key.path.data(), key.path.size(), key.size);
   h = Mix(h ^ static_cast<std::uint64_t>(key.mtime_ns));
@@ -311,7 +309,7 @@ std::optional<StoredMesh> MeshStore::Find(
     FileKey* key, const std::function<const std::string*()>& content) const {
   std::string bytes;
   bool from_stat = false;
-  if (!key->hashed && ReadFile(folder_ + "/" + StatName(*key), &bytes)) {
+  if (!key->hashed && ReadWholeFile(folder_ + "/" + StatName(*key), &bytes)) {
     Reader in(bytes, kStatMagic);
     const std::string path = in.GetText();
     const auto size = in.Get<std::uint64_t>();
@@ -323,7 +321,7 @@ std::optional<StoredMesh> MeshStore::Find(
     }
   }
   if (!key->hashed && !HashContent(key, content())) return std::nullopt;
-  if (!ReadFile(folder_ + "/" + EntryName(*key), &bytes)) return std::nullopt;
+  if (!ReadWholeFile(folder_ + "/" + EntryName(*key), &bytes)) return std::nullopt;
   std::optional<StoredMesh> mesh = ParseStoredMesh(bytes);
   if (mesh && !from_stat && !RecentlyModified(*key)) {  // found by content: remember its stat
     Writer stat;

@@ -9,9 +9,10 @@
 #include <cerrno>
 #include <cmath>
 #include <exception>
-#include <functional>
 #include <unordered_map>
 #include <utility>
+
+#include "mesh/assimp_join_hash.h"
 
 namespace massprops::internal {
 namespace {
@@ -97,16 +98,12 @@ class PositionTable {
 class AssimpBuckets {
  public:
   explicit AssimpBuckets(std::size_t corners) {
-    std::unordered_map<unsigned, unsigned> probe;  // the bucket count assimp's map gets
-    probe.reserve(corners);
-    buckets_ = probe.bucket_count();
+    buckets_ = AssimpJoinBuckets(corners);
     seen_.assign((buckets_ + 63) / 64, 0);
   }
   // Notes the next position (positions are added in order).
   void Add(const std::array<float, 3>& p) {
-    std::size_t seed = 0;
-    for (const float c : p) seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
-    const std::size_t bucket = seed % buckets_;
+    const std::size_t bucket = AssimpJoinHash(p[0], p[1], p[2]) % buckets_;
     bucket_of_.push_back(bucket);
     std::uint64_t& word = seen_[bucket / 64];
     const std::uint64_t bit = std::uint64_t{1} << (bucket % 64);
@@ -124,7 +121,8 @@ class AssimpBuckets {
     for (const auto& [bucket, list] : members) {
       for (std::size_t a = 0; a < list.size(); ++a) {
         for (std::size_t b = a + 1; b < list.size(); ++b) {
-          const Eigen::Vector3f d = positions[list[a]].cast<float>() - positions[list[b]].cast<float>();
+          const Eigen::Vector3f d =
+              positions[list[a]].cast<float>() - positions[list[b]].cast<float>();
           if (!(d.x() * d.x() + d.y() * d.y() + d.z() * d.z() > 1e-5f * 1e-5f)) return true;
         }
       }
@@ -134,9 +132,9 @@ class AssimpBuckets {
 
  private:
   std::size_t buckets_ = 1;
-  std::vector<std::uint64_t> seen_;      // one bit per bucket: holds a position
-  std::vector<std::size_t> bucket_of_;   // per position
-  std::vector<std::size_t> shared_;      // buckets found holding a second position
+  std::vector<std::uint64_t> seen_;     // one bit per bucket: holds a position
+  std::vector<std::size_t> bucket_of_;  // per position
+  std::vector<std::size_t> shared_;     // buckets found holding a second position
 };
 
 bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {

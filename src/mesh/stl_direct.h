@@ -22,11 +22,11 @@ namespace massprops::internal {
 /// What one read of an STL file gives.
 struct DirectStl {
   /// A binary STL (84 + 50·n bytes exactly, as assimp 5.2 tells it from ascii) without two
-  /// nearby positions assimp's join could merge (stl_direct.cc): each distinct position once, in order of first
-  /// appearance (-0 and +0 the same, written +0), and the triangles naming them. An ascii STL:
-  /// every corner its own vertex, the "vertex" triples in order. Either way the same triangles,
-  /// in the same order and with the same corner coordinates, as LoadMeshFile's mesh (the 32-bit
-  /// floats assimp keeps; strtof for ascii), so the same integrals; not its vertex list.
+  /// nearby positions assimp's join could merge (stl_direct.cc): each distinct position once, in
+  /// order of first appearance (-0 and +0 the same, written +0), and the triangles naming them. An
+  /// ascii STL: every corner its own vertex, the "vertex" triples in order. Either way the same
+  /// triangles, in the same order and with the same corner coordinates, as LoadMeshFile's mesh (the
+  /// 32-bit floats assimp keeps; strtof for ascii), so the same integrals; not its vertex list.
   TriangleMesh mesh;
   /// The binary case above. Then `mesh`'s vertices are distinct and are the file's hull-bound
   /// points (MeshPoints::positions), and JoinedMesh() gives LoadMeshFile's mesh: assimp 5.2's

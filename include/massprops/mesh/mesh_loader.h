@@ -103,9 +103,9 @@ std::optional<std::string> ResolveGeometryMeshUri(const Geometry& geometry,
 /// <up_axis> is ignored: URDF and SDF take mesh coordinates as they are written). Only assimp's
 /// aiProcess_Triangulate is applied, and identical vertices are joined exactly as assimp 5.2.4's
 /// aiProcess_JoinIdenticalVertices joins them, at a fraction of its cost (docs/meshes.md,
-/// "Vertex joining"): nothing that changes the geometry; points and lines are dropped. Assimp holds coordinates as 32-bit floats, so
-/// vertices carry a relative rounding of up to 6e-8. Returns false and sets *error (if not null)
-/// when the file cannot be read or parsed, or holds no triangle.
+/// "Vertex joining"): nothing that changes the geometry; points and lines are dropped. Assimp holds
+/// coordinates as 32-bit floats, so vertices carry a relative rounding of up to 6e-8. Returns false
+/// and sets *error (if not null) when the file cannot be read or parsed, or holds no triangle.
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error);
 
 /// The axis-aligned bounding box of the mesh file at `path`: of the vertices LoadMeshFile would
@@ -139,7 +139,8 @@ constexpr std::uint64_t kDefaultMeshCacheBytes = std::uint64_t{512} << 20;
 /// scale, options), and, with UsePersistentCache, kept between runs. A binary STL is read once,
 /// directly (no assimp), for all of them and for Load (LoadMeshFile's mesh made from the same
 /// read; docs/meshes.md, "Binary STL, one read"); assimp (LoadMeshFile) reads other formats, so
-/// that every number is the one LoadMeshFile's mesh gives. Thread-safe: different files are read in parallel.
+/// that every number is the one LoadMeshFile's mesh gives. Thread-safe: different files are read in
+/// parallel.
 class MeshCache {
  public:
   MeshCache();
