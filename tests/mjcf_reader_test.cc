@@ -256,6 +256,46 @@ TEST(MjcfReaderTest, BadInputIsAnErrorWithFileAndLine) {
   const ReadError klass =
       first_error("<mujoco><worldbody><body childclass=\"x\"/></worldbody></mujoco>");
   EXPECT_NE(klass.message.find("'x'"), std::string::npos);
+  // MuJoCo reads group as an int; a fuzzer found 4.9e23 converted to int unchecked (undefined).
+  for (const std::string group : {"4.9e23", "0.5", "-3e9"}) {
+    const ReadError error =
+        first_error("<mujoco>\n<worldbody>\n<body>\n<geom size=\"0.1\" group=\"" + group +
+                    "\"/></body>\n</worldbody>\n</mujoco>");
+    EXPECT_EQ(error.location.line, 4) << group;
+    EXPECT_NE(error.message.find("group " + group + " is not an integer"), std::string::npos)
+        << error.message;
+  }
+}
+
+// MuJoCo reads <mesh face> as integers and refuses an index outside the vertex list
+// (user_mesh.cc, "face index out of range"); a fuzzer found that 1e30 as an index was converted to
+// int before it was checked (undefined behaviour).
+TEST(MjcfReaderTest, AFaceThatIsNoVertexIndexCostsOnlyItsBody) {
+  for (const std::string index : {"4", "-1", "1e30", "0.5"}) {
+    const ReadResult read = ReadMjcfString(R"(<mujoco>
+  <asset><mesh name="m" vertex="0 0 0  1 0 0  0 1 0  0 0 1" face="0 2 1  0 1 3  0 3 2  1 2 )" +
+                                               index + R"("/></asset>
+  <worldbody>
+    <body name="a"><joint/><geom type="mesh" mesh="m"/></body>
+  </worldbody>
+</mujoco>)",
+                                           "f.xml");
+    ASSERT_TRUE(read.ok()) << index;
+    EXPECT_TRUE(read.models.at(0).links.at(1).inertial_unreadable) << index;
+    ASSERT_EQ(read.findings.size(), 1u) << index;
+    EXPECT_NE(read.findings[0].message.find("<mesh face> number 11 is"), std::string::npos)
+        << read.findings[0].message;
+  }
+  // The same tetrahedron with its last face "1 2 3" is read: volume 1/6, mass 1000/6 (density
+  // 1000, MuJoCo's default).
+  const ReadResult good = ReadMjcfString(R"(<mujoco>
+  <asset><mesh name="m" vertex="0 0 0  1 0 0  0 1 0  0 0 1" face="0 2 1  0 1 3  0 3 2  1 2 3"/></asset>
+  <worldbody><body name="a"><joint/><geom type="mesh" mesh="m"/></body></worldbody>
+</mujoco>)",
+                                         "f.xml");
+  ASSERT_TRUE(good.ok());
+  ASSERT_TRUE(good.models.at(0).links.at(1).inertial.has_value());
+  EXPECT_NEAR(good.models.at(0).links.at(1).inertial->mass, 1000.0 / 6, 1e-9);
 }
 
 TEST(MjcfReaderTest, UnreadableMeshCostsOnlyItsBody) {

@@ -7,8 +7,14 @@
 #include "io/mjcf/geom.h"
 
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "massprops/mesh/mesh_loader.h"
 
@@ -90,6 +96,29 @@ std::string SizeProblem(const std::string& type, const Eigen::Vector3d& s) {
   return "";
 }
 
+// The triangles of a <mesh face="...">: each number must be a whole vertex index (MuJoCo reads
+// them as integers and refuses an index outside the vertex list). An error message, or "".
+std::string FaceTriangles(const std::vector<double>& face, std::size_t vertex_count,
+                          std::vector<std::array<std::int32_t, 3>>* triangles) {
+  for (std::size_t i = 0; i < face.size(); i += 3) {
+    std::array<std::int32_t, 3> triangle{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double index = face[i + k];
+      // Compared as doubles before any conversion: a NaN or a huge number fails here.
+      if (!(index >= 0 && index < static_cast<double>(vertex_count)) ||
+          index != std::floor(index)) {
+        std::ostringstream message;
+        message << "<mesh face> number " << i + k << " is " << index
+                << ", not a vertex index in [0, " << vertex_count << ")";
+        return message.str();
+      }
+      triangle[k] = static_cast<std::int32_t>(index);
+    }
+    triangles->push_back(triangle);
+  }
+  return "";
+}
+
 }  // namespace
 
 std::optional<MeshSolid> MeshSolids::Get(Context* context, const Node& node, bool compute,
@@ -132,11 +161,7 @@ std::optional<MeshSolid> MeshSolids::Get(Context* context, const Node& node, boo
         for (std::size_t i = 0; i < vertex->size(); i += 3) {
           mesh.vertices.emplace_back((*vertex)[i], (*vertex)[i + 1], (*vertex)[i + 2]);
         }
-        for (std::size_t i = 0; i < face->size(); i += 3) {
-          mesh.triangles.push_back({static_cast<std::int32_t>((*face)[i]),
-                                    static_cast<std::int32_t>((*face)[i + 1]),
-                                    static_cast<std::int32_t>((*face)[i + 2])});
-        }
+        entry.error = FaceTriangles(*face, mesh.vertices.size(), &mesh.triangles);
       }
     }
     if (node.Find("refpos") || node.Find("refquat")) {
@@ -191,7 +216,16 @@ GeomReading ReadGeom(Context* context, const Element& element, bool want_mass, M
   reading.geometry.X_BG = X_BG;
   reading.geometry.location = context->document->Where(node);
   if (auto v = Numbers(context, element, "group", 1, -1, what)) {
-    reading.group = static_cast<int>((*v)[0]);
+    // MuJoCo reads an int: a number outside int's range (or with a fraction) is refused, and is
+    // compared as a double before any conversion (a conversion out of range is undefined).
+    const double group = (*v)[0];
+    if (group >= std::numeric_limits<int>::min() && group <= std::numeric_limits<int>::max() &&
+        group == std::floor(group)) {
+      reading.group = static_cast<int>(group);
+    } else {
+      context->Error(node, "<geom> " + what,
+                     "group " + *element.Get("group") + " is not an integer");
+    }
   }
   double contype = 1, conaffinity = 1;
   if (auto v = Numbers(context, element, "contype", 1, -1, what)) contype = (*v)[0];
