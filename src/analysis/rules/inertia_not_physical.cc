@@ -45,12 +45,18 @@ const RuleInfo& InertiaNearBoundaryRule() {
 namespace {
 
 // The evidence of an invalid inertia: its principal moments and how far the triangle
-// inequality fails, relative to the trace.
+// inequality fails, as a percentage of the trace ("excess 2.58%"), or in kg·m² when the
+// trace is not positive (negative moments), where a share of it means nothing.
 std::vector<std::pair<std::string, double>> ViolationEvidence(const Validity& v) {
-  return {{"moment1_kg_m2", v.moments(0)},
-          {"moment2_kg_m2", v.moments(1)},
-          {"moment3_kg_m2", v.moments(2)},
-          {"excess_ratio", v.trace != 0 ? v.excess / v.trace : v.excess}};
+  std::vector<std::pair<std::string, double>> evidence = {{"moment1_kg_m2", v.moments(0)},
+                                                          {"moment2_kg_m2", v.moments(1)},
+                                                          {"moment3_kg_m2", v.moments(2)}};
+  if (v.trace > 0) {
+    evidence.emplace_back("excess_percent", 100 * v.excess / v.trace);
+  } else {
+    evidence.emplace_back("excess_kg_m2", v.excess);
+  }
+  return evidence;
 }
 
 }  // namespace
