@@ -111,6 +111,7 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
   return [resolve](const Link& link) -> std::optional<LinkGeometryPoints> {
     if (link.geometries.empty()) return std::nullopt;
     LinkGeometryPoints result;
+    std::vector<std::pair<const Geometry*, std::shared_ptr<const MeshPoints>>> meshes;
     for (const Geometry& geometry : link.geometries) {
       if (geometry.type != Geometry::Type::kMesh) {
         const std::optional<Eigen::AlignedBox3d> box =
@@ -157,8 +158,15 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
         ++result.unknown;
         continue;
       }
-      const Eigen::Vector3d& s = geometry.scale;
-      const Pose& X_BG = geometry.X_BG;
+      meshes.emplace_back(&geometry, std::move(points));
+    }
+    // The meshes' points, scaled and posed, into one allocation of the right size.
+    std::size_t total = result.points_B.size();
+    for (const auto& [geometry, points] : meshes) total += points->positions.size();
+    result.points_B.reserve(total);
+    for (const auto& [geometry, points] : meshes) {
+      const Eigen::Vector3d& s = geometry->scale;
+      const Pose& X_BG = geometry->X_BG;
       for (const Eigen::Vector3d& v : points->positions) {
         result.points_B.push_back(X_BG.p_AB + X_BG.R_AB * v.cwiseProduct(s));
       }

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iterator>
 #include <system_error>
+#include <vector>
 
 #include "mesh/stl_direct.h"
 
@@ -51,6 +52,12 @@ class Writer {
     bytes_ += text;
   }
   void PutRaw(const char* text) { bytes_ += text; }
+  // `count` values at once, as Put writes each.
+  template <typename T>
+  void PutArray(const T* values, std::size_t count) {
+    bytes_.append(reinterpret_cast<const char*>(values), count * sizeof(T));
+  }
+  void Reserve(std::size_t size) { bytes_.reserve(size); }
   std::string Finish() {
     Put<std::uint64_t>(HashBytes(bytes_.data(), bytes_.size()));
     return std::move(bytes_);
@@ -204,6 +211,9 @@ std::uint64_t HashBytes(const char* bytes, std::size_t size, std::uint64_t seed)
 
 std::string SerializeStoredMesh(const StoredMesh& mesh) {
   Writer out;
+  // Room for all of it at once (the points, at most 24 bytes each, are most of an entry).
+  out.Reserve(256 + (mesh.points ? 24 * mesh.points->positions.size() : 0) +
+              256 * mesh.properties.size());
   out.PutRaw(kEntryMagic);
   out.Put<std::uint8_t>(mesh.box ? 1 : 0);
   if (mesh.box) {
@@ -220,14 +230,15 @@ std::string SerializeStoredMesh(const StoredMesh& mesh) {
       return v.cast<float>().cast<double>() == v;
     });
     out.Put<std::uint8_t>(floats ? 1 : 0);
-    for (const Eigen::Vector3d& v : p) {
-      for (int i = 0; i < 3; ++i) {
-        if (floats) {
-          out.Put(static_cast<float>(v(i)));
-        } else {
-          out.Put(v(i));
-        }
+    if (floats) {
+      std::vector<float> coordinates;
+      coordinates.reserve(3 * p.size());
+      for (const Eigen::Vector3d& v : p) {
+        for (int i = 0; i < 3; ++i) coordinates.push_back(static_cast<float>(v(i)));
       }
+      out.PutArray(coordinates.data(), coordinates.size());
+    } else {
+      for (const Eigen::Vector3d& v : p) out.PutArray(v.data(), 3);
     }
   }
   out.Put<std::uint32_t>(static_cast<std::uint32_t>(mesh.properties.size()));

@@ -149,10 +149,10 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
   normal_of.reserve(corners);
   previous.reserve(corners);
   stl->vertex_position.reserve(corners);
-  stl->joined_triangles.resize(count);
+  stl->joined_triangles.reserve(count);  // filled a triangle at a time: no zeros written first
   TriangleMesh& mesh = stl->mesh;
   mesh.vertices.reserve(corners / 4);
-  mesh.triangles.resize(count);
+  mesh.triangles.reserve(count);
   auto corner = [&](std::uint32_t t, int v) {
     std::array<float, 3> p;
     std::memcpy(p.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 12 * (v + 1), 12);
@@ -165,6 +165,7 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
     }
     std::array<float, 3> normal;
     std::memcpy(normal.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t), 12);
+    std::array<std::int32_t, 3> joined_triangle, triangle;
     for (int v = 0; v < 3; ++v) {
       const std::array<float, 3> p = corner(t, v);
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
@@ -189,9 +190,11 @@ bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
         stl->vertex_position.push_back(slot->position);
         slot->last = joined;
       }
-      stl->joined_triangles[t][static_cast<std::size_t>(v)] = joined;
-      mesh.triangles[t][static_cast<std::size_t>(v)] = slot->position;
+      joined_triangle[static_cast<std::size_t>(v)] = joined;
+      triangle[static_cast<std::size_t>(v)] = slot->position;
     }
+    stl->joined_triangles.push_back(joined_triangle);
+    mesh.triangles.push_back(triangle);
   }
   if (buckets.NearPair(mesh.vertices)) return false;  // left to assimp
   stl->joined = true;

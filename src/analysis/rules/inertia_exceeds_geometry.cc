@@ -17,6 +17,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -105,17 +106,25 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
   const Eigen::Matrix3d& I = judged.props.I_SScm_F;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(I);
   if (eig.info() != Eigen::Success) return;
+  // The six axes: the principal axes and those of the frame. The farthest point from each is
+  // found in one pass over the points (the points of a robot's meshes are many; one pass reads
+  // them from memory once, not six times).
+  std::array<Eigen::Vector3d, 6> axes;
+  for (int i = 0; i < 6; ++i) {
+    axes[i] = i < 3 ? Eigen::Vector3d(eig.eigenvectors().col(i).normalized())
+                    : Eigen::Vector3d(Eigen::Vector3d::Unit(i - 3));
+  }
+  std::array<double, 6> reach2{};
+  for (const Eigen::Vector3d& p : points->points_B) {
+    const Eigen::Vector3d r = p - c;
+    for (int i = 0; i < 6; ++i) reach2[i] = std::max(reach2[i], r.cross(axes[i]).squaredNorm());
+  }
   double worst = 0, worst_moment = 0, worst_bound = 0;
   Eigen::Vector3d worst_axis = Eigen::Vector3d::UnitX();
   for (int i = 0; i < 6; ++i) {
-    const Eigen::Vector3d a = i < 3 ? Eigen::Vector3d(eig.eigenvectors().col(i).normalized())
-                                    : Eigen::Vector3d(Eigen::Vector3d::Unit(i - 3));
+    const Eigen::Vector3d& a = axes[i];
     const double moment = a.dot(I * a);
-    double reach2 = 0;
-    for (const Eigen::Vector3d& p : points->points_B) {
-      reach2 = std::max(reach2, (p - c).cross(a).squaredNorm());
-    }
-    const double bound = m * reach2;
+    const double bound = m * reach2[i];
     if (!(bound > 0)) continue;
     if (moment / bound > worst) {
       worst = moment / bound;
