@@ -50,15 +50,10 @@ Eigen::AlignedBox3d UsedBoundingBox(const TriangleMesh& mesh) {
   return box;
 }
 
-// Its center (the origin if there is no triangle) and its diagonal (0 then).
+// Its center (the origin if there is no triangle).
 Eigen::Vector3d BoundingBoxCenter(const TriangleMesh& mesh) {
   const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
   return box.isEmpty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(box.center());
-}
-
-double BoundingBoxDiagonal(const TriangleMesh& mesh) {
-  const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
-  return box.isEmpty() ? 0 : box.diagonal().norm();
 }
 
 // Adds w·(a·aᵀ + b·bᵀ + c·cᵀ + s·sᵀ), s = a + b + c, to C.
@@ -488,8 +483,13 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
             << options.shell_thickness << " must be finite and non-negative";
     throw std::invalid_argument(message.str());
   }
-  MeshDiagnostics diagnostics = AnalyzeTopology(mesh, distinct_vertices);
-  const double diagonal = BoundingBoxDiagonal(mesh);
+  MeshDiagnostics diagnostics = AnalyzeTopology(mesh, distinct_vertices);  // validates the mesh
+  // The box of the used vertices, once: its diagonal, and its center as the reference point of
+  // the signed integral (CalcClosedMeshMassPropertiesSigned's, without a second validation).
+  const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
+  const double diagonal = box.isEmpty() ? 0 : box.diagonal().norm();
+  const Eigen::Vector3d center =
+      box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
   // A closed mesh whose volume is below this is flat (e.g. a double-sided plane).
   const double negligible_volume = 1e-12 * diagonal * diagonal * diagonal;
 
@@ -521,14 +521,14 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
 
   std::string reason;
   if (diagnostics.IsClosedManifold()) {
-    MeshMassProperties closed = CalcClosedMeshMassPropertiesSigned(mesh);
+    MeshMassProperties closed = IntegrateSigned(mesh, center);
     if (std::abs(closed.volume) > negligible_volume) {
       return finish_solid(closed, MeshSolidModel::kClosedSolid, "");
     }
     reason = mesh.triangles.empty() ? "no triangles" : "closed but encloses no volume";
   } else {
     reason = DescribeDefects(diagnostics);
-    MeshMassProperties signed_result = CalcClosedMeshMassPropertiesSigned(mesh);
+    MeshMassProperties signed_result = IntegrateSigned(mesh, center);
     diagnostics.reference_point_sensitivity = ReferencePointSensitivity(mesh, signed_result);
     if (std::abs(signed_result.volume) > negligible_volume &&
         diagnostics.reference_point_sensitivity <= options.closure_tolerance) {
