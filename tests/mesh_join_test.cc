@@ -10,11 +10,18 @@
 
 #include <array>
 #include <assimp/Importer.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "massprops/mesh/mesh_loader.h"
+#include "mesh/assimp_join_hash.h"
 #include "mesh_test_support.h"
 
 namespace massprops {
@@ -78,6 +85,40 @@ TEST(MeshJoinTest, LoadMeshFileIsAssimpsJoinedMesh) {
   }
   EXPECT_GE(compared, 10);
   EXPECT_GE(dae, 1);
+}
+
+// Assimp puts a vertex in a bucket by std::hash<float> of its coordinates; the joins here compute
+// libstdc++'s hash inline (assimp_join_hash.h), which must agree with std::hash<float> itself
+// on every float: zeros of both signs, subnormals, the extremes, infinities, NaNs and random bit
+// patterns.
+TEST(MeshJoinTest, TheInlineFloatHashIsStdHashOfFloat) {
+  const std::hash<float> reference;
+  std::vector<float> values = {0.0f,
+                               -0.0f,
+                               1.0f,
+                               -1.0f,
+                               0.5f,
+                               1e-5f,
+                               std::numeric_limits<float>::denorm_min(),
+                               -std::numeric_limits<float>::denorm_min(),
+                               std::numeric_limits<float>::min(),
+                               std::numeric_limits<float>::max(),
+                               std::numeric_limits<float>::lowest(),
+                               std::numeric_limits<float>::infinity(),
+                               -std::numeric_limits<float>::infinity(),
+                               std::numeric_limits<float>::quiet_NaN()};
+  std::mt19937 random(33);
+  for (int i = 0; i < 1000000; ++i) {
+    const std::uint32_t bits = static_cast<std::uint32_t>(random());
+    float v;
+    std::memcpy(&v, &bits, sizeof v);
+    values.push_back(v);
+  }
+  for (const float v : values) {
+    ASSERT_EQ(internal::StdHashOfFloat(v), reference(v)) << v;
+  }
+  EXPECT_EQ(internal::AssimpJoinHash(0.0f, -0.0f, 0.0f),
+            internal::AssimpJoinHash(-0.0f, 0.0f, -0.0f));
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 // a std::unordered_map reserved for the mesh's vertex count, hashed by the position.
 
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <unordered_map>
 
@@ -18,12 +20,32 @@ inline std::size_t AssimpJoinBuckets(std::size_t vertices) {
   return probe.bucket_count();
 }
 
+/// std::hash<float>()(v), computed inline. libstdc++ (64-bit) hashes a nonzero float's four bytes
+/// with its _Hash_bytes, a MurmurHash2 (64-bit) variant with the seed 0xc70f6907, and ±0 to 0; an
+/// out-of-line call per coordinate was a few percent of a first check with meshes
+/// (docs/benchmarks.md, section 8). Other libraries: std::hash<float> itself.
+/// tests/mesh_join_test.cc compares the two on every float class and random bit patterns.
+inline std::size_t StdHashOfFloat(float v) {
+#if defined(__GLIBCXX__) && SIZE_MAX == UINT64_MAX
+  if (v == 0.0f) return 0;
+  std::uint32_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  constexpr std::uint64_t kMul = 0xc6a4a7935bd1e995ull;
+  auto shift_mix = [](std::uint64_t h) { return h ^ (h >> 47); };
+  std::uint64_t h = 0xc70f6907ull ^ (sizeof bits * kMul);
+  h = (h ^ bits) * kMul;  // the 4 bytes, read as a little-endian number
+  return shift_mix(shift_mix(h) * kMul);
+#else
+  return std::hash<float>()(v);
+#endif
+}
+
 /// Assimp's hash of a vertex: boost's hash_combine of std::hash<float> of x, y, z (-0 and +0
 /// alike, as std::hash<float> hashes both to 0).
 inline std::size_t AssimpJoinHash(float x, float y, float z) {
   std::size_t seed = 0;
   for (const float c : {x, y, z}) {
-    seed ^= std::hash<float>()(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
+    seed ^= StdHashOfFloat(c) + 0x9e3779b9 + (seed << 6) + (seed >> 2);
   }
   return seed;
 }
