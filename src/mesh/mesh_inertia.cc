@@ -98,8 +98,9 @@ double TriangleArea(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
   return (b - a).cross(c - a).norm() / 2;
 }
 
-MeshMassProperties CalcThinShell(const TriangleMesh& mesh, double thickness, double density) {
-  const Eigen::Vector3d R = BoundingBoxCenter(mesh);
+// R: the center of the box of the used vertices (CalcMeshMassProperties has it).
+MeshMassProperties CalcThinShell(const TriangleMesh& mesh, const Eigen::Vector3d& R,
+                                 double thickness, double density) {
   double area = 0;
   Eigen::Vector3d m1 = Eigen::Vector3d::Zero();
   Sym6 C{};
@@ -557,7 +558,7 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
     reason += "; " + hull_error;
   }
 
-  MeshMassProperties shell = CalcThinShell(mesh, options.shell_thickness, options.density);
+  MeshMassProperties shell = CalcThinShell(mesh, center, options.shell_thickness, options.density);
   diagnostics.model = MeshSolidModel::kThinShell;
   diagnostics.fallback_reason = reason;
   shell.diagnostics = diagnostics;
