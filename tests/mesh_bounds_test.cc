@@ -114,6 +114,34 @@ TEST(MeshBoundsTest, EveryCorpusMeshHasTheBoxOfTheFullLoadersMesh) {
   EXPECT_EQ(obj, 6);
 }
 
+TEST(MeshBoundsTest, AFileOnlyAssimpReadsIsImportedOnceForItsBoxAndItsNumbers) {
+  // tet_cm.dae (above): legs 0.1, 0.2, 0.3 m from (0.05, 0, 0), so the box is (0.05, 0, 0) to
+  // (0.15, 0.2, 0.3) and the volume 0.1 * 0.2 * 0.3 / 6 = 0.001 m³ (by hand). Its box comes from
+  // the mesh the import gives, which is kept: asking its mass properties next imports nothing.
+  // (Before, the box was a separate import whose mesh was dropped: two imports per DAE file.)
+  MeshCache cache;
+  std::string error;
+  const std::optional<Eigen::AlignedBox3d> box = cache.Bounds(kMeshDir + "/tet_cm.dae", &error);
+  ASSERT_TRUE(box) << error;
+  ExpectBox(*box, Eigen::Vector3d(0.05, 0, 0), Eigen::Vector3d(0.15, 0.2, 0.3), 1e-7, "tet_cm");
+  EXPECT_EQ(cache.files_loaded(), 1);
+  EXPECT_EQ(cache.files_bounded(), 0);
+  const std::optional<MeshMassProperties> mass = cache.MassProperties(
+      kMeshDir + "/tet_cm.dae", Eigen::Vector3d::Ones(), MeshInertiaOptions{}, &error);
+  ASSERT_TRUE(mass) << error;
+  EXPECT_NEAR(mass->volume, 0.1 * 0.2 * 0.3 / 6, 1e-9);
+  EXPECT_EQ(cache.files_loaded(), 1);
+  EXPECT_EQ(cache.files_bounded(), 0);
+  // A file assimp cannot read: the same error as LoadMeshBounds gives, and one try.
+  EXPECT_FALSE(cache.Bounds(kMeshDir + "/no_such.dae", &error));
+  std::string direct_error;
+  Eigen::AlignedBox3d unused;
+  EXPECT_FALSE(LoadMeshBounds(kMeshDir + "/no_such.dae", &unused, nullptr, &direct_error));
+  EXPECT_EQ(error, direct_error);
+  EXPECT_FALSE(cache.Bounds(kMeshDir + "/no_such.dae", &error));
+  EXPECT_EQ(cache.files_loaded(), 2);
+}
+
 TEST(MeshBoundsTest, CacheReadsEachFileOnceAndReusesALoadedMesh) {
   MeshCache cache;
   std::string error;

@@ -343,5 +343,56 @@ TEST(MeshCacheTest, PointsAreThoseOfTheFullLoader) {
   }
 }
 
+// An open mesh is asked for with several sets of options in one run, and its analysis (topology,
+// box, signed integrals) is kept between them by file and scale: each answer must be the number
+// a fresh CalcMeshMassProperties gives for those options, bit for bit, and the hand-worked value.
+// testdata/mesh/open_box.obj is the box 0.1 x 0.2 x 0.3 without its top face, wound outward. By
+// hand: as a closed solid despite the hole, the signed integral about the box's center is the box
+// (0.006 m³) less the pyramid from the center to the missing face (0.02 m² x 0.15 m / 3 = 0.001):
+// 0.005; as a thin shell, its area 0.02 + 2 x 0.03 + 2 x 0.06 = 0.2 m² times the default 1 mm:
+// 2e-4 m³; as its convex hull, the whole box: 0.006. Scaled by 2 along x, each volume doubles.
+TEST(MeshCacheTest, AnOpenMeshAskedWithEveryModelGetsEachModelsNumbers) {
+  const std::string path = kMeshDir + "/open_box.obj";
+  TriangleMesh mesh;
+  std::string error;
+  ASSERT_TRUE(LoadMeshFile(path, &mesh, &error)) << error;
+  MeshCache cache;
+  struct Case {
+    MeshSolidModel model;
+    Eigen::Vector3d scale;
+    double volume;
+  };
+  const Eigen::Vector3d one = Eigen::Vector3d::Ones(), twice_x(2, 1, 1);
+  for (const Case& c :
+       {Case{MeshSolidModel::kClosedSolid, one, 0.005}, Case{MeshSolidModel::kThinShell, one, 2e-4},
+        Case{MeshSolidModel::kConvexHull, one, 0.006},
+        Case{MeshSolidModel::kThinShell, twice_x, -1},  // area by its own
+        Case{MeshSolidModel::kClosedSolid, twice_x, 0.010},
+        Case{MeshSolidModel::kConvexHull, twice_x, 0.012}}) {
+    MeshInertiaOptions options;
+    options.open_mesh_model = c.model;
+    const std::optional<MeshMassProperties> cached =
+        cache.MassProperties(path, c.scale, options, &error);
+    ASSERT_TRUE(cached) << error;
+    const MeshMassProperties fresh = CalcMeshMassProperties(ScaleMesh(mesh, c.scale), options);
+    EXPECT_EQ(cached->volume, fresh.volume);
+    EXPECT_EQ(cached->p_GoGcm_G, fresh.p_GoGcm_G);
+    EXPECT_EQ(cached->I_GGcm_G.CopyToFullMatrix3(), fresh.I_GGcm_G.CopyToFullMatrix3());
+    EXPECT_EQ(cached->diagnostics.model, c.model);
+    EXPECT_EQ(cached->diagnostics.boundary_edges, 4);
+    EXPECT_EQ(cached->diagnostics.reference_point_sensitivity,
+              fresh.diagnostics.reference_point_sensitivity);
+    EXPECT_EQ(cached->diagnostics.fallback_reason, fresh.diagnostics.fallback_reason);
+    if (c.volume > 0) {
+      EXPECT_NEAR(cached->volume, c.volume, 1e-6 * c.volume);  // the file's floats: 1e-7
+    }
+  }
+  // Scaled by 2 along x: area 2 x 0.02 + 2 x 0.06 + 2 x 0.06 = 0.28 m², so 2.8e-4 m³ of shell.
+  MeshInertiaOptions shell;
+  shell.open_mesh_model = MeshSolidModel::kThinShell;
+  EXPECT_NEAR(cache.MassProperties(path, twice_x, shell, &error)->volume, 2.8e-4, 2.8e-10);
+  EXPECT_EQ(cache.files_loaded(), 1);
+}
+
 }  // namespace
 }  // namespace massprops

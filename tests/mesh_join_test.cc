@@ -121,5 +121,23 @@ TEST(MeshJoinTest, TheInlineFloatHashIsStdHashOfFloat) {
             internal::AssimpJoinHash(-0.0f, 0.0f, -0.0f));
 }
 
+// The bucket count is computed from libstdc++'s rehash policy (assimp_join_hash.h) instead of
+// asking a map reserved for it: the two must agree for every size, small ones (libstdc++'s table
+// of the first primes) and around every prime of its list up to 2^22, then at random sizes.
+TEST(MeshJoinTest, TheBucketCountIsWhatReserveGives) {
+  std::vector<std::size_t> sizes;
+  for (std::size_t n = 0; n <= 2000; ++n) sizes.push_back(n);
+  for (std::size_t n = 2000; n < (std::size_t{1} << 22);) {
+    const std::size_t buckets = internal::AssimpJoinBucketsOfAMap(n);
+    for (const std::size_t k : {buckets - 1, buckets, buckets + 1}) sizes.push_back(k);
+    n = buckets + 2;
+  }
+  std::mt19937_64 random(33);
+  for (int i = 0; i < 50; ++i) sizes.push_back(random() % (std::size_t{1} << 22));
+  for (const std::size_t n : sizes) {
+    ASSERT_EQ(internal::AssimpJoinBuckets(n), internal::AssimpJoinBucketsOfAMap(n)) << n;
+  }
+}
+
 }  // namespace
 }  // namespace massprops

@@ -4,6 +4,7 @@
 // (mesh_libraries.cc) and the direct STL reader (stl_direct.cc) must reproduce bucket for bucket:
 // a std::unordered_map reserved for the mesh's vertex count, hashed by the position.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -12,12 +13,27 @@
 
 namespace massprops::internal {
 
-/// The bucket count of assimp's table for a mesh of `vertices` vertices: what libstdc++'s
-/// reserve gives (the same library's rehash policy and prime list as assimp's map).
-inline std::size_t AssimpJoinBuckets(std::size_t vertices) {
+/// The bucket count of a std::unordered_map reserved for `vertices` elements, asked of one.
+inline std::size_t AssimpJoinBucketsOfAMap(std::size_t vertices) {
   std::unordered_map<unsigned, unsigned> probe;
   probe.reserve(vertices);
   return probe.bucket_count();
+}
+
+/// The bucket count of assimp's table for a mesh of `vertices` vertices: what libstdc++'s
+/// reserve gives (the same library's rehash policy and prime list as assimp's map). With
+/// libstdc++ it is computed as its reserve computes it on an empty map, from its rehash policy
+/// (bits/hashtable.h, rehash), without allocating and zeroing the buckets: a map reserved only to
+/// be asked its bucket count took 1% of a first check of binary STL meshes (an 8-byte bucket per
+/// corner). tests/mesh_join_test.cc compares the two. Other libraries: the map itself.
+inline std::size_t AssimpJoinBuckets(std::size_t vertices) {
+#if defined(__GLIBCXX__)
+  std::__detail::_Prime_rehash_policy policy;  // max_load_factor 1, as a new map's
+  return policy._M_next_bkt(
+      std::max(policy._M_bkt_for_elements(1), policy._M_bkt_for_elements(vertices)));
+#else
+  return AssimpJoinBucketsOfAMap(vertices);
+#endif
 }
 
 /// std::hash<float>()(v), computed inline. libstdc++ (64-bit) hashes a nonzero float's four bytes

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <exception>
 #include <utility>
+#include <vector>
 
 #include "massprops/mesh/mesh_loader.h"
 #include "mesh/mesh_coincidence.h"
@@ -16,11 +17,25 @@ namespace massprops {
 
 namespace {
 
+// MeshSolidAnalysis of a mesh file, by (scale, read directly).
+using AnalysisMemo =
+    std::vector<std::pair<std::pair<Eigen::Vector3d, bool>, internal::MeshSolidAnalysis>>;
+
 bool IsStlPath(const std::string& path) {
   if (path.size() < 4) return false;
   std::string suffix = path.substr(path.size() - 4);
   for (char& c : suffix) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return suffix == ".stl";
+}
+
+// Whether LoadMeshBounds reads the box of `path` itself (an STL or OBJ file), not through
+// LoadMeshFile.
+bool HasDirectBox(const std::string& path) {
+  if (IsStlPath(path)) return true;
+  if (path.size() < 4) return false;
+  std::string suffix = path.substr(path.size() - 4);
+  for (char& c : suffix) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return suffix == ".obj";
 }
 
 // The start of CalcMeshMassProperties' reason when it integrates an open mesh as a closed solid
@@ -75,6 +90,24 @@ std::vector<Eigen::Vector3d> DistinctPositions(const TriangleMesh& mesh) {
   return positions;
 }
 
+// The mass properties of `mesh` (the file's, scaled by `scale`; `direct`: the STL read directly)
+// with `options`, from the analysis in *memo when the mesh was analyzed already, else from one
+// added to it: the same numbers as internal::CalcMeshMassProperties(mesh, options, distinct).
+MeshMassProperties CalcRemembering(AnalysisMemo* memo, const TriangleMesh& mesh,
+                                   const Eigen::Vector3d& scale, bool direct, bool distinct,
+                                   const MeshInertiaOptions& options) {
+  const internal::MeshSolidAnalysis* analysis = nullptr;
+  for (const auto& [key, known] : *memo) {
+    if (key.first == scale && key.second == direct) analysis = &known;
+  }
+  if (analysis == nullptr) {
+    internal::CheckMeshInertiaOptions(options);  // before the mesh's own errors, as always
+    memo->emplace_back(std::make_pair(scale, direct), internal::AnalyzeMeshSolid(mesh, distinct));
+    analysis = &memo->back().second;
+  }
+  return internal::CalcMeshMassProperties(mesh, options, *analysis);
+}
+
 }  // namespace
 
 // What is known of one mesh file; guarded by its own mutex (different files in parallel).
@@ -101,6 +134,9 @@ struct MeshCache::FileState {
   bool pointed = false;
   std::string points_error;
   std::map<internal::MassKey, std::string> mass_errors;
+  // This run's analyses of the mesh (MeshSolidAnalysis), by scale and by source (the STL read
+  // directly, or LoadMeshFile's mesh): an open mesh is asked for with two sets of options.
+  AnalysisMemo analyses;
 };
 
 MeshCache::MeshCache() = default;
@@ -272,8 +308,8 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
         scaled = ScaleMesh(*triangles, scale);
         triangles = &scaled;
       }
-      properties = internal::CalcMeshMassProperties(*triangles, probe,
-                                                    state.direct->joined && StayDistinct(scale));
+      properties = CalcRemembering(&state.analyses, *triangles, scale, true,
+                                   state.direct->joined && StayDistinct(scale), probe);
       // An ascii STL's triangles are assimp's only when no nearby positions share one of its
       // buckets (stl_direct.cc), which is not checked there: its numbers are kept only for a
       // closed solid, whose integral any such join would hardly change, as before.
@@ -283,7 +319,10 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
     }
     if (!properties) {
       if (std::shared_ptr<const TriangleMesh> mesh = LoadLocked(state, path, &why)) {
-        properties = CalcMeshMassProperties(ScaleMesh(*mesh, scale), unit_density);
+        TriangleMesh scaled;
+        if (!IsIdentity(scale)) scaled = ScaleMesh(*mesh, scale);
+        properties = CalcRemembering(&state.analyses, IsIdentity(scale) ? *mesh : scaled, scale,
+                                     false, false, unit_density);
       }
     }
     if (properties) {
@@ -320,6 +359,16 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
       state.stored.box = box;
     } else if (state.loaded) {
       state.bounds_error = state.load_error;
+    } else if (!HasDirectBox(path)) {
+      // A DAE, glTF or other file only assimp reads: its box from LoadMeshFile's mesh, which is
+      // kept for the numbers asked next (the rules ask them of nearly every mesh), so the file is
+      // imported once. LoadMeshBounds would import it and drop the mesh.
+      if (std::shared_ptr<const TriangleMesh> loaded =
+              LoadLocked(state, path, &state.bounds_error)) {
+        Eigen::AlignedBox3d box;
+        for (const Eigen::Vector3d& v : loaded->vertices) box.extend(v);
+        state.stored.box = box;
+      }
     } else {
       {
         std::lock_guard<std::mutex> lock_counters(mutex_);

@@ -1,7 +1,8 @@
 #pragma once
 // Private to the library: CalcMeshMassProperties for a mesh whose vertices are known to sit at
 // distinct positions (MeshCache's directly read binary STL: its reader found them while reading),
-// so that AnalyzeMeshTopology does not hash the positions a second time.
+// so that AnalyzeMeshTopology does not hash the positions a second time; and in two steps, so that
+// MeshCache analyzes a mesh once for all the options it is asked with.
 
 #include "massprops/mesh/mesh_inertia.h"
 
@@ -15,5 +16,31 @@ namespace massprops::internal {
 MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
                                           const MeshInertiaOptions& options,
                                           bool distinct_vertices);
+
+/// What CalcMeshMassProperties finds of a mesh before its options matter: the topology, the box
+/// of the used vertices, the signed integral about the box's center and, for a mesh that is not a
+/// closed manifold, how much that integral depends on the reference point (the diagnostics'
+/// reference_point_sensitivity). An open mesh is asked for twice in one `check` (the density rules
+/// model it as a closed solid, the hull bound as a thin shell): MeshCache keeps this between them.
+struct MeshSolidAnalysis {
+  MeshDiagnostics diagnostics;
+  double diagonal = 0;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  MeshMassProperties signed_result;
+};
+
+/// Throws std::invalid_argument, as CalcMeshMassProperties does, when the options' density or
+/// shell thickness is negative or not finite.
+void CheckMeshInertiaOptions(const MeshInertiaOptions& options);
+
+/// The analysis above (validates the mesh: throws std::invalid_argument as
+/// CalcMeshMassProperties does). `distinct_vertices` as below.
+MeshSolidAnalysis AnalyzeMeshSolid(const TriangleMesh& mesh, bool distinct_vertices);
+
+/// CalcMeshMassProperties(mesh, options, distinct_vertices) from `analysis`, which must be
+/// AnalyzeMeshSolid(mesh, distinct_vertices): the same numbers, bit for bit.
+MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
+                                          const MeshInertiaOptions& options,
+                                          const MeshSolidAnalysis& analysis);
 
 }  // namespace massprops::internal

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -235,14 +236,14 @@ std::vector<std::int32_t> MergeCoincidentVertices(const TriangleMesh& mesh, Mesh
 }
 
 // 2. Counts degenerate triangles; marks those without a repeated vertex, which alone take part
-// in the topology.
-std::vector<char> MarkTrianglesWithEdges(const TriangleMesh& mesh,
-                                         const std::vector<std::int32_t>& representative,
+// in the topology. `rep(i)` is vertex i's representative.
+template <typename Representative>
+std::vector<char> MarkTrianglesWithEdges(const TriangleMesh& mesh, Representative rep,
                                          MeshDiagnostics* d) {
   std::vector<char> has_edges(mesh.triangles.size(), 0);
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
     const auto& t = mesh.triangles[i];
-    const std::int32_t r[3] = {representative[t[0]], representative[t[1]], representative[t[2]]};
+    const std::int32_t r[3] = {rep(t[0]), rep(t[1]), rep(t[2])};
     if (r[0] == r[1] || r[1] == r[2] || r[2] == r[0]) {
       ++d->degenerate_triangles;
       continue;
@@ -261,33 +262,39 @@ std::vector<char> MarkTrianglesWithEdges(const TriangleMesh& mesh,
 
 // 3. Buckets the directed edges by their smaller vertex (counting sort: linear; the edges are
 // generated twice from the triangles rather than stored), then sorts each small bucket (its
-// size is the vertex's degree) by the larger vertex and counts the uses.
-void CountEdgeUses(const TriangleMesh& mesh, const std::vector<std::int32_t>& representative,
-                   const std::vector<char>& has_edges, MeshDiagnostics* d) {
+// size is the vertex's degree) by the larger vertex and counts the uses. An edge is its larger
+// vertex and its direction in 32 bits (vertex indices are below 2^31), in an array that is
+// written before it is read (not zeroed first).
+template <typename Representative>
+void CountEdgeUses(const TriangleMesh& mesh, Representative rep, const std::vector<char>& has_edges,
+                   MeshDiagnostics* d) {
   auto for_each_edge = [&](auto&& visit) {
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
       if (!has_edges[i]) continue;
       const auto& t = mesh.triangles[i];
-      const std::int32_t r[3] = {representative[t[0]], representative[t[1]], representative[t[2]]};
+      const std::int32_t r[3] = {rep(t[0]), rep(t[1]), rep(t[2])};
       for (int k = 0; k < 3; ++k) visit(r[k], r[(k + 1) % 3]);
     }
   };
   std::vector<std::int64_t> start(mesh.vertices.size() + 1, 0);
   for_each_edge([&](std::int32_t from, std::int32_t to) { ++start[std::min(from, to) + 1]; });
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) start[v + 1] += start[v];
-  std::vector<std::int64_t> bucket(static_cast<std::size_t>(start.back()));  // hi << 1 | forward
+  // hi << 1 | forward
+  const std::unique_ptr<std::uint32_t[]> bucket(
+      new std::uint32_t[static_cast<std::size_t>(start.back())]);
   {
     std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
     for_each_edge([&](std::int32_t from, std::int32_t to) {
       bucket[fill[std::min(from, to)]++] =
-          (static_cast<std::int64_t>(std::max(from, to)) << 1) | (from < to ? 1 : 0);
+          (static_cast<std::uint32_t>(std::max(from, to)) << 1) | (from < to ? 1u : 0u);
     });
   }
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const auto begin = bucket.begin() + start[v], end = bucket.begin() + start[v + 1];
+    std::uint32_t* const begin = bucket.get() + start[v];
+    std::uint32_t* const end = bucket.get() + start[v + 1];
     std::sort(begin, end);
-    for (auto it = begin; it != end;) {
-      const std::int64_t hi = *it >> 1;
+    for (const std::uint32_t* it = begin; it != end;) {
+      const std::uint32_t hi = *it >> 1;
       std::int64_t uses = 0, forward = 0;
       for (; it != end && (*it >> 1) == hi; ++it) {
         ++uses;
@@ -316,17 +323,14 @@ MeshDiagnostics AnalyzeTopology(const TriangleMesh& mesh, bool distinct) {
   MeshDiagnostics d;
   d.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
   d.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
-  std::vector<std::int32_t> representative;
   if (distinct) {
-    representative.resize(mesh.vertices.size());
-    for (std::size_t i = 0; i < representative.size(); ++i) {
-      representative[i] = static_cast<std::int32_t>(i);
-    }
+    const auto itself = [](std::int32_t i) { return i; };
+    CountEdgeUses(mesh, itself, MarkTrianglesWithEdges(mesh, itself, &d), &d);
   } else {
-    representative = MergeCoincidentVertices(mesh, &d);
+    const std::vector<std::int32_t> representative = MergeCoincidentVertices(mesh, &d);
+    const auto rep = [&representative](std::int32_t i) { return representative[i]; };
+    CountEdgeUses(mesh, rep, MarkTrianglesWithEdges(mesh, rep, &d), &d);
   }
-  const std::vector<char> has_edges = MarkTrianglesWithEdges(mesh, representative, &d);
-  CountEdgeUses(mesh, representative, has_edges, &d);
   return d;
 }
 
@@ -338,56 +342,74 @@ MeshDiagnostics AnalyzeMeshTopology(const TriangleMesh& mesh) {
 
 namespace {
 
-// The signed divergence-theorem integral with the reference point R (see
-// CalcClosedMeshMassPropertiesSigned).
-MeshMassProperties IntegrateSigned(const TriangleMesh& mesh, const Eigen::Vector3d& R) {
-  // Kallay (2006): sums over the signed tetrahedra (R, a, b, c) of 6·volume = det[a b c],
-  // 24·first moment = det·(a + b + c), and 120·covariance = det·(a·aᵀ + b·bᵀ + c·cᵀ + s·sᵀ).
+// The sums of the signed divergence-theorem integral with the reference point R (see
+// CalcClosedMeshMassPropertiesSigned). Kallay (2006): over the signed tetrahedra (R, a, b, c),
+// 6·volume = det[a b c], 24·first moment = det·(a + b + c), and 120·covariance =
+// det·(a·aᵀ + b·bᵀ + c·cᵀ + s·sᵀ).
+struct SignedSums {
+  Eigen::Vector3d R;
   double six_volume = 0;
   Eigen::Vector3d m1_24 = Eigen::Vector3d::Zero();
   Sym6 C120{};
   double area = 0;
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3d a = mesh.vertices[t[0]] - R;
-    const Eigen::Vector3d b = mesh.vertices[t[1]] - R;
-    const Eigen::Vector3d c = mesh.vertices[t[2]] - R;
+
+  explicit SignedSums(const Eigen::Vector3d& reference) : R(reference) {}
+
+  void Add(const Eigen::Vector3d& va, const Eigen::Vector3d& vb, const Eigen::Vector3d& vc,
+           bool with_area) {
+    const Eigen::Vector3d a = va - R;
+    const Eigen::Vector3d b = vb - R;
+    const Eigen::Vector3d c = vc - R;
     const double det = a.dot(b.cross(c));
     six_volume += det;
     m1_24 += det * (a + b + c);
     AddTriangleSecondMoment(det, a, b, c, &C120);
-    area += TriangleArea(a, b, c);
+    if (with_area) area += TriangleArea(a, b, c);
   }
-  const double volume = six_volume / 6;
-  Sym6 C;
-  for (int i = 0; i < 6; ++i) C[i] = C120[i] / 120;
-  MeshMassProperties result;
-  result.volume = volume;
-  result.area = area;
-  result.mass = volume;
-  FinishFromMoments(volume, m1_24 / 24, C, R, 1.0, &result);
-  result.diagnostics.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
-  result.diagnostics.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
-  return result;
+
+  MeshMassProperties Finish(const TriangleMesh& mesh) const {
+    const double volume = six_volume / 6;
+    Sym6 C;
+    for (int i = 0; i < 6; ++i) C[i] = C120[i] / 120;
+    MeshMassProperties result;
+    result.volume = volume;
+    result.area = area;
+    result.mass = volume;
+    FinishFromMoments(volume, m1_24 / 24, C, R, 1.0, &result);
+    result.diagnostics.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
+    result.diagnostics.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
+    return result;
+  }
+};
+
+// The signed integral with the reference point R.
+MeshMassProperties IntegrateSigned(const TriangleMesh& mesh, const Eigen::Vector3d& R) {
+  SignedSums sums(R);
+  for (const auto& t : mesh.triangles) {
+    sums.Add(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], true);
+  }
+  return sums.Finish(mesh);
+}
+
+// The reference point ReferencePointSensitivity moves the integral's to, from the box `used` of
+// the used vertices: its center plus d = the half extents times (1, 0.618, 0.382) (a direction
+// no symmetric mesh favours).
+Eigen::Vector3d MovedReferencePoint(const Eigen::AlignedBox3d& used) {
+  const Eigen::Vector3d lo = used.min(), hi = used.max();
+  const Eigen::Vector3d d = ((hi - lo) / 2).cwiseProduct(Eigen::Vector3d(1, 0.618, 0.382));
+  return (lo + hi) / 2 + d;
 }
 
 // How much the signed integral changes when the reference point moves from the bounding-box
-// center R to R + d, d = the half extents times (1, 0.618, 0.382) (a direction no symmetric
-// mesh favours): the largest of the relative changes of the volume, of the center (relative to
-// the bounding-box diagonal) and of the central inertia (relative to its largest entry). Zero up
-// to round-off for a surface that encloses a volume (divergence theorem), whatever its edges;
-// about (hole area)/(surface size)² for a surface with holes.
-double ReferencePointSensitivity(const TriangleMesh& mesh, const MeshMassProperties& at_center) {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = -lo;
-  for (const auto& t : mesh.triangles) {
-    for (const std::int32_t i : t) {
-      lo = lo.cwiseMin(mesh.vertices[i]);
-      hi = hi.cwiseMax(mesh.vertices[i]);
-    }
-  }
-  const Eigen::Vector3d d = ((hi - lo) / 2).cwiseProduct(Eigen::Vector3d(1, 0.618, 0.382));
-  const MeshMassProperties moved = IntegrateSigned(mesh, (lo + hi) / 2 + d);
-  const double diagonal = (hi - lo).norm();
+// center to MovedReferencePoint: the largest of the relative changes of the volume, of the center
+// (relative to the bounding-box diagonal) and of the central inertia (relative to its largest
+// entry). Zero up to round-off for a surface that encloses a volume (divergence theorem), whatever
+// its edges; about (hole area)/(surface size)² for a surface with holes. `moved` is the integral
+// about the moved point (its area is not used).
+double ReferencePointSensitivity(const Eigen::AlignedBox3d& used,
+                                 const MeshMassProperties& at_center,
+                                 const MeshMassProperties& moved) {
+  const double diagonal = (used.max() - used.min()).norm();
   const Eigen::Matrix3d I0 = at_center.I_GGcm_G.CopyToFullMatrix3();
   const Eigen::Matrix3d I1 = moved.I_GGcm_G.CopyToFullMatrix3();
   const double scale = I0.cwiseAbs().maxCoeff();
@@ -474,9 +496,7 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
 
 namespace internal {
 
-MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
-                                          const MeshInertiaOptions& options,
-                                          bool distinct_vertices) {
+void CheckMeshInertiaOptions(const MeshInertiaOptions& options) {
   if (!(options.density >= 0) || !std::isfinite(options.density) ||
       !(options.shell_thickness >= 0) || !std::isfinite(options.shell_thickness)) {
     std::ostringstream message;
@@ -484,13 +504,51 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
             << options.shell_thickness << " must be finite and non-negative";
     throw std::invalid_argument(message.str());
   }
-  MeshDiagnostics diagnostics = AnalyzeTopology(mesh, distinct_vertices);  // validates the mesh
+}
+
+MeshSolidAnalysis AnalyzeMeshSolid(const TriangleMesh& mesh, bool distinct_vertices) {
+  MeshSolidAnalysis a;
+  a.diagnostics = AnalyzeTopology(mesh, distinct_vertices);  // validates the mesh
   // The box of the used vertices, once: its diagonal, and its center as the reference point of
   // the signed integral (CalcClosedMeshMassPropertiesSigned's, without a second validation).
   const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
-  const double diagonal = box.isEmpty() ? 0 : box.diagonal().norm();
-  const Eigen::Vector3d center =
+  a.diagonal = box.isEmpty() ? 0 : box.diagonal().norm();
+  a.center =
       box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
+  if (a.diagnostics.IsClosedManifold()) {
+    a.signed_result = IntegrateSigned(mesh, a.center);
+    return a;
+  }
+  // Not a closed manifold: the integral about the center and about a moved point (which tells
+  // whether the surface encloses its volume all the same), in one pass over the triangles.
+  SignedSums at_center(a.center), moved(MovedReferencePoint(box));
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3d& va = mesh.vertices[t[0]];
+    const Eigen::Vector3d& vb = mesh.vertices[t[1]];
+    const Eigen::Vector3d& vc = mesh.vertices[t[2]];
+    at_center.Add(va, vb, vc, true);
+    moved.Add(va, vb, vc, false);
+  }
+  a.signed_result = at_center.Finish(mesh);
+  a.diagnostics.reference_point_sensitivity =
+      ReferencePointSensitivity(box, a.signed_result, moved.Finish(mesh));
+  return a;
+}
+
+MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
+                                          const MeshInertiaOptions& options,
+                                          bool distinct_vertices) {
+  CheckMeshInertiaOptions(options);
+  return CalcMeshMassProperties(mesh, options, AnalyzeMeshSolid(mesh, distinct_vertices));
+}
+
+MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
+                                          const MeshInertiaOptions& options,
+                                          const MeshSolidAnalysis& analysis) {
+  CheckMeshInertiaOptions(options);
+  MeshDiagnostics diagnostics = analysis.diagnostics;
+  const double diagonal = analysis.diagonal;
+  const Eigen::Vector3d& center = analysis.center;
   // A closed mesh whose volume is below this is flat (e.g. a double-sided plane).
   const double negligible_volume = 1e-12 * diagonal * diagonal * diagonal;
 
@@ -521,16 +579,14 @@ MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
   };
 
   std::string reason;
+  const MeshMassProperties& signed_result = analysis.signed_result;
   if (diagnostics.IsClosedManifold()) {
-    MeshMassProperties closed = IntegrateSigned(mesh, center);
-    if (std::abs(closed.volume) > negligible_volume) {
-      return finish_solid(closed, MeshSolidModel::kClosedSolid, "");
+    if (std::abs(signed_result.volume) > negligible_volume) {
+      return finish_solid(signed_result, MeshSolidModel::kClosedSolid, "");
     }
     reason = mesh.triangles.empty() ? "no triangles" : "closed but encloses no volume";
   } else {
     reason = DescribeDefects(diagnostics);
-    MeshMassProperties signed_result = IntegrateSigned(mesh, center);
-    diagnostics.reference_point_sensitivity = ReferencePointSensitivity(mesh, signed_result);
     if (std::abs(signed_result.volume) > negligible_volume &&
         diagnostics.reference_point_sensitivity <= options.closure_tolerance) {
       std::ostringstream note;

@@ -41,7 +41,9 @@ class PositionTable {
   };
 
   explicit PositionTable(std::size_t corners) {
-    while (capacity_ < corners / 2) capacity_ *= 2;  // about twice the positions of a closed mesh
+    // 2 to 4 times the positions of a closed mesh (a sixth of its corners), which never fill
+    // half of it; an open mesh's may (then it grows).
+    while (capacity_ < corners / 3) capacity_ *= 2;
     table_.resize(capacity_);
   }
 

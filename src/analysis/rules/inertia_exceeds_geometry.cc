@@ -114,10 +114,16 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
     axes[i] = i < 3 ? Eigen::Vector3d(eig.eigenvectors().col(i).normalized())
                     : Eigen::Vector3d(Eigen::Vector3d::Unit(i - 3));
   }
+  // About a frame axis the squared distance is the sum of two squared coordinates: r × x̂ is
+  // (±0, r_z, -r_y) exactly, so |r × x̂|² = r_z² + r_y², the same number in fewer operations.
   std::array<double, 6> reach2{};
   for (const Eigen::Vector3d& p : points->points_B) {
     const Eigen::Vector3d r = p - c;
-    for (int i = 0; i < 6; ++i) reach2[i] = std::max(reach2[i], r.cross(axes[i]).squaredNorm());
+    for (int i = 0; i < 3; ++i) reach2[i] = std::max(reach2[i], r.cross(axes[i]).squaredNorm());
+    const double xx = r.x() * r.x(), yy = r.y() * r.y(), zz = r.z() * r.z();
+    reach2[3] = std::max(reach2[3], yy + zz);
+    reach2[4] = std::max(reach2[4], xx + zz);
+    reach2[5] = std::max(reach2[5], xx + yy);
   }
   double worst = 0, worst_moment = 0, worst_bound = 0;
   Eigen::Vector3d worst_axis = Eigen::Vector3d::UnitX();
