@@ -104,6 +104,13 @@ TEST(MeshBoundsCliTest, MeshesThatDoNotResolveAreOneLineOfTheSummary) {
   EXPECT_EQ(summary.at("first_unresolved_mesh"), "package://nowhere/meshes/a.stl");
   EXPECT_EQ(summary.at("warnings"), 0);
 
+  // An MJCF mesh written inline (vertex and face, no file) that cannot be used has no filename.
+  run = RunTool("check --format json '" + std::string(MASSPROPS_TESTDATA_DIR) +
+                "/fuzz/regressions/mjcf/face-index-not-an-int32'");
+  const nlohmann::json inline_mesh = nlohmann::json::parse(run.output).at("summary");
+  EXPECT_EQ(inline_mesh.at("mesh_links_unresolved"), 1);
+  EXPECT_EQ(inline_mesh.at("first_unresolved_mesh"), "(no filename)");
+
   run = RunTool("check --format sarif '" + kUnresolved + "'");
   const nlohmann::json sarif = nlohmann::json::parse(run.output);
   const nlohmann::json& properties = sarif.at("runs").at(0).at("properties");

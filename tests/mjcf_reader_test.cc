@@ -313,6 +313,13 @@ TEST(MjcfReaderTest, UnreadableMeshCostsOnlyItsBody) {
   EXPECT_EQ(read.findings[0].rule, "inertial-unreadable");
   EXPECT_NE(read.findings[0].message.find("does_not_exist.stl"), std::string::npos);
   EXPECT_TRUE(read.models.at(0).links.at(2).inertial.has_value());
+  // Its help is about the mesh (no number of the file is badly written), and the finding keeps it.
+  const std::vector<Finding> findings = ReaderFindings(read, CheckOptions{});
+  ASSERT_EQ(findings.size(), 1u);
+  EXPECT_EQ(findings[0].help, "fix the mesh named, or give the body an explicit <inertial>");
+  // The loader's message names the file (its path from the model's folder) once.
+  EXPECT_EQ(findings[0].headline,
+            "body 'a': mesh file 'does_not_exist.stl' does not exist or is not a regular file");
 }
 
 }  // namespace

@@ -93,7 +93,8 @@ LinkBoxFunction MakeLinkBoxFunction(const MeshResolveOptions& resolve) {
       if (!box || box->isEmpty()) {
         ++result.unknown;
         if (geometry.type == Geometry::Type::kMesh && result.unresolved_uri.empty()) {
-          result.unresolved_uri = geometry.uri.empty() ? "(empty filename)" : geometry.uri;
+          // An MJCF mesh written inline (vertex and face) or a URDF filename="" has none.
+          result.unresolved_uri = geometry.uri.empty() ? "(no filename)" : geometry.uri;
           result.unresolved_reason = error;
         }
         continue;

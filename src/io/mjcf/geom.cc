@@ -148,7 +148,8 @@ std::optional<MeshSolid> MeshSolids::Get(Context* context, const Node& node, boo
       if (full.is_relative() && model_file_ != "<stdin>") {
         full = std::filesystem::path(model_file_).parent_path() / full;
       }
-      if (!LoadMeshFile(full.string(), &mesh, &entry.error)) {
+      if (!LoadMeshFile(full.string(), &mesh, &entry.error) &&
+          entry.error.rfind("mesh file '", 0) != 0) {  // else it names the file already
         entry.error = "mesh '" + entry.uri + "': " + entry.error;
       }
     } else {

@@ -250,6 +250,7 @@ void Builder::Contents(const Node& node, bool is_world, const std::string& child
         f.location = link->location;
         f.message = "body '" + link->name + "': " + error +
                     "; its mass properties are unknown, so its welded group is not checked";
+        f.help = "fix the mesh named, or give the body an explicit <inertial>";
         result_->findings.push_back(std::move(f));
         mass.reset();
         explicit_mass.reset();
