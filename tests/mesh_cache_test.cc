@@ -147,6 +147,39 @@ TEST(MeshCacheTest, ChangedFileIsReadAgain) {
   EXPECT_EQ(numbers.box.max(), Eigen::Vector3d(2, 2, 2));
 }
 
+// The cache key's content hash reads 32-byte blocks in four lanes of 8 bytes, then the last bytes
+// (mesh_store.cc): a file that differs from a cached one in one byte, in any lane or in the tail,
+// is another entry. The cube's STL is 684 bytes (84 + 12 · 50): 21 blocks and 12 more. The bytes
+// changed are in the header (offsets 0 to 79) or the last facet's attribute (683), which the
+// geometry ignores: only the key tells the files apart.
+TEST(MeshCacheTest, FilesThatDifferInOneByteAreDifferentEntries) {
+  TempFolder temp;
+  const std::string mesh = temp / "cube.stl";
+  WriteCubeStl(mesh, 1.0f);
+  std::string original;
+  {
+    std::ifstream in(mesh, std::ios::binary);
+    original.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  ASSERT_EQ(original.size(), 684u);
+  auto read_as = [&](const std::string& bytes) {
+    std::ofstream(mesh, std::ios::binary | std::ios::trunc) << bytes;
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    const Numbers numbers = Read(&cache, mesh);
+    EXPECT_EQ(numbers.box.max(), Eigen::Vector3d(1, 1, 1));
+    return cache.files_from_persistent_cache();
+  };
+  EXPECT_EQ(read_as(original), 0);
+  for (const std::size_t offset : {0, 8, 16, 24, 31, 40, 63, 79, 683}) {
+    std::string changed = original;
+    changed[offset] = static_cast<char>(changed[offset] ^ 1);
+    EXPECT_EQ(read_as(changed), 0) << offset;  // not the entry of any file before
+    EXPECT_EQ(read_as(changed), 1) << offset;  // its own entry, found by its content
+  }
+  EXPECT_EQ(read_as(original), 1);
+}
+
 TEST(MeshCacheTest, UnchangedOlderFileIsFoundByItsPathSizeAndTime) {
   // A file last modified a minute ago gets a stat entry: the next run does not even hash it
   // (checked by making the file unreadable: its numbers still come from the cache).

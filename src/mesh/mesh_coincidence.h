@@ -9,10 +9,13 @@
 namespace massprops::internal {
 
 /// massprops::CalcMeshMassProperties(mesh, options), the same numbers. With `distinct_vertices`
-/// the caller vouches that no two vertices have the same position (-0 and +0 the same): the
-/// topology then takes each vertex as its own representative. A mesh scaled since that was
-/// known keeps it when every scale factor s is finite with 1e-30 <= |s| <= 1e30 (distinct float
-/// coordinates times such s stay distinct in double); the caller checks that.
+/// the caller vouches for what the direct binary STL reader knows of its mesh: no two vertices
+/// have the same position (-0 and +0 the same), every vertex is finite and used by a triangle,
+/// and every index names a vertex. The topology then takes each vertex as its own
+/// representative, the mesh is not validated again, and its box is that of its vertices. A mesh
+/// scaled since that was known keeps it when every scale factor s is finite with
+/// 1e-30 <= |s| <= 1e30 (distinct float coordinates times such s stay distinct, and finite, in
+/// double); the caller checks that.
 MeshMassProperties CalcMeshMassProperties(const TriangleMesh& mesh,
                                           const MeshInertiaOptions& options,
                                           bool distinct_vertices);
@@ -34,7 +37,7 @@ struct MeshSolidAnalysis {
 void CheckMeshInertiaOptions(const MeshInertiaOptions& options);
 
 /// The analysis above (validates the mesh: throws std::invalid_argument as
-/// CalcMeshMassProperties does). `distinct_vertices` as below.
+/// CalcMeshMassProperties does). `distinct_vertices` as above.
 MeshSolidAnalysis AnalyzeMeshSolid(const TriangleMesh& mesh, bool distinct_vertices);
 
 /// CalcMeshMassProperties(mesh, options, distinct_vertices) from `analysis`, which must be

@@ -319,7 +319,7 @@ namespace {
 // AnalyzeMeshTopology; with `distinct` (mesh_coincidence.h), each vertex is its own
 // representative, else they are found by hashing the positions.
 MeshDiagnostics AnalyzeTopology(const TriangleMesh& mesh, bool distinct) {
-  ValidateMesh(mesh);
+  if (!distinct) ValidateMesh(mesh);  // else valid by what the caller vouches
   MeshDiagnostics d;
   d.num_vertices = static_cast<std::int64_t>(mesh.vertices.size());
   d.num_triangles = static_cast<std::int64_t>(mesh.triangles.size());
@@ -395,7 +395,8 @@ MeshMassProperties IntegrateSigned(const TriangleMesh& mesh, const Eigen::Vector
 // the used vertices: its center plus d = the half extents times (1, 0.618, 0.382) (a direction
 // no symmetric mesh favours).
 Eigen::Vector3d MovedReferencePoint(const Eigen::AlignedBox3d& used) {
-  const Eigen::Vector3d lo = used.min(), hi = used.max();
+  const Eigen::Vector3d& lo = used.min();
+  const Eigen::Vector3d& hi = used.max();
   const Eigen::Vector3d d = ((hi - lo) / 2).cwiseProduct(Eigen::Vector3d(1, 0.618, 0.382));
   return (lo + hi) / 2 + d;
 }
@@ -511,7 +512,13 @@ MeshSolidAnalysis AnalyzeMeshSolid(const TriangleMesh& mesh, bool distinct_verti
   a.diagnostics = AnalyzeTopology(mesh, distinct_vertices);  // validates the mesh
   // The box of the used vertices, once: its diagonal, and its center as the reference point of
   // the signed integral (CalcClosedMeshMassPropertiesSigned's, without a second validation).
-  const Eigen::AlignedBox3d box = UsedBoundingBox(mesh);
+  // Every vertex of a mesh read directly is used: the box of its vertices, in order.
+  Eigen::AlignedBox3d box;
+  if (distinct_vertices) {
+    for (const Eigen::Vector3d& v : mesh.vertices) box.extend(v);
+  } else {
+    box = UsedBoundingBox(mesh);
+  }
   a.diagonal = box.isEmpty() ? 0 : box.diagonal().norm();
   a.center =
       box.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(box.center());
