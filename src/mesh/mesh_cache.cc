@@ -21,22 +21,21 @@ namespace {
 using AnalysisMemo =
     std::vector<std::pair<std::pair<Eigen::Vector3d, bool>, internal::MeshSolidAnalysis>>;
 
-bool IsStlPath(const std::string& path) {
+// Whether `path` ends with the 4-character `suffix` (lower case), in any case.
+bool HasSuffix(const std::string& path, const char* suffix) {
   if (path.size() < 4) return false;
-  std::string suffix = path.substr(path.size() - 4);
-  for (char& c : suffix) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return suffix == ".stl";
+  for (std::size_t i = 0; i < 4; ++i) {
+    const char c = path[path.size() - 4 + i];
+    if (std::tolower(static_cast<unsigned char>(c)) != suffix[i]) return false;
+  }
+  return true;
 }
+
+bool IsStlPath(const std::string& path) { return HasSuffix(path, ".stl"); }
 
 // Whether LoadMeshBounds reads the box of `path` itself (an STL or OBJ file), not through
 // LoadMeshFile.
-bool HasDirectBox(const std::string& path) {
-  if (IsStlPath(path)) return true;
-  if (path.size() < 4) return false;
-  std::string suffix = path.substr(path.size() - 4);
-  for (char& c : suffix) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return suffix == ".obj";
-}
+bool HasDirectBox(const std::string& path) { return IsStlPath(path) || HasSuffix(path, ".obj"); }
 
 // The start of CalcMeshMassProperties' reason when it integrates an open mesh as a closed solid
 // because MeshInertiaOptions::open_mesh_model says so (the only closed solid that depends on it).
