@@ -318,10 +318,14 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
     }
     if (!properties) {
       if (std::shared_ptr<const TriangleMesh> mesh = LoadLocked(state, path, &why)) {
+        const TriangleMesh* triangles = mesh.get();
         TriangleMesh scaled;
-        if (!IsIdentity(scale)) scaled = ScaleMesh(*mesh, scale);
-        properties = CalcRemembering(&state.analyses, IsIdentity(scale) ? *mesh : scaled, scale,
-                                     false, false, unit_density);
+        if (!IsIdentity(scale)) {
+          scaled = ScaleMesh(*mesh, scale);
+          triangles = &scaled;
+        }
+        properties =
+            CalcRemembering(&state.analyses, *triangles, scale, false, false, unit_density);
       }
     }
     if (properties) {
@@ -352,22 +356,18 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
     }
     const TriangleMesh* mesh = state.mesh ? state.mesh.get() : nullptr;
     if (mesh == nullptr && state.direct) mesh = &state.direct->mesh;
+    if (mesh == nullptr && !state.loaded && !HasDirectBox(path)) {
+      // A DAE, glTF or other file only assimp reads: its box from LoadMeshFile's mesh, which is
+      // kept for the numbers asked next (the rules ask them of nearly every mesh), so the file is
+      // imported once. LoadMeshBounds would import it and drop the mesh.
+      mesh = LoadLocked(state, path, nullptr).get();  // state.mesh keeps it
+    }
     if (mesh != nullptr) {  // read already: its box, no second read
       Eigen::AlignedBox3d box;
       for (const Eigen::Vector3d& v : mesh->vertices) box.extend(v);
       state.stored.box = box;
     } else if (state.loaded) {
       state.bounds_error = state.load_error;
-    } else if (!HasDirectBox(path)) {
-      // A DAE, glTF or other file only assimp reads: its box from LoadMeshFile's mesh, which is
-      // kept for the numbers asked next (the rules ask them of nearly every mesh), so the file is
-      // imported once. LoadMeshBounds would import it and drop the mesh.
-      if (std::shared_ptr<const TriangleMesh> loaded =
-              LoadLocked(state, path, &state.bounds_error)) {
-        Eigen::AlignedBox3d box;
-        for (const Eigen::Vector3d& v : loaded->vertices) box.extend(v);
-        state.stored.box = box;
-      }
     } else {
       {
         std::lock_guard<std::mutex> lock_counters(mutex_);

@@ -70,9 +70,8 @@ void DescribeReaderFinding(Finding& f) {
                                                           : "";
     f.evidence.emplace_back(name + unit, value);
   }
-  if (!f.help.empty()) {
-    // The reader's own (a mass that could not be computed from geometry, not a number to rewrite).
-  } else if (f.rule == kUrdfNotLoadable) {
+  if (!f.help.empty()) return;  // the reader's own (e.g. an MJCF mesh that cannot be used)
+  if (f.rule == kUrdfNotLoadable) {
     f.help = "fix the element named so that ROS's parser loads the file (docs/urdf.md)";
   } else if (f.rule == kInertialUnreadable) {
     f.help = "write one decimal number per attribute, nothing around it";
