@@ -113,7 +113,7 @@ TEST(ChecksTest, UnitsSuspectHeadlineNamesTheFactorTheSizeAndTheCause) {
 
 TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   std::set<std::string> ids;
-  for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.insert(r.id).second) << r.id;
+  for (const RuleInfo& r : AllRules()) EXPECT_TRUE(ids.emplace(r.id).second) << r.id;
   // 16 rules of CheckModel (com-not-mirrored added by issue 34) + 4 rules whose findings
   // the readers make (ReadResult::findings, inertial-auto from the SDF reader) + 9 target-profile
   // rules (target_profile.h, reported only with --target) + 2 geometry rules (geometry_checks.h),

@@ -329,7 +329,7 @@ TEST(CliTest, ListRulesNamesEveryRule) {
   RunResult run = RunTool("check --list-rules");
   EXPECT_EQ(run.exit_code, 0);
   for (const massprops::RuleInfo& rule : massprops::AllRules()) {
-    EXPECT_TRUE(Contains(run.out, rule.id)) << rule.id;
+    EXPECT_TRUE(Contains(run.out, std::string(rule.id))) << rule.id;
   }
   run = RunTool("check --list-rules --format json");
   EXPECT_EQ(run.exit_code, 0);

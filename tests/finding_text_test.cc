@@ -81,7 +81,7 @@ TEST(FindingTextTest, EveryRuleHasALongFormFromDocsRulesMd) {
     const std::optional<std::string> text = RuleLongForm(rule.id);
     ASSERT_TRUE(text.has_value()) << rule.id;
     // The section starts with its own heading (### or ####).
-    EXPECT_NE(text->find("# `" + rule.id + "`"), std::string::npos) << rule.id;
+    EXPECT_NE(text->find("# `" + std::string(rule.id) + "`"), std::string::npos) << rule.id;
   }
   EXPECT_FALSE(RuleLongForm("no-such-rule").has_value());
   EXPECT_EQ(RulesWithLongForm().front(), "mass-not-positive");  // the first section of the page

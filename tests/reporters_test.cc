@@ -203,7 +203,8 @@ TEST(ReportersTest, SarifHasTheRequiredFieldsOfVersion210) {
     EXPECT_EQ(rules[i].at("shortDescription").at("text"), AllRules()[i].summary);
     EXPECT_EQ(rules[i].at("defaultConfiguration").at("level"),
               ToString(AllRules()[i].default_severity));
-    EXPECT_EQ(rules[i].at("helpUri"), "https://example.org/massprops#" + AllRules()[i].id);
+    EXPECT_EQ(rules[i].at("helpUri"),
+              "https://example.org/massprops#" + std::string(AllRules()[i].id));
   }
 
   const json& results = run.at("results");

@@ -2,10 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -22,26 +18,6 @@ Repair OneChange(const std::string& link, int link_line, const std::string& elem
   r.link_line = link_line;
   r.changes.push_back({element, attribute, line, 0, {0}, {value}});
   return r;
-}
-
-TEST(FormatShortestTest, WritesTheShortestTextThatReadsBack) {
-  // Shortest round-trip forms (std::to_chars, C++17 [charconv.to.chars]).
-  EXPECT_EQ(FormatShortest(0.1), "0.1");
-  EXPECT_EQ(FormatShortest(2), "2");
-  EXPECT_EQ(FormatShortest(1e-6), "1e-06");
-  EXPECT_EQ(FormatShortest(-0.0045), "-0.0045");
-  EXPECT_EQ(FormatShortest(-0.0), "0");
-  EXPECT_EQ(FormatShortest(1.0 / 3), "0.3333333333333333");
-}
-
-TEST(FormatShortestTest, RandomDoublesRoundTrip) {
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> mantissa(-1, 1);
-  std::uniform_int_distribution<int> exponent(-30, 30);
-  for (int i = 0; i < 10000; ++i) {
-    const double x = std::ldexp(mantissa(rng), exponent(rng));
-    EXPECT_EQ(std::strtod(FormatShortest(x).c_str(), nullptr), x) << FormatShortest(x);
-  }
 }
 
 TEST(PatchModelTextTest, OnlyTheChangedAttributeValueIsRewritten) {

@@ -45,7 +45,10 @@ bool IsKnownRule(const std::string& id) {
 
 std::string KnownRuleList() {
   std::string out;
-  for (const RuleInfo& rule : AllRules()) out += (out.empty() ? "" : ", ") + rule.id;
+  for (const RuleInfo& rule : AllRules()) {
+    if (!out.empty()) out += ", ";
+    out += rule.id;
+  }
   return out;
 }
 

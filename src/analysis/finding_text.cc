@@ -1,10 +1,12 @@
 #include "massprops/analysis/finding_text.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
+
+#include "massprops/core/format_number.h"
 
 namespace massprops {
 
@@ -104,14 +106,15 @@ std::vector<std::pair<std::string, std::string>> Sections() {
 std::string FormatSignificant(double x, int digits) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*g", std::max(1, digits), x);
-  std::string text = buffer;
+  std::string text = FormatPrecision(x, digits);  // printf's "%.*g"
   // Below 1e5, a whole number reads better than an exponent: 1234 → "1230", not "1.23e3".
-  const double rounded = std::strtod(buffer, nullptr);
+  double rounded = 0;
+  std::from_chars(text.data(), text.data() + text.size(), rounded);
   if (std::abs(rounded) >= 1000 && std::abs(rounded) < 1e5) {
-    std::snprintf(buffer, sizeof buffer, "%.0f", rounded);
-    return buffer;
+    char buffer[32];  // printf's "%.0f" of a number below 1e5
+    const std::to_chars_result r =
+        std::to_chars(buffer, buffer + sizeof buffer, rounded, std::chars_format::fixed, 0);
+    return std::string(buffer, r.ptr);
   }
   // "1e+06" → "1e6", "1.5e-05" → "1.5e-5".
   const std::size_t e = text.find('e');

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "massprops/analysis/welded_groups.h"
+#include "massprops/core/format_number.h"
 #include "massprops/output/reporters.h"
 
 namespace massprops {
@@ -181,10 +181,8 @@ std::string CsvField(const std::string& text) {
 }
 
 std::string Number(double value, int digits) {
-  if (value == 0) value = 0;  // no "-0"
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-  return buffer;
+  if (value == 0) value = 0;              // no "-0"
+  return FormatPrecision(value, digits);  // printf's "%.*g"
 }
 
 constexpr int kCsvDigits = std::numeric_limits<double>::max_digits10;

@@ -543,7 +543,9 @@ json SarifRules(const ReportOptions& options, std::vector<std::string>* rule_ids
     rules.push_back(rule);
     rule_ids->push_back(id);
   };
-  for (const RuleInfo& info : AllRules()) add_rule(info.id, info.summary, info.default_severity);
+  for (const RuleInfo& info : AllRules()) {
+    add_rule(std::string(info.id), std::string(info.summary), info.default_severity);
+  }
   add_rule(kReadErrorRule, "The file could not be read or parsed as URDF or SDF.",
            Severity::kError);
   add_rule(kReadWarningRule, "Part of the file could not be understood and was skipped.",

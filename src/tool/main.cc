@@ -214,7 +214,7 @@ int ListRules(const CheckArgs& args) {
   std::size_t width = 0;
   for (const massprops::RuleInfo& rule : rules) width = std::max(width, rule.id.size());
   for (const massprops::RuleInfo& rule : rules) {
-    std::string line = rule.id + std::string(width + 2 - rule.id.size(), ' ');
+    std::string line = std::string(rule.id) + std::string(width + 2 - rule.id.size(), ' ');
     std::string severity = massprops::ToString(rule.default_severity);
     if (!rule.enabled_by_default) severity += " (off)";
     line += severity + std::string(severity.size() < 15 ? 15 - severity.size() : 1, ' ');

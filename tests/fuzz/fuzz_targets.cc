@@ -24,7 +24,8 @@ namespace {
 // Every rule on, each at its default severity (rules off by default included).
 CheckOptions AllRulesOn() {
   CheckOptions options;
-  for (const RuleInfo& rule : AllRules()) options.overrides[rule.id] = rule.default_severity;
+  for (const RuleInfo& rule : AllRules())
+    options.overrides[std::string(rule.id)] = rule.default_severity;
   return options;
 }
 

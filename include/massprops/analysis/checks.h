@@ -57,11 +57,13 @@ struct Finding {
 };
 
 /// What a rule is: its id, default severity, whether it runs by default, and a one-line summary.
+/// The texts are string literals (static storage): the table of every rule is built at compile
+/// time, not copied into strings at every start.
 struct RuleInfo {
-  std::string id;
+  std::string_view id;
   Severity default_severity;
   bool enabled_by_default;
-  std::string summary;
+  std::string_view summary;
 };
 
 /// Every rule, in a stable order (docs/rules.md documents each).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/rule_severity.h"
+#include "massprops/core/format_number.h"
 #include "massprops/core/principal_axes.h"
 #include "massprops/core/rotational_inertia.h"
 
@@ -47,7 +48,7 @@ std::string Format(const char* format, ...) {
   return buffer;
 }
 
-std::string Num(double x) { return Format("%.6g", x); }
+std::string Num(double x) { return FormatPrecision(x, 6); }  // printf's "%.6g"
 
 std::string LinkHeadline(const std::string& link_name) {
   constexpr std::size_t kMaxName = 32;
