@@ -186,6 +186,82 @@ TEST_F(StlOneReadTest, NearbyPositionsInOneBucketOfAssimpsTable) {
   ExpectLoaderMesh(path);
 }
 
+// The unit cube's surface, each face an n × n grid of squares, two triangles each, wound outward
+// with the face's normal: 12·n² facets on 6·n² + 2 distinct positions (Euler: V − E + F = 2 with
+// F = 12n², E = 18n²).
+std::string GridCube(int n) {
+  std::string bytes(80, ' ');
+  const std::uint32_t count = 12u * static_cast<std::uint32_t>(n * n);
+  bytes.append(reinterpret_cast<const char*>(&count), 4);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const float side : {0.0f, 1.0f}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      std::array<float, 3> normal{0, 0, 0};
+      normal[static_cast<std::size_t>(axis)] = side == 0 ? -1.0f : 1.0f;
+      auto at = [&](int i, int j) {
+        std::array<float, 3> p{};
+        p[static_cast<std::size_t>(axis)] = side;
+        p[static_cast<std::size_t>(u)] = static_cast<float>(i) / static_cast<float>(n);
+        p[static_cast<std::size_t>(v)] = static_cast<float>(j) / static_cast<float>(n);
+        return p;
+      };
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          // (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+          if (side == 1.0f) {
+            bytes += Facet(normal, {{at(i, j), at(i + 1, j), at(i + 1, j + 1)}}, 0);
+            bytes += Facet(normal, {{at(i, j), at(i + 1, j + 1), at(i, j + 1)}}, 0);
+          } else {
+            bytes += Facet(normal, {{at(i, j), at(i + 1, j + 1), at(i + 1, j)}}, 0);
+            bytes += Facet(normal, {{at(i, j), at(i, j + 1), at(i + 1, j + 1)}}, 0);
+          }
+        }
+      }
+    }
+  }
+  return bytes;
+}
+
+// A binary STL bigger than the reader's piece (1 310 facets, 65 500 bytes) is read a piece at a
+// time: 12·21² = 5 292 facets are four pieces, the last one partial. Its mesh is still assimp's,
+// and its numbers are the hand-derived ones of the unit cube.
+TEST_F(StlOneReadTest, AFileOfSeveralPiecesIsTheLoadersMesh) {
+  const int n = 21;
+  const std::string path = Write("grid.stl", GridCube(n));
+  ExpectLoaderMesh(path);
+  MeshCache cache;
+  std::string error;
+  const auto points = cache.Points(path, &error);
+  ASSERT_TRUE(points) << error;
+  EXPECT_EQ(points->positions.size(), static_cast<std::size_t>(6 * n * n + 2));
+  const auto p = cache.MassProperties(path, Eigen::Vector3d(1, 1, 1), MeshInertiaOptions{}, &error);
+  ASSERT_TRUE(p) << error;
+  EXPECT_NEAR(p->volume, 1.0, 1e-12);
+  EXPECT_NEAR(p->p_GoGcm_G.x(), 0.5, 1e-12);
+  // A solid unit cube about its center: 1/6 (= (1² + 1²)/12) per axis, kg·m² per kg/m³.
+  EXPECT_NEAR(p->I_GGcm_G.get_moments()(0), 1.0 / 6, 1e-12);
+}
+
+// A binary STL one facet shorter than its header says is no binary STL (assimp's size test): the
+// direct reader leaves it to assimp, whose error the user sees.
+TEST_F(StlOneReadTest, AFileShorterThanItsHeaderSaysIsLeftToAssimp) {
+  std::string bytes = GridCube(21);
+  bytes.resize(bytes.size() - 50);
+  const std::string path = Write("short.stl", bytes);
+  MeshCache cache;
+  std::string error;
+  TriangleMesh assimp;
+  std::string assimp_error;
+  const bool assimp_reads = LoadMeshFile(path, &assimp, &assimp_error);
+  const auto mesh = cache.Load(path, &error);
+  EXPECT_EQ(static_cast<bool>(mesh), assimp_reads);
+  if (assimp_reads) {
+    testing_support::ExpectSameMesh(*mesh, assimp, path);
+  } else {
+    EXPECT_EQ(error, assimp_error);
+  }
+}
+
 // Every binary STL shipped in testdata and in ../shared/corpus.
 TEST(StlOneReadCorpusTest, EveryBinaryStlIsTheLoadersMesh) {
   const std::vector<std::string> files =

@@ -122,7 +122,7 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
           continue;
         }
         for (int corner = 0; corner < 8; ++corner) {
-          result.points_B.push_back(
+          result.corners_B.push_back(
               box->corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
         }
         result.count += 8;
@@ -161,16 +161,11 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
       }
       meshes.emplace_back(&geometry, std::move(points));
     }
-    // The meshes' points, scaled and posed, into one allocation of the right size.
-    std::size_t total = result.points_B.size();
-    for (const auto& [geometry, points] : meshes) total += points->positions.size();
-    result.points_B.reserve(total);
+    // The meshes' positions, shared with the cache: scaled and posed as they are visited.
     for (const auto& [geometry, points] : meshes) {
-      const Eigen::Vector3d& s = geometry->scale;
-      const Pose& X_BG = geometry->X_BG;
-      for (const Eigen::Vector3d& v : points->positions) {
-        result.points_B.push_back(X_BG.p_AB + X_BG.R_AB * v.cwiseProduct(s));
-      }
+      result.posed.push_back(
+          {std::shared_ptr<const std::vector<Eigen::Vector3d>>(points, &points->positions),
+           geometry->scale, geometry->X_BG});
       result.count += static_cast<std::size_t>(points->loader_vertices);
       ++result.meshes;
     }

@@ -119,8 +119,6 @@ struct MeshCache::FileState {
   internal::StoredMesh stored;
   bool dirty = false;
   // This run.
-  std::string bytes;  // the file's bytes, once read for its content hash, until read directly
-  bool bytes_read = false;
   bool loaded = false;  // LoadMeshFile's mesh known (or tried)
   std::shared_ptr<const TriangleMesh> mesh;
   std::string load_error;
@@ -179,24 +177,15 @@ void MeshCache::LookUp(FileState& state, const std::string& path) {
   if (!store) return;
   state.stat_ok = internal::MeshStore::Stat(path, &state.key);
   if (!state.stat_ok) return;
-  // The content hash, when the path, size and time are not known: from the bytes the direct
-  // reader then uses (one read of the file); other formats are read by assimp from the path.
-  auto content = [&]() -> const std::string* {
-    state.bytes_read = internal::ReadWholeFile(path, &state.bytes);
-    return state.bytes_read ? &state.bytes : nullptr;
-  };
-  std::optional<internal::StoredMesh> found = store->Find(&state.key, content);
-  if (!IsStlPath(path) || found) ReleaseBytes(state);
+  // The content hash, when the path, size and time are not known, is read in pieces: a file
+  // missing from the cache is then read again by its reader (the pieces stay in the processor's
+  // cache; keeping the whole file for its reader cost more, docs/benchmarks.md section 8).
+  std::optional<internal::StoredMesh> found = store->Find(&state.key);
   if (found) {
     state.stored = std::move(*found);
     std::lock_guard<std::mutex> lock(mutex_);
     ++files_from_store_;
   }
-}
-
-void MeshCache::ReleaseBytes(FileState& state) {
-  std::string().swap(state.bytes);
-  state.bytes_read = false;
 }
 
 std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, const std::string& path,
@@ -227,15 +216,7 @@ void MeshCache::ReadDirectLocked(FileState& state, const std::string& path) {
   state.direct_tried = true;
   if (!IsStlPath(path)) return;
   auto stl = std::make_shared<internal::DirectStl>();
-  std::string own_bytes;
-  const std::string* bytes = &state.bytes;
-  if (!state.bytes_read) {
-    if (!internal::ReadWholeFile(path, &own_bytes)) return;
-    bytes = &own_bytes;
-  }
-  const bool read = internal::ReadStlDirect(*bytes, stl.get());
-  ReleaseBytes(state);
-  if (!read) return;
+  if (!internal::ReadStlDirectFile(path, stl.get())) return;
   if (stl->joined && !state.stored.points) {
     auto points = std::make_shared<MeshPoints>();
     points->positions = stl->mesh.vertices;

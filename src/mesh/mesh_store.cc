@@ -187,33 +187,50 @@ std::string EntryName(const FileKey& key) {
 // the last bytes folded by HashBytes. About three times as fast as HashBytes, whose chain of
 // multiplies took 3% of a first check of a robot's binary STL meshes (docs/benchmarks.md,
 // section 8). Not cryptographic: with the size beside it, it tells changed files apart.
-std::uint64_t HashContentBytes(const char* bytes, std::size_t size) {
-  std::uint64_t lane[4] = {0x9E3779B97F4A7C15ull, 0xBF58476D1CE4E5B9ull, 0x94D049BB133111EBull,
-                           0xA0761D6478BD642Full};
-  std::size_t i = 0;
-  for (; i + 32 <= size; i += 32) {
-    for (int k = 0; k < 4; ++k) {
-      std::uint64_t word;
-      std::memcpy(&word, bytes + i + 8 * k, 8);
-      const std::uint64_t x = (lane[k] ^ word) * 0x9FB21C651E98DF25ull;
-      lane[k] = (x << 31) | (x >> 33);
+class ContentHasher {
+ public:
+  // Adds `size` bytes, a multiple of 32 (every piece of a file but the last).
+  void AddBlocks(const char* bytes, std::size_t size) {
+    for (std::size_t i = 0; i + 32 <= size; i += 32) {
+      for (int k = 0; k < 4; ++k) {
+        std::uint64_t word;
+        std::memcpy(&word, bytes + i + 8 * k, 8);
+        const std::uint64_t x = (lane_[k] ^ word) * 0x9FB21C651E98DF25ull;
+        lane_[k] = (x << 31) | (x >> 33);
+      }
     }
   }
-  std::uint64_t seed = size;
-  for (const std::uint64_t l : lane) seed = Mix(seed ^ l) + 0x9E3779B97F4A7C15ull;
-  return HashBytes(bytes + i, size - i, seed);
-}
+  // The hash of a content of `size` bytes whose last `tail_size` (below 32) are `tail`.
+  std::uint64_t Finish(const char* tail, std::size_t tail_size, std::uint64_t size) const {
+    std::uint64_t seed = size;
+    for (const std::uint64_t l : lane_) seed = Mix(seed ^ l) + 0x9E3779B97F4A7C15ull;
+    return HashBytes(tail, tail_size, seed);
+  }
 
-bool HashContent(FileKey* key, const std::string* bytes) {
-  if (bytes == nullptr || bytes->size() != key->size) return false;
-  key->content_hash = HashContentBytes(bytes->data(), bytes->size());
+ private:
+  std::uint64_t lane_[4] = {0x9E3779B97F4A7C15ull, 0xBF58476D1CE4E5B9ull, 0x94D049BB133111EBull,
+                            0xA0761D6478BD642Full};
+};
+
+// The file's content hash, its bytes read in pieces into a buffer that stays in the processor's
+// cache (not into fresh memory of its whole size: three times the cost, docs/benchmarks.md
+// section 8). False when it cannot be read, or its size is not the one its stat gave.
+bool HashFile(FileKey* key) {
+  constexpr std::size_t kPiece = 65536;  // a multiple of the hash's 32-byte blocks
+  ContentHasher hasher;
+  char tail[32];
+  std::size_t tail_size = 0;
+  const std::int64_t size =
+      ReadFileInPieces(key->path, kPiece, [&](const char* bytes, std::size_t n) {
+        const std::size_t whole = n / 32 * 32;  // n < kPiece only for the last piece
+        hasher.AddBlocks(bytes, whole);
+        tail_size = n - whole;
+        std::memcpy(tail, bytes + whole, tail_size);
+      });
+  if (size < 0 || static_cast<std::uint64_t>(size) != key->size) return false;
+  key->content_hash = hasher.Finish(tail, tail_size, key->size);
   key->hashed = true;
   return true;
-}
-
-bool HashFile(FileKey* key) {
-  std::string bytes;
-  return ReadWholeFile(key->path, &bytes) && HashContent(key, &bytes);
 }
 
 }  // namespace
@@ -338,8 +355,7 @@ bool MeshStore::Stat(const std::string& path, FileKey* key) {
   return true;
 }
 
-std::optional<StoredMesh> MeshStore::Find(
-    FileKey* key, const std::function<const std::string*()>& content) const {
+std::optional<StoredMesh> MeshStore::Find(FileKey* key) const {
   std::string bytes;
   bool from_stat = false;
   if (!key->hashed && ReadWholeFile(folder_ + "/" + StatName(*key), &bytes)) {
@@ -353,7 +369,7 @@ std::optional<StoredMesh> MeshStore::Find(
       key->hashed = from_stat = true;
     }
   }
-  if (!key->hashed && !HashContent(key, content())) return std::nullopt;
+  if (!key->hashed && !HashFile(key)) return std::nullopt;
   if (!ReadWholeFile(folder_ + "/" + EntryName(*key), &bytes)) return std::nullopt;
   std::optional<StoredMesh> mesh = ParseStoredMesh(bytes);
   if (mesh && !from_stat && !RecentlyModified(*key)) {  // found by content: remember its stat

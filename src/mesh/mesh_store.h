@@ -13,7 +13,6 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,11 +69,10 @@ class MeshStore {
 
   /// *key for the file at `path` (stat); false when it is not a regular file.
   static bool Stat(const std::string& path, FileKey* key);
-  /// The entry of key's file: through its stat entry, else by hashing the file's bytes, which
-  /// `content` is called for (null: they cannot be read); then key->content_hash is set, and the
-  /// stat entry is written. nullopt when there is none, or it is damaged.
-  std::optional<StoredMesh> Find(FileKey* key,
-                                 const std::function<const std::string*()>& content) const;
+  /// The entry of key's file: through its stat entry, else by hashing the file's bytes (read in
+  /// pieces: none is kept); then key->content_hash is set, and the stat entry is written. nullopt
+  /// when there is none, it is damaged, or the file cannot be read.
+  std::optional<StoredMesh> Find(FileKey* key) const;
   /// Writes the entry of key's file (hashing it first when key->hashed is false) and its stat
   /// entry. Failures (a read-only folder, a full disk) are ignored: the cache is an optimisation.
   void Save(FileKey* key, const StoredMesh& mesh) const;

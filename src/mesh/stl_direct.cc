@@ -5,10 +5,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 
@@ -139,69 +141,137 @@ class AssimpBuckets {
   std::vector<std::size_t> shared_;     // buckets found holding a second position
 };
 
-bool BinaryStlJoined(const std::string& bytes, DirectStl* stl) {
-  std::uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, sizeof(count));
-  const std::size_t corners = 3 * static_cast<std::size_t>(count);
-  if (count == 0 || corners > 0x7fffffff) return false;
-  PositionTable table(corners);
-  AssimpBuckets buckets(corners);
-  std::vector<std::array<float, 3>> normal_of;  // per kept corner
-  std::vector<std::int32_t> previous;           // per kept corner: the one kept before it there
-  normal_of.reserve(corners);
-  previous.reserve(corners);
-  stl->vertex_position.reserve(corners);
-  stl->joined_triangles.reserve(count);  // filled a triangle at a time: no zeros written first
-  TriangleMesh& mesh = stl->mesh;
-  mesh.vertices.reserve(corners / 4);
-  mesh.triangles.reserve(count);
-  auto corner = [&](std::uint32_t t, int v) {
-    std::array<float, 3> p;
-    std::memcpy(p.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t) + 12 * (v + 1), 12);
-    return p;
-  };
-  constexpr std::uint32_t kAhead = 8;  // the slots of a triangle this far ahead are prefetched
-  for (std::uint32_t t = 0; t < count; ++t) {
-    if (t + kAhead < count) {
-      for (int v = 0; v < 3; ++v) __builtin_prefetch(table.FirstProbe(corner(t + kAhead, v)));
-    }
-    std::array<float, 3> normal;
-    std::memcpy(normal.data(), bytes.data() + 84 + 50 * static_cast<std::size_t>(t), 12);
-    std::array<std::int32_t, 3> joined_triangle, triangle;
-    for (int v = 0; v < 3; ++v) {
-      const std::array<float, 3> p = corner(t, v);
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
-      PositionTable::Slot* slot = &table.Find(p);
-      if (slot->position < 0) {
-        buckets.Add(p);
-        slot = &table.Insert(*slot, p, static_cast<std::int32_t>(mesh.vertices.size()));
-        // + 0.0: LoadMeshFile applies the scene's (identity) transform, whose translation turns
-        // a -0 coordinate into +0.
-        mesh.vertices.emplace_back(p[0] + 0.0, p[1] + 0.0, p[2] + 0.0);
-      }
-      std::int32_t joined = -1;
-      for (std::int32_t k = slot->last; k >= 0 && joined < 0; k = previous[k]) {
-        const std::array<float, 3>& n = normal_of[static_cast<std::size_t>(k)];
-        const float dx = normal[0] - n[0], dy = normal[1] - n[1], dz = normal[2] - n[2];
-        if (!(dx * dx + dy * dy + dz * dz > 1e-5f * 1e-5f)) joined = k;
-      }
-      if (joined < 0) {
-        joined = static_cast<std::int32_t>(normal_of.size());
-        normal_of.push_back(normal);
-        previous.push_back(slot->last);
-        stl->vertex_position.push_back(slot->position);
-        slot->last = joined;
-      }
-      joined_triangle[static_cast<std::size_t>(v)] = joined;
-      triangle[static_cast<std::size_t>(v)] = slot->position;
-    }
-    stl->joined_triangles.push_back(joined_triangle);
-    mesh.triangles.push_back(triangle);
+// The join of a binary STL's records, fed in order a piece at a time (the records of a whole
+// file, or of one buffer of a file read in pieces).
+class BinaryStlJoiner {
+ public:
+  // `count` records will be added (at most 0x7fffffff / 3: checked by the caller).
+  BinaryStlJoiner(std::uint32_t count, DirectStl* stl)
+      : corners_(3 * static_cast<std::size_t>(count)),
+        table_(corners_),
+        buckets_(corners_),
+        stl_(stl) {
+    normal_of_.reserve(corners_);
+    previous_.reserve(corners_);
+    stl->vertex_position.reserve(corners_);
+    stl->joined_triangles.reserve(count);  // filled a triangle at a time: no zeros written first
+    stl->mesh.vertices.reserve(corners_ / 4);
+    stl->mesh.triangles.reserve(count);
   }
-  if (buckets.NearPair(mesh.vertices)) return false;  // left to assimp
-  stl->joined = true;
-  return true;
+
+  // Adds the `count` 50-byte records at `records`; false when a coordinate is not finite.
+  bool Add(const char* records, std::uint32_t count) {
+    TriangleMesh& mesh = stl_->mesh;
+    auto corner = [&](std::uint32_t t, int v) {
+      std::array<float, 3> p;
+      std::memcpy(p.data(), records + 50 * static_cast<std::size_t>(t) + 12 * (v + 1), 12);
+      return p;
+    };
+    constexpr std::uint32_t kAhead = 8;  // the slots of a triangle this far ahead are prefetched
+    for (std::uint32_t t = 0; t < count; ++t) {
+      if (t + kAhead < count) {
+        for (int v = 0; v < 3; ++v) __builtin_prefetch(table_.FirstProbe(corner(t + kAhead, v)));
+      }
+      std::array<float, 3> normal;
+      std::memcpy(normal.data(), records + 50 * static_cast<std::size_t>(t), 12);
+      std::array<std::int32_t, 3> joined_triangle, triangle;
+      for (int v = 0; v < 3; ++v) {
+        const std::array<float, 3> p = corner(t, v);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
+        PositionTable::Slot* slot = &table_.Find(p);
+        if (slot->position < 0) {
+          buckets_.Add(p);
+          slot = &table_.Insert(*slot, p, static_cast<std::int32_t>(mesh.vertices.size()));
+          // + 0.0: LoadMeshFile applies the scene's (identity) transform, whose translation turns
+          // a -0 coordinate into +0.
+          mesh.vertices.emplace_back(p[0] + 0.0, p[1] + 0.0, p[2] + 0.0);
+        }
+        joined_triangle[static_cast<std::size_t>(v)] = Join(slot, normal);
+        triangle[static_cast<std::size_t>(v)] = slot->position;
+      }
+      stl_->joined_triangles.push_back(joined_triangle);
+      mesh.triangles.push_back(triangle);
+    }
+    return true;
+  }
+
+  // After every record: false when two positions could be joined by assimp (left to it).
+  bool Finish() {
+    if (buckets_.NearPair(stl_->mesh.vertices)) return false;
+    stl_->joined = true;
+    return true;
+  }
+
+ private:
+  // The kept corner at `slot`'s position with a normal within 1e-5 of `normal`, else a new one.
+  std::int32_t Join(PositionTable::Slot* slot, const std::array<float, 3>& normal) {
+    for (std::int32_t k = slot->last; k >= 0; k = previous_[static_cast<std::size_t>(k)]) {
+      const std::array<float, 3>& n = normal_of_[static_cast<std::size_t>(k)];
+      const float dx = normal[0] - n[0], dy = normal[1] - n[1], dz = normal[2] - n[2];
+      if (!(dx * dx + dy * dy + dz * dz > 1e-5f * 1e-5f)) return k;
+    }
+    const auto joined = static_cast<std::int32_t>(normal_of_.size());
+    normal_of_.push_back(normal);
+    previous_.push_back(slot->last);
+    stl_->vertex_position.push_back(slot->position);
+    slot->last = joined;
+    return joined;
+  }
+
+  std::size_t corners_;
+  PositionTable table_;
+  AssimpBuckets buckets_;
+  std::vector<std::array<float, 3>> normal_of_;  // per kept corner
+  std::vector<std::int32_t> previous_;           // per kept corner: the one kept before it there
+  DirectStl* stl_;
+};
+
+// The record count a binary STL's 84-byte header gives, and whether a file of `size` bytes is a
+// binary STL of that many records (assimp 5.2's test: exactly 84 + 50·count bytes).
+std::uint32_t RecordCount(const char* header) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, header + 80, sizeof(count));
+  return count;
 }
+bool IsBinaryStl(const char* header, std::uint64_t size) {
+  return 84 + 50 * static_cast<std::uint64_t>(RecordCount(header)) == size;
+}
+// Whether the records can be joined here: at least one, and every corner indexable by int32.
+bool Joinable(std::uint32_t count) {
+  return count > 0 && 3 * static_cast<std::uint64_t>(count) <= 0x7fffffff;
+}
+
+bool BinaryStlJoined(const std::string& bytes, std::uint32_t count, DirectStl* stl) {
+  BinaryStlJoiner joiner(count, stl);
+  return joiner.Add(bytes.data() + 84, count) && joiner.Finish();
+}
+
+// Reads up to n bytes from fd into buffer; fewer only at the end of the file or on an error.
+std::size_t ReadFull(int fd, char* buffer, std::size_t n) {
+  std::size_t done = 0;
+  while (done < n) {
+    const ssize_t got = ::read(fd, buffer + done, n - done);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;
+    done += static_cast<std::size_t>(got);
+  }
+  return done;
+}
+
+class FileDescriptor {
+ public:
+  explicit FileDescriptor(const std::string& path)
+      : fd_(::open(path.c_str(), O_RDONLY | O_CLOEXEC)) {}
+  ~FileDescriptor() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FileDescriptor(const FileDescriptor&) = delete;
+  FileDescriptor& operator=(const FileDescriptor&) = delete;
+  int get() const { return fd_; }
+
+ private:
+  int fd_;
+};
 
 // The triangles of an ascii STL: its "vertex" triples in order; as many as its "endfacet"s (a
 // facet of another vertex count is left to assimp).
@@ -230,10 +300,9 @@ bool ReadStlDirect(const std::string& bytes, DirectStl* stl) {
   DirectStl found;
   bool ok = false;
   try {
-    std::uint32_t count = 0;
-    if (bytes.size() >= 84) std::memcpy(&count, bytes.data() + 80, sizeof(count));
-    if (bytes.size() >= 84 && 84 + 50 * static_cast<std::uint64_t>(count) == bytes.size()) {
-      ok = BinaryStlJoined(bytes, &found);
+    if (bytes.size() >= 84 && IsBinaryStl(bytes.data(), bytes.size())) {
+      const std::uint32_t count = RecordCount(bytes.data());
+      ok = Joinable(count) && BinaryStlJoined(bytes, count, &found);
     } else {
       const std::size_t first = bytes.find_first_not_of(" \t\r\n\f\v");
       ok = first != std::string::npos && bytes.compare(first, 5, "solid") == 0 &&
@@ -246,6 +315,42 @@ bool ReadStlDirect(const std::string& bytes, DirectStl* stl) {
   return ok;
 }
 
+bool ReadStlDirectFile(const std::string& path, DirectStl* stl) {
+  const FileDescriptor fd(path);
+  if (fd.get() < 0) return false;
+  struct stat info {};
+  if (::fstat(fd.get(), &info) != 0 || !S_ISREG(info.st_mode)) return false;
+  const auto size = static_cast<std::uint64_t>(info.st_size);
+  char header[84];
+  const bool has_header = size >= 84 && ReadFull(fd.get(), header, 84) == 84;
+  if (has_header && IsBinaryStl(header, size)) {
+    const std::uint32_t count = RecordCount(header);
+    if (!Joinable(count)) return false;
+    DirectStl found;
+    try {
+      BinaryStlJoiner joiner(count, &found);
+      constexpr std::uint32_t kRecordsPerPiece = 1310;  // 65 500 bytes: stays in the L2 cache
+      const std::unique_ptr<char[]> piece(new char[50 * kRecordsPerPiece]);
+      for (std::uint32_t done = 0; done < count;) {
+        const std::uint32_t n = std::min(kRecordsPerPiece, count - done);
+        // A file that shrank while it was read is left to assimp.
+        if (ReadFull(fd.get(), piece.get(), 50 * std::size_t{n}) != 50 * std::size_t{n}) {
+          return false;
+        }
+        if (!joiner.Add(piece.get(), n)) return false;
+        done += n;
+      }
+      if (!joiner.Finish()) return false;
+    } catch (const std::exception&) {  // std::bad_alloc on a huge file: assimp's message
+      return false;
+    }
+    *stl = std::move(found);
+    return true;
+  }
+  std::string bytes;  // an ascii STL (or no STL): its whole text
+  return ReadWholeFile(path, &bytes) && ReadStlDirect(bytes, stl);
+}
+
 TriangleMesh JoinedMesh(const DirectStl& stl) {
   TriangleMesh joined;
   joined.vertices.reserve(stl.vertex_position.size());
@@ -254,6 +359,26 @@ TriangleMesh JoinedMesh(const DirectStl& stl) {
   }
   joined.triangles = stl.joined_triangles;
   return joined;
+}
+
+std::int64_t ReadFileInPieces(const std::string& path, std::size_t piece,
+                              const std::function<void(const char*, std::size_t)>& take) {
+  const FileDescriptor fd(path);
+  if (fd.get() < 0) return -1;
+  std::int64_t total = 0;
+  try {
+    const std::unique_ptr<char[]> buffer(new char[piece]);
+    for (;;) {
+      errno = 0;
+      const std::size_t got = ReadFull(fd.get(), buffer.get(), piece);
+      if (got < piece && errno != 0) return -1;  // a read error, not the end of the file
+      if (got > 0) take(buffer.get(), got);
+      total += static_cast<std::int64_t>(got);
+      if (got < piece) return total;
+    }
+  } catch (const std::bad_alloc&) {
+    return -1;
+  }
 }
 
 bool ReadWholeFile(const std::string& path, std::string* bytes) {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,20 @@ TriangleMesh JoinedMesh(const DirectStl& stl);
 /// LoadMeshFile then asks assimp, which says what is wrong. Never throws.
 bool ReadStlDirect(const std::string& bytes, DirectStl* stl);
 
+/// ReadStlDirect of the file at `path`, which a binary STL reads in pieces of 65 500 bytes into
+/// one buffer that stays in the processor's cache: copying a file into fresh memory of its whole
+/// size costs about three times as much (docs/benchmarks.md, section 8). Ascii (and no STL): the
+/// whole file, then ReadStlDirect. False also when the file cannot be read, or shrinks meanwhile.
+bool ReadStlDirectFile(const std::string& path, DirectStl* stl);
+
 /// The bytes of the file at `path`, in one read (POSIX); false when it cannot be read.
 bool ReadWholeFile(const std::string& path, std::string* bytes);
+
+/// Calls take(data, n) for the bytes of the file at `path`, in order, in pieces of `piece` bytes
+/// (the last one shorter, or none for an empty file) read into one buffer. Returns how many bytes
+/// the file had, or -1 when it cannot be opened or read.
+std::int64_t ReadFileInPieces(const std::string& path, std::size_t piece,
+                              const std::function<void(const char*, std::size_t)>& take);
 
 /// Calls visit(p) for every "vertex x y z" of an ascii STL, in order (facets and loops need not be
 /// checked: their vertices are all the full loader keeps). Returns false when a vertex is not

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,13 +69,43 @@ using LinkBoxFunction = std::function<std::optional<LinkGeometryBox>(const Link&
 /// over the hull is at a vertex). Used by inertia-exceeds-geometry for links whose geometry
 /// includes meshes (a CAD mesh is the part's envelope: far tighter than its bounding box).
 struct LinkGeometryPoints {
-  std::vector<Eigen::Vector3d> points_B;  ///< In B (metres).
+  /// The corners of the primitives' boxes, in B (metres).
+  std::vector<Eigen::Vector3d> corners_B;
+  /// A mesh's distinct positions (its file's frame and unit, as MeshPoints holds them: shared,
+  /// not copied) and how they are scaled and posed in B.
+  struct PosedPositions {
+    std::shared_ptr<const std::vector<Eigen::Vector3d>> positions;
+    Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+    Pose X_BG;
+  };
+  std::vector<PosedPositions> posed;
   /// How many points the geometries have: 8 per primitive's box, and each mesh's vertex count as
-  /// LoadMeshFile gives it (points_B holds each mesh's distinct positions, which bound the same
-  /// hull).
+  /// LoadMeshFile gives it (the points visited are each mesh's distinct positions, which bound
+  /// the same hull).
   std::size_t count = 0;
   int meshes = 0;   ///< Meshes read.
   int unknown = 0;  ///< Geometries that could not be read (then the hull is not the body's).
+
+  /// Calls visit(p_B) for every point in B: the boxes' corners, then each mesh's positions, each
+  /// computed as X_BG.p_AB + X_BG.R_AB · (v ∘ scale) when it is visited. A robot's meshes have
+  /// hundreds of thousands of positions: they are not copied into B first.
+  template <typename Visit>
+  void ForEachPoint(Visit visit) const {
+    for (const Eigen::Vector3d& p : corners_B) visit(p);
+    for (const PosedPositions& mesh : posed) {
+      for (const Eigen::Vector3d& v : *mesh.positions) {
+        visit(Eigen::Vector3d(mesh.X_BG.p_AB + mesh.X_BG.R_AB * v.cwiseProduct(mesh.scale)));
+      }
+    }
+  }
+  /// Whether there is no point at all.
+  bool empty() const {
+    if (!corners_B.empty()) return false;
+    for (const PosedPositions& mesh : posed) {
+      if (!mesh.positions->empty()) return false;
+    }
+    return true;
+  }
 };
 
 /// The LinkGeometryPoints of a link, or nullopt when it has no geometry. Must not throw.

@@ -205,7 +205,6 @@ class MeshCache {
   std::shared_ptr<const TriangleMesh> LoadLocked(FileState& state, const std::string& path,
                                                  std::string* error);
   void ReadDirectLocked(FileState& state, const std::string& path);
-  static void ReleaseBytes(FileState& state);
 
   mutable std::mutex mutex_;  // guards files_, resolved_ and the counters
   std::map<std::string, std::unique_ptr<FileState>> files_;

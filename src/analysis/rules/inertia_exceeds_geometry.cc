@@ -100,7 +100,7 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
   if (!judged.group_bounds->box_B.isApprox(judged.bounds->box_B)) return;
   const Link& link = *judged.link;
   const std::optional<LinkGeometryPoints> points = ctx.options.points(link);
-  if (!points || points->unknown > 0 || points->meshes == 0 || points->points_B.empty()) return;
+  if (!points || points->unknown > 0 || points->meshes == 0 || points->empty()) return;
   const double m = link.inertial->mass;
   const Eigen::Vector3d& c = judged.props.p_FoScm_F;
   const Eigen::Matrix3d& I = judged.props.I_SScm_F;
@@ -117,14 +117,14 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
   // About a frame axis the squared distance is the sum of two squared coordinates: r × x̂ is
   // (±0, r_z, -r_y) exactly, so |r × x̂|² = r_z² + r_y², the same number in fewer operations.
   std::array<double, 6> reach2{};
-  for (const Eigen::Vector3d& p : points->points_B) {
+  points->ForEachPoint([&](const Eigen::Vector3d& p) {
     const Eigen::Vector3d r = p - c;
     for (int i = 0; i < 3; ++i) reach2[i] = std::max(reach2[i], r.cross(axes[i]).squaredNorm());
     const double xx = r.x() * r.x(), yy = r.y() * r.y(), zz = r.z() * r.z();
     reach2[3] = std::max(reach2[3], yy + zz);
     reach2[4] = std::max(reach2[4], xx + zz);
     reach2[5] = std::max(reach2[5], xx + yy);
-  }
+  });
   double worst = 0, worst_moment = 0, worst_bound = 0;
   Eigen::Vector3d worst_axis = Eigen::Vector3d::UnitX();
   for (int i = 0; i < 6; ++i) {
