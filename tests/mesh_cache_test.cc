@@ -222,6 +222,63 @@ TEST(MeshCacheTest, SameBytesWithANewTimeAreFoundByTheirContent) {
   EXPECT_EQ(cache.files_loaded(), 0);
 }
 
+// A binary STL of `copies` unit cubes in a row along x, one unit apart (12 facets each: 84 +
+// 600·copies bytes), so that a file spans several of the pieces its readers read.
+void WriteCubesStl(const std::string& path, int copies) {
+  const std::string cube_path = path + ".one";
+  WriteCubeStl(cube_path, 1.0f);
+  std::string cube;
+  {
+    std::ifstream in(cube_path, std::ios::binary);
+    cube.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  fs::remove(cube_path);
+  std::string bytes = cube.substr(0, 80);
+  const auto count = static_cast<std::uint32_t>(12 * copies);
+  bytes.append(reinterpret_cast<const char*>(&count), 4);
+  for (int c = 0; c < copies; ++c) {
+    for (int f = 0; f < 12; ++f) {
+      std::string facet = cube.substr(84 + 50 * static_cast<std::size_t>(f), 50);
+      for (int corner = 0; corner < 3; ++corner) {  // x of each corner moved by 2c
+        float x;
+        std::memcpy(&x, facet.data() + 12 + 12 * corner, 4);
+        x += static_cast<float>(2 * c);
+        std::memcpy(facet.data() + 12 + 12 * corner, &x, 4);
+      }
+      bytes += facet;
+    }
+  }
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// A first run hashes a binary STL in the pass that reads it (no entry of its size yet, so no
+// lookup by content); a checkout's run hashes it on its own, in pieces of another size. Both
+// must give the same key: the second run finds the first run's entry by content.
+TEST(MeshCacheTest, AnEntrySavedFromTheReadingPassIsFoundByContent) {
+  TempFolder temp;
+  const std::string mesh = temp / "cubes.stl";
+  WriteCubesStl(mesh, 250);  // 150 084 bytes: three pieces of 65 500 and of 65 536 bytes
+  ASSERT_EQ(fs::file_size(mesh), 150084u);
+  Numbers first;
+  {
+    MeshCache cache;
+    cache.UsePersistentCache(temp / "cache");
+    first = Read(&cache, mesh);
+    EXPECT_EQ(cache.files_loaded(), 1);
+  }
+  // 250 unit cubes, the last at [498, 499]: the box [0, 499] × [0, 1] × [0, 1]; scaled by
+  // (1, 2, 3), each has volume 6 (by hand), 1500 in all.
+  EXPECT_EQ(first.box.max(), Eigen::Vector3d(499, 1, 1));
+  EXPECT_NEAR(first.properties.volume, 1500, 1e-9);
+  fs::last_write_time(mesh, fs::last_write_time(mesh) + std::chrono::hours(1));
+  MeshCache cache;
+  cache.UsePersistentCache(temp / "cache");
+  const Numbers again = Read(&cache, mesh);
+  EXPECT_EQ(cache.files_from_persistent_cache(), 1);
+  EXPECT_EQ(cache.files_loaded(), 0);
+  EXPECT_EQ(again.properties.volume, first.properties.volume);
+}
+
 TEST(MeshCacheTest, DamagedEntryIsIgnoredAndRewritten) {
   TempFolder temp;
   const std::string mesh = temp / "cube.stl";

@@ -216,7 +216,16 @@ void MeshCache::ReadDirectLocked(FileState& state, const std::string& path) {
   state.direct_tried = true;
   if (!IsStlPath(path)) return;
   auto stl = std::make_shared<internal::DirectStl>();
-  if (!internal::ReadStlDirectFile(path, stl.get())) return;
+  // With the cache, the content hash of the bytes read: the file need not be read again to save
+  // its entry, and the entry is saved under the hash of exactly the bytes its numbers come from
+  // (should the file change after a lookup hashed it).
+  internal::ContentHasher hasher;
+  const bool hash = state.stat_ok;
+  if (!internal::ReadStlDirectFile(path, stl.get(), hash ? &hasher : nullptr)) return;
+  if (hash && hasher.size() == state.key.size) {
+    state.key.content_hash = hasher.Finish();
+    state.key.hashed = true;
+  }
   if (stl->joined && !state.stored.points) {
     auto points = std::make_shared<MeshPoints>();
     points->positions = stl->mesh.vertices;

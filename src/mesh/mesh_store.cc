@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -182,53 +183,54 @@ std::string EntryName(const FileKey& key) {
   return "d-" + Hex(key.content_hash) + "-" + std::to_string(key.size);
 }
 
-// The content key's hash: four independent lanes over 32-byte blocks, one multiply per 8 bytes
-// (each step a bijection of its lane, so a changed word is never forgotten), then the lanes and
-// the last bytes folded by HashBytes. About three times as fast as HashBytes, whose chain of
-// multiplies took 3% of a first check of a robot's binary STL meshes (docs/benchmarks.md,
-// section 8). Not cryptographic: with the size beside it, it tells changed files apart.
-class ContentHasher {
- public:
-  // Adds `size` bytes, a multiple of 32 (every piece of a file but the last).
-  void AddBlocks(const char* bytes, std::size_t size) {
-    for (std::size_t i = 0; i + 32 <= size; i += 32) {
-      for (int k = 0; k < 4; ++k) {
-        std::uint64_t word;
-        std::memcpy(&word, bytes + i + 8 * k, 8);
-        const std::uint64_t x = (lane_[k] ^ word) * 0x9FB21C651E98DF25ull;
-        lane_[k] = (x << 31) | (x >> 33);
-      }
+}  // namespace
+
+void ContentHasher::AddBlocks(const char* bytes, std::size_t size) {
+  for (std::size_t i = 0; i + 32 <= size; i += 32) {
+    for (int k = 0; k < 4; ++k) {
+      std::uint64_t word;
+      std::memcpy(&word, bytes + i + 8 * k, 8);
+      const std::uint64_t x = (lane_[k] ^ word) * 0x9FB21C651E98DF25ull;
+      lane_[k] = (x << 31) | (x >> 33);
     }
   }
-  // The hash of a content of `size` bytes whose last `tail_size` (below 32) are `tail`.
-  std::uint64_t Finish(const char* tail, std::size_t tail_size, std::uint64_t size) const {
-    std::uint64_t seed = size;
-    for (const std::uint64_t l : lane_) seed = Mix(seed ^ l) + 0x9E3779B97F4A7C15ull;
-    return HashBytes(tail, tail_size, seed);
-  }
+}
 
- private:
-  std::uint64_t lane_[4] = {0x9E3779B97F4A7C15ull, 0xBF58476D1CE4E5B9ull, 0x94D049BB133111EBull,
-                            0xA0761D6478BD642Full};
-};
+void ContentHasher::Add(const char* bytes, std::size_t size) {
+  size_ += size;
+  if (carried_ > 0) {  // complete the block begun by the last piece
+    const std::size_t take = std::min(size, 32 - carried_);
+    std::memcpy(carry_ + carried_, bytes, take);
+    carried_ += take;
+    bytes += take;
+    size -= take;
+    if (carried_ < 32) return;
+    AddBlocks(carry_, 32);
+    carried_ = 0;
+  }
+  const std::size_t whole = size / 32 * 32;
+  AddBlocks(bytes, whole);
+  carried_ = size - whole;
+  std::memcpy(carry_, bytes + whole, carried_);
+}
+
+std::uint64_t ContentHasher::Finish() const {
+  std::uint64_t seed = size_;
+  for (const std::uint64_t l : lane_) seed = Mix(seed ^ l) + 0x9E3779B97F4A7C15ull;
+  return HashBytes(carry_, carried_, seed);
+}
+
+namespace {
 
 // The file's content hash, its bytes read in pieces into a buffer that stays in the processor's
 // cache (not into fresh memory of its whole size: three times the cost, docs/benchmarks.md
 // section 8). False when it cannot be read, or its size is not the one its stat gave.
 bool HashFile(FileKey* key) {
-  constexpr std::size_t kPiece = 65536;  // a multiple of the hash's 32-byte blocks
   ContentHasher hasher;
-  char tail[32];
-  std::size_t tail_size = 0;
-  const std::int64_t size =
-      ReadFileInPieces(key->path, kPiece, [&](const char* bytes, std::size_t n) {
-        const std::size_t whole = n / 32 * 32;  // n < kPiece only for the last piece
-        hasher.AddBlocks(bytes, whole);
-        tail_size = n - whole;
-        std::memcpy(tail, bytes + whole, tail_size);
-      });
+  const std::int64_t size = ReadFileInPieces(
+      key->path, 65536, [&](const char* bytes, std::size_t n) { hasher.Add(bytes, n); });
   if (size < 0 || static_cast<std::uint64_t>(size) != key->size) return false;
-  key->content_hash = hasher.Finish(tail, tail_size, key->size);
+  key->content_hash = hasher.Finish();
   key->hashed = true;
   return true;
 }
@@ -369,7 +371,7 @@ std::optional<StoredMesh> MeshStore::Find(FileKey* key) const {
       key->hashed = from_stat = true;
     }
   }
-  if (!key->hashed && !HashFile(key)) return std::nullopt;
+  if (!key->hashed && (!MayHoldSize(key->size) || !HashFile(key))) return std::nullopt;
   if (!ReadWholeFile(folder_ + "/" + EntryName(*key), &bytes)) return std::nullopt;
   std::optional<StoredMesh> mesh = ParseStoredMesh(bytes);
   if (mesh && !from_stat && !RecentlyModified(*key)) {  // found by content: remember its stat
@@ -388,9 +390,12 @@ void MeshStore::Save(FileKey* key, const StoredMesh& mesh) const {
   if (!key->hashed && !HashFile(key)) return;
   std::error_code ec;
   fs::create_directories(folder_, ec);
-  if (!WriteAtomically(EntryName(*key), SerializeStoredMesh(mesh)) || RecentlyModified(*key)) {
-    return;
+  if (!WriteAtomically(EntryName(*key), SerializeStoredMesh(mesh))) return;
+  {
+    std::lock_guard<std::mutex> lock(sizes_mutex_);
+    sizes_.insert(key->size);
   }
+  if (RecentlyModified(*key)) return;
   Writer stat;
   stat.PutRaw(kStatMagic);
   stat.PutText(key->path);
@@ -398,6 +403,25 @@ void MeshStore::Save(FileKey* key, const StoredMesh& mesh) const {
   stat.Put(key->mtime_ns);
   stat.Put(key->content_hash);
   WriteAtomically(StatName(*key), stat.Finish());
+}
+
+bool MeshStore::MayHoldSize(std::uint64_t size) const {
+  std::lock_guard<std::mutex> lock(sizes_mutex_);
+  if (!sizes_listed_) {
+    sizes_listed_ = true;
+    std::error_code ec;
+    for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();  // d-<hash>-<size>
+      const std::size_t dash = name.rfind('-');
+      if (name.rfind("d-", 0) != 0 || dash < 2 || dash + 1 >= name.size()) continue;
+      std::uint64_t entry_size = 0;
+      const char* first = name.data() + dash + 1;
+      const char* last = name.data() + name.size();
+      const std::from_chars_result r = std::from_chars(first, last, entry_size);
+      if (r.ec == std::errc() && r.ptr == last) sizes_.insert(entry_size);
+    }
+  }
+  return sizes_.count(size) > 0;
 }
 
 bool MeshStore::WriteAtomically(const std::string& name, const std::string& bytes) const {

@@ -14,7 +14,9 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -28,6 +30,28 @@ namespace massprops::internal {
 /// A 64-bit hash of `size` bytes, 8 at a time (not cryptographic: with the size beside it, it
 /// tells changed files and damaged entries apart).
 std::uint64_t HashBytes(const char* bytes, std::size_t size, std::uint64_t seed = 0);
+
+/// The content key's hash of a file's bytes, fed in order in pieces of any size (the value does
+/// not depend on where the pieces split): four independent lanes over 32-byte blocks, one
+/// multiply per 8 bytes (each step a bijection of its lane, so a changed word is never
+/// forgotten), then the lanes and the last bytes folded by HashBytes. Not cryptographic: with the
+/// size beside it, it tells changed files apart.
+class ContentHasher {
+ public:
+  void Add(const char* bytes, std::size_t size);
+  /// Bytes added so far.
+  std::uint64_t size() const { return size_; }
+  /// The hash of the bytes added.
+  std::uint64_t Finish() const;
+
+ private:
+  void AddBlocks(const char* bytes, std::size_t size);  // size a multiple of 32
+  std::uint64_t lane_[4] = {0x9E3779B97F4A7C15ull, 0xBF58476D1CE4E5B9ull, 0x94D049BB133111EBull,
+                            0xA0761D6478BD642Full};
+  char carry_[32] = {};  // the bytes after the last whole block
+  std::size_t carried_ = 0;
+  std::uint64_t size_ = 0;
+};
 
 /// The MassProperties options a result depends on: scale x, y, z, open-mesh model, shell
 /// thickness, closure tolerance, read_stl_directly.
@@ -61,7 +85,8 @@ std::optional<StoredMesh> ParseStoredMesh(const std::string& bytes);
 /// neither HOME nor XDG_CACHE_HOME is set.
 std::string DefaultMeshStoreFolder();
 
-/// The cache folder: lookups and atomic writes. Thread-safe (no state but the folder).
+/// The cache folder: lookups and atomic writes. Thread-safe (its state: the folder, and the
+/// sizes of its content entries, listed once).
 class MeshStore {
  public:
   /// `max_bytes`: Trim removes the least recently written entries above it.
@@ -71,7 +96,9 @@ class MeshStore {
   static bool Stat(const std::string& path, FileKey* key);
   /// The entry of key's file: through its stat entry, else by hashing the file's bytes (read in
   /// pieces: none is kept); then key->content_hash is set, and the stat entry is written. nullopt
-  /// when there is none, it is damaged, or the file cannot be read.
+  /// when there is none, it is damaged, or the file cannot be read. A file of a size no content
+  /// entry has (the folder is listed once, at the first such question) is not hashed: it cannot
+  /// have one, and its reader hashes the bytes it reads (MeshCache) for Save.
   std::optional<StoredMesh> Find(FileKey* key) const;
   /// Writes the entry of key's file (hashing it first when key->hashed is false) and its stat
   /// entry. Failures (a read-only folder, a full disk) are ignored: the cache is an optimisation.
@@ -83,8 +110,14 @@ class MeshStore {
 
  private:
   bool WriteAtomically(const std::string& name, const std::string& bytes) const;
+  // Whether a content entry of that size may exist: the sizes in the folder's entry names when
+  // first asked, and those this store wrote since.
+  bool MayHoldSize(std::uint64_t size) const;
   std::string folder_;
   std::uint64_t max_bytes_;
+  mutable std::mutex sizes_mutex_;
+  mutable bool sizes_listed_ = false;
+  mutable std::set<std::uint64_t> sizes_;
 };
 
 /// Removes the cache folder's entries (and the folder). Returns the number of files removed, or

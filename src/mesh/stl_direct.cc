@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "mesh/assimp_join_hash.h"
+#include "mesh/mesh_store.h"
 
 namespace massprops::internal {
 namespace {
@@ -315,7 +316,7 @@ bool ReadStlDirect(const std::string& bytes, DirectStl* stl) {
   return ok;
 }
 
-bool ReadStlDirectFile(const std::string& path, DirectStl* stl) {
+bool ReadStlDirectFile(const std::string& path, DirectStl* stl, ContentHasher* hasher) {
   const FileDescriptor fd(path);
   if (fd.get() < 0) return false;
   struct stat info {};
@@ -326,6 +327,7 @@ bool ReadStlDirectFile(const std::string& path, DirectStl* stl) {
   if (has_header && IsBinaryStl(header, size)) {
     const std::uint32_t count = RecordCount(header);
     if (!Joinable(count)) return false;
+    if (hasher != nullptr) hasher->Add(header, sizeof header);
     DirectStl found;
     try {
       BinaryStlJoiner joiner(count, &found);
@@ -337,6 +339,7 @@ bool ReadStlDirectFile(const std::string& path, DirectStl* stl) {
         if (ReadFull(fd.get(), piece.get(), 50 * std::size_t{n}) != 50 * std::size_t{n}) {
           return false;
         }
+        if (hasher != nullptr) hasher->Add(piece.get(), 50 * std::size_t{n});
         if (!joiner.Add(piece.get(), n)) return false;
         done += n;
       }
@@ -348,7 +351,9 @@ bool ReadStlDirectFile(const std::string& path, DirectStl* stl) {
     return true;
   }
   std::string bytes;  // an ascii STL (or no STL): its whole text
-  return ReadWholeFile(path, &bytes) && ReadStlDirect(bytes, stl);
+  if (!ReadWholeFile(path, &bytes)) return false;
+  if (hasher != nullptr) hasher->Add(bytes.data(), bytes.size());
+  return ReadStlDirect(bytes, stl);
 }
 
 TriangleMesh JoinedMesh(const DirectStl& stl) {

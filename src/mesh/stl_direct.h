@@ -48,11 +48,15 @@ TriangleMesh JoinedMesh(const DirectStl& stl);
 /// LoadMeshFile then asks assimp, which says what is wrong. Never throws.
 bool ReadStlDirect(const std::string& bytes, DirectStl* stl);
 
+class ContentHasher;  // mesh_store.h
+
 /// ReadStlDirect of the file at `path`, which a binary STL reads in pieces of 65 500 bytes into
 /// one buffer that stays in the processor's cache: copying a file into fresh memory of its whole
 /// size costs about three times as much (docs/benchmarks.md, section 8). Ascii (and no STL): the
 /// whole file, then ReadStlDirect. False also when the file cannot be read, or shrinks meanwhile.
-bool ReadStlDirectFile(const std::string& path, DirectStl* stl);
+/// `hasher` (if not null) is given the bytes read, in order (all of them when it returns true):
+/// the cache's content hash from the same pass.
+bool ReadStlDirectFile(const std::string& path, DirectStl* stl, ContentHasher* hasher = nullptr);
 
 /// The bytes of the file at `path`, in one read (POSIX); false when it cannot be read.
 bool ReadWholeFile(const std::string& path, std::string* bytes);
