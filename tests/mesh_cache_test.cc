@@ -204,6 +204,105 @@ TEST(MeshCacheTest, UnchangedOlderFileIsFoundByItsPathSizeAndTime) {
   }
 }
 
+int StatFilesIn(const std::string& folder) {
+  int n = 0;
+  for (const fs::path& entry : EntriesIn(folder))
+    n += entry.filename().string().rfind("r-", 0) == 0;
+  return n;
+}
+
+// One run's stat entries are one file, whatever the number of meshes; when a run reads 16 such
+// files, it merges them all into its own. A stat entry is trusted without reading the file: a
+// file rewritten with other bytes of the same size, given back its recorded modification time
+// (and keeping its inode), still gets the numbers of its old bytes. That shows that the merged
+// entries are the ones used.
+TEST(MeshCacheTest, StatEntriesAreOneFilePerRunAndMergedPastSixteen) {
+  TempFolder temp;
+  const std::string cache_folder = temp / "cache";
+  std::vector<std::string> meshes;
+  for (int i = 1; i <= 19; ++i) {
+    meshes.push_back(temp / ("cube" + std::to_string(i) + ".stl"));
+    WriteCubeStl(meshes.back(), static_cast<float>(i));
+    fs::last_write_time(meshes.back(),
+                        fs::last_write_time(meshes.back()) - std::chrono::minutes(1));
+  }
+  {  // the first three meshes in one run: three entries, one stat file
+    MeshCache cache;
+    cache.UsePersistentCache(cache_folder);
+    for (int i = 0; i < 3; ++i) Read(&cache, meshes[static_cast<std::size_t>(i)]);
+  }
+  EXPECT_EQ(EntriesIn(cache_folder).size(), 4u);
+  EXPECT_EQ(StatFilesIn(cache_folder), 1);
+  for (std::size_t i = 3; i < meshes.size(); ++i) {  // then one mesh per run (written at its end)
+    {
+      MeshCache cache;
+      cache.UsePersistentCache(cache_folder);
+      Read(&cache, meshes[i]);
+    }
+    // Runs 2 to 17 add a file each; run 18 reads 16 and merges them all into its own.
+    EXPECT_EQ(StatFilesIn(cache_folder), i < 18 ? static_cast<int>(i) - 1 : 1) << i;
+  }
+  EXPECT_EQ(StatFilesIn(cache_folder), 1);
+  // The first cube (side 1) rewritten as the cube of side 0.5: 684 bytes either way.
+  const auto time = fs::last_write_time(meshes[0]);
+  WriteCubeStl(meshes[0] + ".new", 0.5f);
+  {
+    std::ifstream in(meshes[0] + ".new", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(meshes[0], std::ios::binary | std::ios::in | std::ios::out)
+        << bytes;  // same inode
+  }
+  fs::last_write_time(meshes[0], time);
+  MeshCache cache;
+  cache.UsePersistentCache(cache_folder);
+  for (const std::string& mesh : meshes) Read(&cache, mesh);
+  EXPECT_EQ(cache.files_from_persistent_cache(), 19);
+  EXPECT_EQ(cache.files_loaded(), 0);
+  // The side-1 cube's numbers (scaled by (1, 2, 3): volume 6), not the side-0.5 one's (0.75).
+  EXPECT_DOUBLE_EQ(Read(&cache, meshes[0]).properties.volume, 6.0);
+}
+
+// A merge keeps each path's newest stat entry only: the file's time at its last run.
+TEST(MeshCacheTest, AMergeKeepsEachPathsNewestStatEntry) {
+  TempFolder temp;
+  const std::string cache_folder = temp / "cache";
+  const std::string mesh = temp / "a.stl";
+  WriteCubeStl(mesh, 1.0f);
+  const auto now = fs::last_write_time(mesh);
+  const auto run = [&](const std::string& path) {
+    MeshCache cache;
+    cache.UsePersistentCache(cache_folder);
+    return Read(&cache, path).properties.volume;
+  };
+  fs::last_write_time(mesh, now - std::chrono::minutes(2));
+  run(mesh);  // its stat entry at now − 2 min
+  fs::last_write_time(mesh, now - std::chrono::minutes(1));
+  run(mesh);  // found by content; its stat entry at now − 1 min
+  bool merged = false;
+  for (int i = 0; i < 20 && !merged; ++i) {  // one new mesh per run until a run merges
+    const std::string other = temp / ("b" + std::to_string(i) + ".stl");
+    WriteCubeStl(other, 2.0f + static_cast<float>(i));
+    fs::last_write_time(other, now - std::chrono::minutes(1));
+    run(other);
+    merged = StatFilesIn(cache_folder) == 1;
+  }
+  ASSERT_TRUE(merged);
+  // The file rewritten as the cube of side 0.5 (the same 684 bytes' size, the same inode).
+  const std::string smaller = temp / "smaller.stl";
+  WriteCubeStl(smaller, 0.5f);
+  {
+    std::ifstream in(smaller, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(mesh, std::ios::binary | std::ios::in | std::ios::out) << bytes;
+  }
+  // At the newest time, the entry is trusted: the side-1 cube's volume, scaled by (1, 2, 3): 6.
+  fs::last_write_time(mesh, now - std::chrono::minutes(1));
+  EXPECT_DOUBLE_EQ(run(mesh), 6.0);
+  // At the older time there is no entry any more: the file is hashed, and its bytes give 0.75.
+  fs::last_write_time(mesh, now - std::chrono::minutes(2));
+  EXPECT_DOUBLE_EQ(run(mesh), 0.75);
+}
+
 TEST(MeshCacheTest, SameBytesWithANewTimeAreFoundByTheirContent) {
   // A checkout on CI gives every file a new modification time: the entry is found by hashing.
   TempFolder temp;

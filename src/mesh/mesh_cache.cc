@@ -156,6 +156,7 @@ void MeshCache::Flush() {
     state->dirty = false;
     wrote = true;
   }
+  store_->WriteStats();  // also those of files found by their content
   if (wrote) store_->Trim();
 }
 

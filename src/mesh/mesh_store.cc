@@ -14,7 +14,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string_view>
 #include <system_error>
+#include <unordered_set>
 #include <vector>
 
 #include "mesh/stl_direct.h"
@@ -25,7 +27,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kEntryMagic[] = "massprops-mesh-entry-1\n";
-constexpr char kStatMagic[] = "massprops-mesh-stat-1\n";
+constexpr char kStatsMagic[] = "massprops-mesh-stats-1\n";
+constexpr std::size_t kMaxStatBatches = 16;  // more are merged into one by the next run
 
 std::uint64_t Mix(std::uint64_t h) {  // the finaliser of SplitMix64
   h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -160,13 +163,6 @@ MeshMassProperties GetProperties(Reader* in) {
   d.model = static_cast<MeshSolidModel>(model);
   d.fallback_reason = in->GetText();
   return p;
-}
-
-std::string StatName(const FileKey& key) {
-  std::uint64_t h = HashBytes(key.path.data(), key.path.size(), key.size);
-  h = Mix(h ^ static_cast<std::uint64_t>(key.mtime_ns));
-  h = Mix(h ^ key.inode);
-  return "s-" + Hex(h);
 }
 
 // A file modified within the last 2 s may change again within its file system's timestamp
@@ -360,29 +356,23 @@ bool MeshStore::Stat(const std::string& path, FileKey* key) {
 std::optional<StoredMesh> MeshStore::Find(FileKey* key) const {
   std::string bytes;
   bool from_stat = false;
-  if (!key->hashed && ReadWholeFile(folder_ + "/" + StatName(*key), &bytes)) {
-    Reader in(bytes, kStatMagic);
-    const std::string path = in.GetText();
-    const auto size = in.Get<std::uint64_t>();
-    const auto mtime = in.Get<std::int64_t>();
-    const auto hash = in.Get<std::uint64_t>();
-    if (in.AtEnd() && path == key->path && size == key->size && mtime == key->mtime_ns) {
-      key->content_hash = hash;
-      key->hashed = from_stat = true;
+  if (!key->hashed) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ListLocked();
+    const auto it = stats_.find(key->path);
+    if (it != stats_.end()) {
+      for (const StatRecord& r : it->second) {
+        if (r.size == key->size && r.mtime_ns == key->mtime_ns && r.inode == key->inode) {
+          key->content_hash = r.content_hash;
+          key->hashed = from_stat = true;
+        }
+      }
     }
   }
   if (!key->hashed && (!MayHoldSize(key->size) || !HashFile(key))) return std::nullopt;
   if (!ReadWholeFile(folder_ + "/" + EntryName(*key), &bytes)) return std::nullopt;
   std::optional<StoredMesh> mesh = ParseStoredMesh(bytes);
-  if (mesh && !from_stat && !RecentlyModified(*key)) {  // found by content: remember its stat
-    Writer stat;
-    stat.PutRaw(kStatMagic);
-    stat.PutText(key->path);
-    stat.Put(key->size);
-    stat.Put(key->mtime_ns);
-    stat.Put(key->content_hash);
-    WriteAtomically(StatName(*key), stat.Finish());
-  }
+  if (mesh && !from_stat) RememberStat(*key);  // found by content: its stat, for the next run
   return mesh;
 }
 
@@ -392,36 +382,99 @@ void MeshStore::Save(FileKey* key, const StoredMesh& mesh) const {
   fs::create_directories(folder_, ec);
   if (!WriteAtomically(EntryName(*key), SerializeStoredMesh(mesh))) return;
   {
-    std::lock_guard<std::mutex> lock(sizes_mutex_);
+    std::lock_guard<std::mutex> lock(mutex_);
     sizes_.insert(key->size);
   }
-  if (RecentlyModified(*key)) return;
-  Writer stat;
-  stat.PutRaw(kStatMagic);
-  stat.PutText(key->path);
-  stat.Put(key->size);
-  stat.Put(key->mtime_ns);
-  stat.Put(key->content_hash);
-  WriteAtomically(StatName(*key), stat.Finish());
+  RememberStat(*key);
+}
+
+void MeshStore::RememberStat(const FileKey& key) const {
+  if (RecentlyModified(key)) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_.push_back({key.path, key.size, key.mtime_ns, key.inode, key.content_hash});
 }
 
 bool MeshStore::MayHoldSize(std::uint64_t size) const {
-  std::lock_guard<std::mutex> lock(sizes_mutex_);
-  if (!sizes_listed_) {
-    sizes_listed_ = true;
-    std::error_code ec;
-    for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec)) {
-      const std::string name = it->path().filename().string();  // d-<hash>-<size>
-      const std::size_t dash = name.rfind('-');
-      if (name.rfind("d-", 0) != 0 || dash < 2 || dash + 1 >= name.size()) continue;
-      std::uint64_t entry_size = 0;
-      const char* first = name.data() + dash + 1;
-      const char* last = name.data() + name.size();
-      const std::from_chars_result r = std::from_chars(first, last, entry_size);
-      if (r.ec == std::errc() && r.ptr == last) sizes_.insert(entry_size);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ListLocked();
+  return sizes_.count(size) > 0;
+}
+
+void MeshStore::ListLocked() const {
+  if (listed_) return;
+  listed_ = true;
+  std::error_code ec;
+  for (fs::directory_iterator it(folder_, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind("r-", 0) == 0) {  // a run's stat entries
+      std::string bytes;
+      if (!ReadWholeFile(it->path().string(), &bytes)) continue;
+      batches_.push_back(name);
+      Reader in(bytes, kStatsMagic);
+      const auto count = in.Get<std::uint64_t>();
+      std::vector<StatRecord> records;
+      for (std::uint64_t i = 0; in.ok() && i < count; ++i) {
+        StatRecord r;
+        r.path = in.GetText();
+        r.size = in.Get<std::uint64_t>();
+        r.mtime_ns = in.Get<std::int64_t>();
+        r.inode = in.Get<std::uint64_t>();
+        r.content_hash = in.Get<std::uint64_t>();
+        records.push_back(std::move(r));
+      }
+      if (!in.AtEnd()) continue;  // damaged: ignored (and merged away later)
+      for (StatRecord& r : records) stats_[r.path].push_back(std::move(r));
+      continue;
+    }
+    const std::size_t dash = name.rfind('-');  // d-<hash>-<size>
+    if (name.rfind("d-", 0) != 0 || dash < 2 || dash + 1 >= name.size()) continue;
+    std::uint64_t entry_size = 0;
+    const char* first = name.data() + dash + 1;
+    const char* last = name.data() + name.size();
+    const std::from_chars_result r = std::from_chars(first, last, entry_size);
+    if (r.ec == std::errc() && r.ptr == last) sizes_.insert(entry_size);
+  }
+}
+
+void MeshStore::WriteStats() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (pending_.empty()) return;
+  // Past kMaxStatBatches files, this run's batch takes in the records read and replaces them:
+  // of each path, only the newest (a file given an older time again is hashed again).
+  const bool merge = batches_.size() + 1 > kMaxStatBatches;
+  std::vector<const StatRecord*> records;
+  if (merge) {
+    std::unordered_set<std::string_view> pending_paths;
+    for (const StatRecord& r : pending_) pending_paths.insert(r.path);
+    for (const auto& [path, list] : stats_) {
+      const StatRecord* newest = &list.front();
+      for (const StatRecord& r : list) newest = r.mtime_ns > newest->mtime_ns ? &r : newest;
+      if (pending_paths.count(path) == 0) records.push_back(newest);
     }
   }
-  return sizes_.count(size) > 0;
+  for (const StatRecord& r : pending_) records.push_back(&r);
+  Writer out;
+  out.PutRaw(kStatsMagic);
+  out.Put<std::uint64_t>(records.size());
+  for (const StatRecord* r : records) {
+    out.PutText(r->path);
+    out.Put(r->size);
+    out.Put(r->mtime_ns);
+    out.Put(r->inode);
+    out.Put(r->content_hash);
+  }
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  const std::uint64_t id = Mix(static_cast<std::uint64_t>(::getpid()) ^
+                               Mix(static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
+                                   static_cast<std::uint64_t>(now.tv_nsec)));
+  std::error_code ec;
+  fs::create_directories(folder_, ec);
+  if (!WriteAtomically("r-" + Hex(id), out.Finish())) return;
+  pending_.clear();
+  if (!merge) return;
+  for (const std::string& name : batches_) fs::remove(folder_ + "/" + name, ec);
+  batches_.clear();
 }
 
 bool MeshStore::WriteAtomically(const std::string& name, const std::string& bytes) const {

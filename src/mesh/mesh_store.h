@@ -6,8 +6,11 @@
 // a concurrent run sees the old entry, the new one or none, never half of one):
 //   d-<content hash>-<size>: a mesh file's derived numbers (StoredMesh), for any file with
 //     those bytes (a checkout on CI gives the files new modification times: they still hit);
-//   s-<hash of path, size, mtime>: the content hash of the file at that path with that size
-//     and modification time, so that an unchanged file is not even read.
+//   r-<run>: stat entries, one file per run that learned any: the content hash of the file at
+//     a path with a size, modification time and inode, so that an unchanged file is not even
+//     read. A run reads them all at its first lookup; past 16 such files, the next run that
+//     writes one merges them all into it (one file created per run, not one per mesh: creating
+//     a file costs up to 1 ms on some file systems, docs/benchmarks.md section 8).
 // Every file ends with a hash of its bytes: a damaged or truncated one is ignored (and
 // rewritten by the run that computes the numbers again).
 
@@ -19,6 +22,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -85,8 +89,8 @@ std::optional<StoredMesh> ParseStoredMesh(const std::string& bytes);
 /// neither HOME nor XDG_CACHE_HOME is set.
 std::string DefaultMeshStoreFolder();
 
-/// The cache folder: lookups and atomic writes. Thread-safe (its state: the folder, and the
-/// sizes of its content entries, listed once).
+/// The cache folder: lookups and atomic writes. Thread-safe (its state: the folder, listed once
+/// at the first lookup, the stat entries read then, and this run's new ones until WriteStats).
 class MeshStore {
  public:
   /// `max_bytes`: Trim removes the least recently written entries above it.
@@ -100,24 +104,41 @@ class MeshStore {
   /// entry has (the folder is listed once, at the first such question) is not hashed: it cannot
   /// have one, and its reader hashes the bytes it reads (MeshCache) for Save.
   std::optional<StoredMesh> Find(FileKey* key) const;
-  /// Writes the entry of key's file (hashing it first when key->hashed is false) and its stat
-  /// entry. Failures (a read-only folder, a full disk) are ignored: the cache is an optimisation.
+  /// Writes the entry of key's file (hashing it first when key->hashed is false); its stat entry
+  /// waits for WriteStats. Failures (a read-only folder, a full disk) are ignored: the cache is
+  /// an optimisation.
   void Save(FileKey* key, const StoredMesh& mesh) const;
+  /// Writes this run's stat entries (from Save, and from Find by content) as one file.
+  void WriteStats() const;
   /// Removes the oldest entries while the folder holds more than max_bytes (down to 3/4 of it).
   void Trim() const;
 
   const std::string& folder() const { return folder_; }
 
  private:
+  struct StatRecord {
+    std::string path;
+    std::uint64_t size = 0;
+    std::int64_t mtime_ns = 0;
+    std::uint64_t inode = 0;
+    std::uint64_t content_hash = 0;
+  };
   bool WriteAtomically(const std::string& name, const std::string& bytes) const;
   // Whether a content entry of that size may exist: the sizes in the folder's entry names when
   // first asked, and those this store wrote since.
   bool MayHoldSize(std::uint64_t size) const;
+  // Lists the folder once: the content entries' sizes, and the stat entries' files, read.
+  void ListLocked() const;
+  // Notes key's stat entry for WriteStats (not for a file modified within the last 2 s).
+  void RememberStat(const FileKey& key) const;
   std::string folder_;
   std::uint64_t max_bytes_;
-  mutable std::mutex sizes_mutex_;
-  mutable bool sizes_listed_ = false;
+  mutable std::mutex mutex_;  // guards what follows
+  mutable bool listed_ = false;
   mutable std::set<std::uint64_t> sizes_;
+  mutable std::unordered_map<std::string, std::vector<StatRecord>> stats_;  // by path
+  mutable std::vector<std::string> batches_;                                // the stat files read
+  mutable std::vector<StatRecord> pending_;                                 // this run's
 };
 
 /// Removes the cache folder's entries (and the folder). Returns the number of files removed, or
