@@ -112,7 +112,11 @@ class AssimpBuckets {
     bucket_of_.push_back(bucket);
     std::uint64_t& word = seen_[bucket / 64];
     const std::uint64_t bit = std::uint64_t{1} << (bucket % 64);
-    if (word & bit) shared_.push_back(bucket);
+    if (word & bit) {
+      if (shared_bits_.empty()) shared_bits_.assign(seen_.size(), 0);
+      shared_bits_[bucket / 64] |= bit;
+      shared_.push_back(bucket);
+    }
     word |= bit;
   }
   bool NearPair(const std::vector<Eigen::Vector3d>& positions) const {
@@ -120,8 +124,9 @@ class AssimpBuckets {
     std::unordered_map<std::size_t, std::vector<std::size_t>> members;
     for (const std::size_t bucket : shared_) members[bucket];
     for (std::size_t i = 0; i < bucket_of_.size(); ++i) {
-      const auto it = members.find(bucket_of_[i]);
-      if (it != members.end()) it->second.push_back(i);
+      const std::size_t bucket = bucket_of_[i];  // a bit test first: few buckets are shared
+      if (!((shared_bits_[bucket / 64] >> (bucket % 64)) & 1)) continue;
+      members[bucket].push_back(i);
     }
     for (const auto& [bucket, list] : members) {
       for (std::size_t a = 0; a < list.size(); ++a) {
@@ -137,9 +142,10 @@ class AssimpBuckets {
 
  private:
   std::size_t buckets_ = 1;
-  std::vector<std::uint64_t> seen_;     // one bit per bucket: holds a position
-  std::vector<std::size_t> bucket_of_;  // per position
-  std::vector<std::size_t> shared_;     // buckets found holding a second position
+  std::vector<std::uint64_t> seen_;         // one bit per bucket: holds a position
+  std::vector<std::uint64_t> shared_bits_;  // one bit per bucket: holds two (once there is one)
+  std::vector<std::size_t> bucket_of_;      // per position
+  std::vector<std::size_t> shared_;         // buckets found holding a second position
 };
 
 // The join of a binary STL's records, fed in order a piece at a time (the records of a whole
