@@ -253,12 +253,14 @@ bool BinaryStlJoined(const std::string& bytes, std::uint32_t count, DirectStl* s
   return joiner.Add(bytes.data() + 84, count) && joiner.Finish();
 }
 
-// Reads up to n bytes from fd into buffer; fewer only at the end of the file or on an error.
-std::size_t ReadFull(int fd, char* buffer, std::size_t n) {
+// Reads up to n bytes from fd into buffer; fewer only at the end of the file or on a read error
+// (then *failed, if not null, is set).
+std::size_t ReadFull(int fd, char* buffer, std::size_t n, bool* failed = nullptr) {
   std::size_t done = 0;
   while (done < n) {
     const ssize_t got = ::read(fd, buffer + done, n - done);
     if (got < 0 && errno == EINTR) continue;
+    if (got < 0 && failed != nullptr) *failed = true;
     if (got <= 0) break;
     done += static_cast<std::size_t>(got);
   }
@@ -380,9 +382,9 @@ std::int64_t ReadFileInPieces(const std::string& path, std::size_t piece,
   try {
     const std::unique_ptr<char[]> buffer(new char[piece]);
     for (;;) {
-      errno = 0;
-      const std::size_t got = ReadFull(fd.get(), buffer.get(), piece);
-      if (got < piece && errno != 0) return -1;  // a read error, not the end of the file
+      bool failed = false;
+      const std::size_t got = ReadFull(fd.get(), buffer.get(), piece, &failed);
+      if (failed) return -1;  // a read error, not the end of the file
       if (got > 0) take(buffer.get(), got);
       total += static_cast<std::int64_t>(got);
       if (got < piece) return total;
