@@ -33,6 +33,10 @@ void AddCacheCommands(CLI::App& app, std::function<int()>* run);
 /// Defined in src/tool/diff_command.cc.
 void AddDiffCommands(CLI::App& app, std::function<int()>* run);
 
+/// `lsp` (the language server on standard input and output, docs/editors.md). Defined in
+/// src/tool/lsp_command.cc.
+void AddLspCommand(CLI::App& app, std::function<int()>* run);
+
 /// Writes the HTML view of `files` to standard output (`report --format html`); returns the exit
 /// code (0 written; 2 a file could not be read, a bad configuration file, or a write error).
 int RunHtmlView(const std::vector<std::string>& files, const std::vector<std::string>& model_paths,

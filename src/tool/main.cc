@@ -29,6 +29,7 @@
 #include <thread>
 #include <vector>
 
+#include "check_pipeline.h"
 #include "commands.h"
 #include "geometry_cli.h"
 #include "massprops/analysis/checks.h"
@@ -276,13 +277,7 @@ void RunInParallel(std::size_t count, std::size_t threads,
   }
 }
 
-struct Settings {
-  massprops::Target target = massprops::Target::kGeneric;
-  CheckOptions options;
-  Severity fail_on = Severity::kError;
-  std::vector<std::string> model_paths;
-  std::vector<std::string> package_paths;  // the configuration's, after --package-path
-};
+using Settings = massprops::cli::CheckSettings;
 
 // The rule overrides and fail level given on the command line; they win over the configuration.
 struct CliOverrides {
@@ -309,19 +304,8 @@ CliOverrides ParseCliOverrides(const CheckArgs& args) {
 // The settings of one file: the target profile first, then the configuration (`config`, may be
 // null), then the command line, each overriding the one before.
 Settings SettingsFor(const CheckArgs& args, const CliOverrides& cli, const Config* config) {
-  Settings settings;
-  if (!args.target.empty()) {
-    settings.target = *massprops::ParseTarget(args.target);
-  } else if (config && config->target) {
-    settings.target = *config->target;
-  }
-  massprops::ApplyTargetProfile(settings.target, &settings.options);
-  if (config) {
-    massprops::ApplyConfig(*config, settings.options);
-    if (config->fail_on) settings.fail_on = *config->fail_on;
-    settings.model_paths = config->model_paths;
-    settings.package_paths = config->package_paths;
-  }
+  Settings settings = massprops::cli::MakeCheckSettings(
+      args.target.empty() ? std::nullopt : massprops::ParseTarget(args.target), config);
   if (args.tolerance_given) settings.options.tolerance = args.tolerance;
   for (const auto& [rule, level] : cli.rules) settings.options.overrides[rule] = level;
   if (cli.fail_on) settings.fail_on = *cli.fail_on;
@@ -398,45 +382,8 @@ std::vector<Settings> LoadSettings(const CheckArgs& args, const CliOverrides& cl
 
 // One file's result; reads only its own settings, so files can be checked in parallel.
 FileResult CheckFile(const std::string& file, const Settings& settings) {
-  FileResult result;
-  result.path = file == "-" ? "<stdin>" : file;
-  massprops::ReadOptions read_options;
-  read_options.sdf.model_paths = settings.model_paths;
-  read_options.mjcf.mujoco_mesh_inertia = settings.target == massprops::Target::kMujoco;
-  const ReadResult read = massprops::ReadModelFile(file, read_options);
-  result.errors = read.errors;
-  for (const ReadError& warning : read.warnings) {
-    Finding finding;
-    finding.rule = massprops::kReadWarningRule;
-    finding.severity = Severity::kWarning;
-    finding.location = warning.location;
-    finding.message =
-        warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
-    finding.headline = finding.message.substr(0, finding.message.find("; "));
-    finding.help = "the element was skipped: fix it so that the file reads whole";
-    result.findings.push_back(finding);
-  }
-  for (Finding& finding : massprops::ReaderFindings(read, settings.options)) {
-    result.findings.push_back(std::move(finding));
-  }
-  for (const massprops::Model& model : read.models) {
-    result.format = massprops::ToString(model.format);
-    result.models.push_back(model.name);
-    CheckOptions check_options = settings.options;
-    massprops::cli::UseGeometryShapes(model, settings.model_paths, &check_options,
-                                      settings.package_paths);
-    std::vector<Finding> findings = massprops::CheckModel(model, check_options);
-    massprops::cli::AddGeometryFindings(model, settings.options, settings.model_paths, &findings,
-                                        settings.package_paths);
-    massprops::cli::CountMeshLinks(model, settings.model_paths, &result, settings.package_paths);
-    if (settings.target != massprops::Target::kGeneric) {
-      const std::string text = massprops::cli::ReadTextForTarget(file);
-      massprops::AddTargetFindings(model, settings.target, check_options,
-                                   massprops::ReadMujocoCompilerOptions(text), &findings, text);
-    }
-    result.findings.insert(result.findings.end(), findings.begin(), findings.end());
-  }
-  return result;
+  const ReadResult read = massprops::ReadModelFile(file, massprops::cli::CheckReadOptions(settings));
+  return massprops::cli::CheckReadModels(file, read, settings, nullptr);
 }
 
 // The exit code of a check: 2 when an input could not be read, else 1 when a file has a finding
@@ -687,6 +634,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddTraceCommand(app, &run);
     massprops::cli::AddCacheCommands(app, &run);
     massprops::cli::AddExplainCommand(app, &run);
+    massprops::cli::AddLspCommand(app, &run);
   }
 
   try {
