@@ -31,6 +31,9 @@ packages+=(clang-14 libfuzzer-14-dev)
 # The lint (tools/lint.sh, ctest clang_tidy_passes): clang-tidy, whose readability-function-size
 # keeps every function within 120 lines (docs/development.md, "Size limits").
 packages+=(clang-tidy)
+# The language server's real-client test (tests/lsp_neovim_test.py): headless Neovim, an LSP
+# client, opens the example with `massprops lsp` attached (docs/editors.md).
+packages+=(neovim)
 # The packaging tests: lintian judges the .deb (tools/package_test.sh); colcon builds a ROS 2
 # workspace holding massprops (tools/colcon_test.sh): colcon-ros reads package.xml, colcon-cmake
 # builds, colcon-bash writes install/setup.bash.

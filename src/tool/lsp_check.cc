@@ -1,6 +1,7 @@
 // CheckDocument: an editor's buffer through `check`'s pipeline (lsp_server.h).
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -39,8 +40,14 @@ CheckSettings SettingsForPath(const std::string& path, const ServerOptions& opti
   return settings;
 }
 
-bool EndsWith(const std::string& text, const std::string& tail) {
-  return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+// Whether `text` ends with `tail` (lower case), in any case: ".URDF" too.
+bool EndsWithNoCase(const std::string& text, const std::string& tail) {
+  if (text.size() < tail.size()) return false;
+  for (std::size_t i = 0; i < tail.size(); ++i) {
+    const char c = text[text.size() - tail.size() + i];
+    if (std::tolower(static_cast<unsigned char>(c)) != tail[i]) return false;
+  }
+  return true;
 }
 
 // The bytes of the file at `path`, or nullopt when it cannot be read.
@@ -130,13 +137,21 @@ Analysis CheckDocument(const Document& document, const ServerOptions& options) {
   analysis.version = document.version;
   analysis.text = document.text;
   const std::string name = document.path.empty() ? document.uri : document.path;
+  const bool xacro = EndsWithNoCase(name, ".xacro");
+  // Editors attach the server to every XML file: one that is not named .urdf, .sdf or .xacro is
+  // judged only when its root element is a model's, as `check FOLDER` picks files.
+  if (!xacro && !EndsWithNoCase(name, ".urdf") && !EndsWithNoCase(name, ".sdf") &&
+      !DetectModelFormat(document.text).has_value()) {
+    analysis.not_a_model = true;
+    return analysis;
+  }
   try {
     analysis.settings = SettingsForPath(document.path, options);
   } catch (const ConfigError& error) {
     analysis.setup_error = error.what();
     return analysis;
   }
-  if (EndsWith(name, ".xacro")) {
+  if (xacro) {
     if (!options.xacro_enabled || document.path.empty()) {
       analysis.xacro = true;
       analysis.setup_error = "xacro documents are not checked (initializationOptions xacro.enabled)";

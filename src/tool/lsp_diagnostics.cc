@@ -198,6 +198,7 @@ json Diagnostics(const Document& document, const ServerOptions& options) {
   json out = json::array();
   if (!document.analysis) return out;
   const Analysis& analysis = *document.analysis;
+  if (analysis.not_a_model) return out;
   if (!analysis.setup_error.empty()) {
     // A bad configuration stops `check` (an error); a xacro document the server cannot expand
     // is only unchecked (a warning).

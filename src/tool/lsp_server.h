@@ -36,6 +36,9 @@ struct Analysis {
   int version = 0;
   std::string text;  ///< The text that was checked (the buffer, or the xacro expansion).
   bool xacro = false;  ///< The findings were traced from an expansion to the document's lines.
+  /// The document is not a robot description (an .xml or .world file with another root): it
+  /// gets no diagnostics.
+  bool not_a_model = false;
   CheckSettings settings;
   ReadResult read;        ///< The models read from `text` (not from a xacro document).
   FileResult result;      ///< As `check` reports it.
