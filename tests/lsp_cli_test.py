@@ -293,6 +293,75 @@ def test_exit_without_shutdown_is_exit_code_1():
         client.kill()
 
 
+XACRO = """<?xml version="1.0"?>
+<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:property name="unused" value="1"/>
+  <link name="base">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="1" iyy="1" izz="5" ixy="0" ixz="0" iyz="0"/>
+    </inertial>
+  </link>
+</robot>
+"""
+
+# A stand-in expander (CI has no ROS xacro): drops the xacro namespace and properties, which is
+# what xacro makes of the file above.
+EXPANDER = """import re, sys
+text = open(sys.argv[1]).read()
+text = re.sub(r' xmlns:xacro="[^"]*"', "", text)
+sys.stdout.write("".join(l for l in text.splitlines(True) if "xacro:property" not in l))
+"""
+
+
+def xacro_package(folder, text):
+    """A package (package.xml) holding robot.urdf.xacro with `text`, and the expander."""
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "package.xml").write_text("<package><name>r</name></package>\n")
+    (folder / "robot.urdf.xacro").write_text(text)
+    (folder / "expand.py").write_text(EXPANDER)
+    return folder / "robot.urdf.xacro"
+
+
+def xacro_check(path):
+    """[(rule, 0-based source line)] of `check FILE.xacro --format json` with the expander."""
+    report = run_json("check", "--format", "json", "--xacro-command",
+                      "%s %s" % (sys.executable, path.parent / "expand.py"), str(path))
+    return sorted((f["rule"], f["source"]["line"] - 1) for file in report["files"]
+                  for f in file["findings"])
+
+
+def test_a_xacro_buffer_is_checked_at_the_xacro_lines_it_holds():
+    with tempfile.TemporaryDirectory() as folder:
+        path = xacro_package(pathlib.Path(folder) / "pkg", XACRO)
+        client = Client(TOOL, ["--xacro-command", "%s %s" % (sys.executable,
+                                                            path.parent / "expand.py")])
+        try:
+            client.initialize()
+            uri = client.open(path, XACRO)
+            published = client.diagnostics(uri)["diagnostics"]
+            expected = xacro_check(path)
+            assert ("inertia-not-physical", line_of(XACRO, "<inertia ")) in expected, expected
+            assert sorted((d["code"], d["range"]["start"]["line"]) for d in published) == \
+                expected, (published, expected)
+            # Two lines more above the link, not saved: the diagnostics follow the buffer's lines,
+            # as check finds them in a package whose file holds the edited text.
+            edited = XACRO.replace("  <link", "  <!-- a -->\n  <!-- b -->\n  <link")
+            client.change(uri, edited, 2)
+            published = client.diagnostics(uri)["diagnostics"]
+            expected = xacro_check(xacro_package(pathlib.Path(folder) / "copy", edited))
+            assert ("inertia-not-physical", line_of(edited, "<inertia ")) in expected, expected
+            assert sorted((d["code"], d["range"]["start"]["line"]) for d in published) == \
+                expected, (published, expected)
+            # The buffer's file beside the document is gone; the file on disk is unchanged.
+            assert sorted(p.name for p in path.parent.iterdir()) == \
+                ["expand.py", "package.xml", "robot.urdf.xacro"]
+            assert path.read_text() == XACRO
+            assert client.shutdown_and_exit() == 0
+        finally:
+            client.kill()
+
+
 def main():
     global TOOL, EXAMPLE
     TOOL = sys.argv[1]
@@ -300,15 +369,20 @@ def main():
     wanted = sys.argv[3:]
     tests = [(name, f) for name, f in globals().items() if name.startswith("test_")]
     failed = 0
+    ran = 0
     for name, test in tests:
         if wanted and name not in wanted:
             continue
+        ran += 1
         try:
             test()
             print("ok  ", name)
         except Exception as error:  # report every test, then fail
             failed += 1
             print("FAIL", name, repr(error)[:3000])
+    if ran == 0:
+        print("FAIL no test named", wanted)
+        return 1
     return 1 if failed else 0
 
 
