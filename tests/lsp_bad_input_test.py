@@ -3,7 +3,9 @@
 as buffers in one `massprops lsp` session: each gets the diagnostics `massprops check --format
 json` reports for the same text saved as the same file (rules, lines, severities; a read error
 or a finding in another file, such as an included one, on the first line), the server answers
-a request after each, and it exits 0 after shutdown and exit. Inputs about paths (a missing
+a request after each, and it exits 0 after shutdown and exit. The mesh inputs, which the battery
+checks with --geometry, get the information diagnostic `mesh-unresolved` at the elements naming
+the meshes that check's summary counts as not resolved or not readable. Inputs about paths (a missing
 file, a folder, an unreadable file) have no buffer form and are left out.
 
 Usage: lsp_bad_input_test.py MASSPROPS
@@ -147,6 +149,15 @@ def expected(tool, path, text):
     for file in report["files"]:
         rows += [(f["rule"], line_of(f), LSP_SEVERITY[f["severity"]]) for f in file["findings"]]
         rows += [("read-error", line_of(e), 1) for e in file["errors"]]
+        # The meshes check's summary counts as unresolved or unreadable: information at each
+        # element that names them.
+        meshes = {m["uri"] for m in file.get("mesh_uris", []) if m["path"] is None}
+        if report["summary"]["first_unresolved_mesh"]:
+            meshes.add(report["summary"]["first_unresolved_mesh"])
+        for uri in meshes:  # URDF names it on its element; MJCF in an <asset> its geoms use
+            rows += [("mesh-unresolved", i, 3) for i, line in enumerate(text.split("\n"))
+                     if 'filename="%s"' % uri in line or
+                     (file["format"] == "mjcf" and '<geom type="mesh"' in line)]
     return sorted(rows)
 
 

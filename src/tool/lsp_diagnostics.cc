@@ -2,6 +2,7 @@
 // error, at its element's line, in the words of finding_text.h.
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -168,6 +169,34 @@ json FindingDiagnostic(const Finding& finding, const Document& document, const A
   return diagnostic;
 }
 
+// Information at each <collision>/<visual> whose mesh did not resolve or could not be read (what
+// `check` says once in its closing summary): the geometry rules know nothing of its link's size.
+void AddUnresolvedMeshes(const Document& document, const Analysis& analysis, json* out) {
+  std::set<std::string> unresolved;
+  for (const MeshUriResolution& mesh : analysis.result.mesh_uris) {
+    if (mesh.path.empty()) unresolved.insert(mesh.uri);
+  }
+  if (!analysis.result.first_unresolved_mesh.empty()) {
+    unresolved.insert(analysis.result.first_unresolved_mesh);  // found, but not readable
+  }
+  if (unresolved.empty() || analysis.xacro) return;
+  for (const Model& model : analysis.read.models) {
+    for (const Link& link : model.links) {
+      for (const Geometry& geometry : link.geometries) {
+        if (geometry.type != Geometry::Type::kMesh || unresolved.count(geometry.uri) == 0) continue;
+        const bool here =
+            geometry.location.file.empty() || geometry.location.file == analysis.result.path;
+        out->push_back(Diagnostic(
+            document, here ? geometry.location.line : 0, 3, "mesh-unresolved",
+            "link '" + link.name + "': mesh '" + geometry.uri +
+                "' did not resolve or could not be read: its size is unknown to the geometry "
+                "rules\nhelp: give the folder of its package (packagePaths, or massprops lsp "
+                "--package-path DIR)"));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 json LineRange(const std::string& text, int line) {
@@ -219,6 +248,7 @@ json Diagnostics(const Document& document, const ServerOptions& options) {
   for (const Finding& finding : analysis.result.findings) {
     out.push_back(FindingDiagnostic(finding, document, analysis, docs_url));
   }
+  AddUnresolvedMeshes(document, analysis, &out);
   return out;
 }
 
