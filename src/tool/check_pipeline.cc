@@ -61,8 +61,8 @@ FileResult CheckReadModels(const std::string& file, const ReadResult& read,
     CountMeshLinks(model, settings.model_paths, &result, settings.package_paths);
     if (settings.target != Target::kGeneric) {
       const std::string file_text = text ? *text : ReadTextForTarget(file);
-      AddTargetFindings(model, settings.target, check_options,
-                        ReadMujocoCompilerOptions(file_text), &findings, file_text);
+      AddTargetFindings(model, settings.target, check_options, ReadMujocoCompilerOptions(file_text),
+                        &findings, file_text);
     }
     result.findings.insert(result.findings.end(), findings.begin(), findings.end());
   }

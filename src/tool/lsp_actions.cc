@@ -56,7 +56,8 @@ std::vector<PlannedRepair> PlanAll(const Model& model, const Analysis& analysis,
 json PositionOf(const std::string& text, std::size_t offset) {
   const std::size_t line_start = text.rfind('\n', offset == 0 ? 0 : offset - 1);
   const std::size_t start = offset == 0 || line_start == std::string::npos ? 0 : line_start + 1;
-  const auto line = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(start), '\n');
+  const auto line =
+      std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(start), '\n');
   return {{"line", line},
           {"character", Utf16Length(std::string_view(text).substr(start, offset - start))}};
 }
@@ -143,12 +144,11 @@ json CodeActions(const Document& document, const ServerOptions& options, int fir
       const json edit = MinimalEdit(analysis.text, patched.text);
       if (edit.is_null()) continue;
       const Repair& repair = planned.repair;
-      const std::string title =
-          planned.heuristic
-              ? "massprops fix --apply " + repair.rule + ": link '" + repair.link + "' (" +
-                    repair.method + ", a guess)"
-              : "massprops fix: link '" + repair.link + "' " + repair.rule + " (" +
-                    repair.method + ")";
+      const std::string title = planned.heuristic
+                                    ? "massprops fix --apply " + repair.rule + ": link '" +
+                                          repair.link + "' (" + repair.method + ", a guess)"
+                                    : "massprops fix: link '" + repair.link + "' " + repair.rule +
+                                          " (" + repair.method + ")";
       actions.push_back({{"title", title},
                          {"kind", kind},
                          {"diagnostics", answered},

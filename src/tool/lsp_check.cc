@@ -154,7 +154,8 @@ Analysis CheckDocument(const Document& document, const ServerOptions& options) {
   if (xacro) {
     if (!options.xacro_enabled || document.path.empty()) {
       analysis.xacro = true;
-      analysis.setup_error = "xacro documents are not checked (initializationOptions xacro.enabled)";
+      analysis.setup_error =
+          "xacro documents are not checked (initializationOptions xacro.enabled)";
       return analysis;
     }
     CheckXacro(document, options, &analysis);

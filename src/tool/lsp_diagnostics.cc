@@ -117,8 +117,8 @@ json GroupMembers(const Finding& finding, const Analysis& analysis, const Docume
         json location = here ? json{{"uri", document.uri},
                                     {"range", LineRange(document.text, link.location.line)}}
                              : Location(link.location.file, link.location.line, "");
-        related.push_back({{"location", location},
-                           {"message", "welded group member '" + link.name + "'"}});
+        related.push_back(
+            {{"location", location}, {"message", "welded group member '" + link.name + "'"}});
       }
       return related;
     }
@@ -161,8 +161,8 @@ json FindingDiagnostic(const Finding& finding, const Document& document, const A
   }
   json related = GroupMembers(finding, analysis, document);
   if (!here && !file.empty()) {
-    related.push_back({{"location", Location(file, line, "")},
-                       {"message", "the numbers were written here"}});
+    related.push_back(
+        {{"location", Location(file, line, "")}, {"message", "the numbers were written here"}});
   }
   if (!related.empty()) diagnostic["relatedInformation"] = related;
   diagnostic["data"] = {{"link", finding.link}, {"model", finding.model}};
@@ -238,11 +238,11 @@ json Diagnostics(const Document& document, const ServerOptions& options) {
   }
   const std::string docs_url = DocsUrl(options);
   for (const ReadError& error : analysis.result.errors) {
-    const bool here = !analysis.xacro && (error.location.file.empty() ||
-                                          error.location.file == analysis.result.path);
-    const std::string message =
-        !here ? error.ToString()
-              : error.element.empty() ? error.message : error.element + ": " + error.message;
+    const bool here = !analysis.xacro &&
+                      (error.location.file.empty() || error.location.file == analysis.result.path);
+    const std::string message = !here                   ? error.ToString()
+                                : error.element.empty() ? error.message
+                                                        : error.element + ": " + error.message;
     out.push_back(Diagnostic(document, here ? error.location.line : 0, 1, kReadErrorRule, message));
   }
   for (const Finding& finding : analysis.result.findings) {

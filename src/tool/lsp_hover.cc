@@ -93,8 +93,8 @@ std::string GroupTable(const Model& model, int index) {
     std::string text = "\n**welded group** (fixed joints) rooted at `" + root + "`: " + members +
                        "\n\n| composite | |\n|---|---|\n";
     text += "| mass | " + FormatSignificant(composite.mass, 6) + " kg |\n";
-    text += "| center of mass | " + Vector(composite.p_RoScm_R) + " m in `" + root +
-            "`'s frame |\n";
+    text +=
+        "| center of mass | " + Vector(composite.p_RoScm_R) + " m in `" + root + "`'s frame |\n";
     text += "| principal moments | " + PrincipalMoments(composite.I_SScm_R) + " |\n";
     return text;
   }
@@ -114,9 +114,9 @@ json Hover(const Document& document, int line, int utf16_column) {
     start = newline + 1;
   }
   const std::size_t end = std::min(analysis.text.find('\n', start), analysis.text.size());
-  const std::size_t byte = ByteOfUtf16Column(
-      std::string_view(analysis.text).substr(start, end - start),
-      static_cast<std::size_t>(std::max(0, utf16_column)));
+  const std::size_t byte =
+      ByteOfUtf16Column(std::string_view(analysis.text).substr(start, end - start),
+                        static_cast<std::size_t>(std::max(0, utf16_column)));
   for (const Model& model : analysis.read.models) {
     const Link* link = LinkAt(model, line + 1, static_cast<int>(byte) + 1);
     if (link == nullptr) continue;

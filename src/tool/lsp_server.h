@@ -26,22 +26,22 @@ struct ServerOptions {
   std::string target;  ///< A target profile name; "" for the configuration's (else generic).
   std::vector<std::string> model_paths;    ///< Folders searched for SDF model:// URIs.
   std::vector<std::string> package_paths;  ///< Folders searched for package:// meshes.
-  XacroOptions xacro;  ///< How a .xacro document is expanded (xacro_command, xacro_args).
+  XacroOptions xacro;         ///< How a .xacro document is expanded (xacro_command, xacro_args).
   bool xacro_enabled = true;  ///< Check .xacro documents when an expander is found.
-  std::string docs_url;  ///< Base URL of the docs folder (codeDescription); "" to find it.
+  std::string docs_url;       ///< Base URL of the docs folder (codeDescription); "" to find it.
 };
 
 /// One check of a document: the text it ran on and everything the answers need.
 struct Analysis {
   int version = 0;
-  std::string text;  ///< The text that was checked (the buffer, or the xacro expansion).
+  std::string text;    ///< The text that was checked (the buffer, or the xacro expansion).
   bool xacro = false;  ///< The findings were traced from an expansion to the document's lines.
   /// The document is not a robot description (an .xml or .world file with another root): it
   /// gets no diagnostics.
   bool not_a_model = false;
   CheckSettings settings;
-  ReadResult read;        ///< The models read from `text` (not from a xacro document).
-  FileResult result;      ///< As `check` reports it.
+  ReadResult read;          ///< The models read from `text` (not from a xacro document).
+  FileResult result;        ///< As `check` reports it.
   std::string setup_error;  ///< A configuration or expander error that kept it from running.
 };
 
