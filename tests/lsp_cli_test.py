@@ -283,6 +283,44 @@ def test_a_malformed_buffer_is_a_read_error_diagnostic_and_the_server_lives_on()
         client.kill()
 
 
+def test_the_configuration_and_the_target_are_honoured():
+    with tempfile.TemporaryDirectory() as folder:
+        copy = pathlib.Path(folder) / EXAMPLE.name
+        copy.write_text(EXAMPLE.read_text())
+        # .massprops.toml beside the file: check reads it, and so does the server.
+        (pathlib.Path(folder) / ".massprops.toml").write_text(
+            '[rules]\nunits-suspect = "off"\ninertial-missing = "error"\n')
+        client = started()
+        try:
+            uri = client.open(copy, copy.read_text())
+            expected = check_json(copy)
+            assert "units-suspect" not in [r[0] for r in expected], expected
+            same_findings(client.diagnostics(uri)["diagnostics"], expected)
+            # An invalid configuration is a diagnostic, as it stops check.
+            (pathlib.Path(folder) / ".massprops.toml").write_text("[rules]\nno-such-rule = 1\n")
+            client.notify("textDocument/didSave", {"textDocument": {"uri": uri}})
+            published = client.diagnostics(uri)["diagnostics"]
+            assert [d["code"] for d in published] == ["config-error"], published
+            assert ".massprops.toml" in published[0]["message"], published
+            assert client.shutdown_and_exit() == 0
+        finally:
+            client.kill()
+        # initializationOptions' target: the findings of `check --target mujoco`.
+        (pathlib.Path(folder) / ".massprops.toml").unlink()
+        client = Client(TOOL)
+        try:
+            client.initialize({"target": "mujoco"})
+            uri = client.open(copy, copy.read_text())
+            report = run_json("check", "--format", "json", "--target", "mujoco", str(copy))
+            expected = sorted((f["rule"], f["line"] - 1, LSP_SEVERITY[f["severity"]],
+                               f["headline"]) for file in report["files"] for f in file["findings"])
+            assert expected != check_json(copy), "the target changes nothing on the example"
+            same_findings(client.diagnostics(uri)["diagnostics"], expected)
+            assert client.shutdown_and_exit() == 0
+        finally:
+            client.kill()
+
+
 def test_exit_without_shutdown_is_exit_code_1():
     client = started()
     try:
@@ -306,8 +344,10 @@ XACRO = """<?xml version="1.0"?>
 """
 
 # A stand-in expander (CI has no ROS xacro): drops the xacro namespace and properties, which is
-# what xacro makes of the file above.
+# what xacro makes of the file above. It reads its standard input first: an expander that took
+# the server's (the editor's message stream) would hang the session.
 EXPANDER = """import re, sys
+sys.stdin.read()  # reads standard input to its end: under the server, never the editor's messages
 text = open(sys.argv[1]).read()
 text = re.sub(r' xmlns:xacro="[^"]*"', "", text)
 sys.stdout.write("".join(l for l in text.splitlines(True) if "xacro:property" not in l))

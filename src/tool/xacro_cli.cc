@@ -1,5 +1,6 @@
 #include "xacro_cli.h"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -57,6 +58,10 @@ std::optional<std::string> RunCapture(const std::vector<std::string>& argv, std:
     return std::nullopt;
   }
   if (pid == 0) {
+    // The expander reads files, never standard input: under `massprops lsp` that is the
+    // editor's message stream, which it must not take from the server.
+    const int null_fd = open("/dev/null", O_RDONLY);
+    if (null_fd >= 0) dup2(null_fd, STDIN_FILENO);
     dup2(fds[1], STDOUT_FILENO);
     close(fds[0]);
     close(fds[1]);
