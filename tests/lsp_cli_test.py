@@ -321,6 +321,44 @@ def test_the_configuration_and_the_target_are_honoured():
             client.kill()
 
 
+WELDED = """<robot name="r">
+  <link name="base">
+    <inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+  <joint name="j" type="revolute">
+    <parent link="base"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+  <link name="arm"/>
+  <joint name="w" type="fixed"><parent link="arm"/><child link="tip"/></joint>
+  <link name="tip"/>
+</robot>
+"""
+
+
+def test_a_welded_group_finding_lists_its_members_as_related_information():
+    with tempfile.TemporaryDirectory() as folder:
+        path = pathlib.Path(folder) / "welded.urdf"
+        path.write_text(WELDED)
+        # arm and tip (welded by the fixed joint w) turn on j with no mass: one group finding.
+        report = run_json("check", "--format", "json", str(path))
+        group = [f for f in report["files"][0]["findings"] if f["values"].get("group_links") == 2]
+        assert len(group) == 1, report
+        client = started()
+        try:
+            uri = client.open(path, WELDED)
+            published = client.diagnostics(uri)["diagnostics"]
+            finding = next(d for d in published if d["code"] == group[0]["rule"])
+            related = finding["relatedInformation"]
+            assert sorted(r["location"]["range"]["start"]["line"] for r in related) == \
+                [line_of(WELDED, '<link name="arm"/>'), line_of(WELDED, '<link name="tip"/>')]
+            assert all(r["location"]["uri"] == uri for r in related), related
+            assert sorted(r["message"].split("'")[1] for r in related) == ["arm", "tip"], related
+            assert client.shutdown_and_exit() == 0
+        finally:
+            client.kill()
+
+
 def test_exit_without_shutdown_is_exit_code_1():
     client = started()
     try:
