@@ -67,7 +67,8 @@ std::string LinkTable(const Link& link, const Model& model) {
   const MassProperties props = LinkMassProperties(link, model.format);
   text += "| | |\n|---|---|\n";
   text += "| mass | " + FormatShortest(props.mass) + " kg |\n";
-  text += "| center of mass | " + Vector(props.p_FoScm_F) + " m in the link frame |\n";
+  const char* frame = model.format == Model::Format::kMjcf ? "body" : "link";
+  text += "| center of mass | " + Vector(props.p_FoScm_F) + " m in the " + frame + " frame |\n";
   text += "| principal moments | " + PrincipalMoments(props.I_SScm_F) + " |\n";
   if (link.inertial) {
     const Inertial& in = *link.inertial;
