@@ -274,8 +274,17 @@ def test_a_malformed_buffer_is_a_read_error_diagnostic_and_the_server_lives_on()
         client.send_raw(b"Content-Length: 5\r\n\r\n{nope")
         error = client.wait_for(lambda m: "error" in m and m.get("id") is None)
         assert error["error"]["code"] == -32700, error
+        client.send_raw(b"Content-Type: x\r\n\r\n")  # a header without Content-Length
+        error = client.wait_for(lambda m: "error" in m and m.get("id") is None)
+        assert error["error"]["code"] == -32700, error
         reply = client.call("textDocument/nonsense", {})
         assert reply["error"]["code"] == -32601, reply
+        # Parameters of the wrong shape: InvalidParams (JSON-RPC), the server goes on.
+        reply = client.call("textDocument/hover", [1, 2])
+        assert reply["error"]["code"] == -32602, reply
+        reply = client.call("textDocument/hover", {"textDocument": {"uri": "file:///nowhere.urdf"},
+                                                   "position": {"line": 0, "character": 0}})
+        assert reply["result"] is None, reply
         client.notify("textDocument/didClose", {"textDocument": {"uri": uri}})
         assert client.diagnostics(uri)["diagnostics"] == []
         assert client.shutdown_and_exit() == 0

@@ -154,8 +154,8 @@ void Server::Handle(const json& message) {
 }
 
 json Server::Initialize(const json& params) {
-  for (const std::string& problem :
-       ApplyInitializationOptions(params.value("initializationOptions", json()), &options_)) {
+  const json init = params.is_object() ? params.value("initializationOptions", json()) : json();
+  for (const std::string& problem : ApplyInitializationOptions(init, &options_)) {
     send_(LogMessage(2, problem));
   }
   return {{"capabilities",
