@@ -382,7 +382,8 @@ std::vector<Settings> LoadSettings(const CheckArgs& args, const CliOverrides& cl
 
 // One file's result; reads only its own settings, so files can be checked in parallel.
 FileResult CheckFile(const std::string& file, const Settings& settings) {
-  const ReadResult read = massprops::ReadModelFile(file, massprops::cli::CheckReadOptions(settings));
+  const ReadResult read =
+      massprops::ReadModelFile(file, massprops::cli::CheckReadOptions(settings));
   return massprops::cli::CheckReadModels(file, read, settings, nullptr);
 }
 
