@@ -368,6 +368,26 @@ def test_a_welded_group_finding_lists_its_members_as_related_information():
             client.kill()
 
 
+def test_meshes_resolve_from_the_file_s_place_for_an_unsaved_buffer():
+    # Links whose only geometry is a mesh (../mesh/*.stl, relative to the file): their findings
+    # need the meshes' sizes. The buffer has one line more than the file on disk, not saved.
+    path = EXAMPLE.parent.parent / "testdata" / "check" / "mesh-only-absurd-inertia.urdf"
+    on_disk = path.read_text()
+    declaration, rest = on_disk.split("\n", 1)
+    assert declaration.startswith("<?xml"), declaration
+    buffer = declaration + "\n<!-- not saved -->\n" + rest
+    expected = [(rule, line + 1, severity, headline)
+                for rule, line, severity, headline in check_json(path)]
+    assert len(expected) >= 2, expected  # without the meshes check finds nothing here
+    client = started()
+    try:
+        uri = client.open(path, buffer)
+        same_findings(client.diagnostics(uri)["diagnostics"], sorted(expected))
+        assert client.shutdown_and_exit() == 0
+    finally:
+        client.kill()
+
+
 def test_exit_without_shutdown_is_exit_code_1():
     client = started()
     try:

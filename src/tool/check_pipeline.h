@@ -4,6 +4,7 @@
 // it reads; the language server (lsp_server.cc) runs it on an editor's unsaved buffer, named by
 // the file's path so that meshes, package:// URIs and SDF includes resolve from the file's place.
 // Defined in src/tool/check_pipeline.cc.
+#include <optional>
 #include <string>
 #include <vector>
 
