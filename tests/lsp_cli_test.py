@@ -388,6 +388,36 @@ def test_meshes_resolve_from_the_file_s_place_for_an_unsaved_buffer():
         client.kill()
 
 
+def test_ranges_count_utf16_units_and_uris_are_percent_decoded():
+    # A folder whose name needs percent-encoding in a URI, and a line with characters outside
+    # ASCII, one of them outside the Basic Multilingual Plane (two UTF-16 code units).
+    with tempfile.TemporaryDirectory() as folder:
+        place = pathlib.Path(folder) / "robot é 1%"
+        place.mkdir()
+        path = place / "a.urdf"
+        text = ('<robot name="r">\n  <link name="a">\n    <inertial>\n      <mass value="1"/>\n'
+                '      <inertia ixx="1" iyy="1" izz="5" ixy="0" ixz="0" iyz="0"/> <!-- kg·m² 𝑰 -->\n'
+                '    </inertial>\n  </link>\n</robot>\n')
+        path.write_text(text)
+        expected = check_json(path)
+        assert ("inertia-not-physical", 4) in [r[:2] for r in expected], expected
+        client = started()
+        try:
+            uri = client.open(path, text)
+            assert "%20" in uri and "%C3%A9" in uri, uri
+            published = client.diagnostics(uri)
+            assert published["uri"] == uri
+            same_findings(published["diagnostics"], expected)
+            line = text.split("\n")[4]
+            end = len(line.encode("utf-16-le")) // 2  # UTF-16 code units (LSP's default)
+            assert end == len(line) + 1  # the one character outside the BMP counts twice
+            at = next(d for d in published["diagnostics"] if d["code"] == "inertia-not-physical")
+            assert at["range"]["end"] == {"line": 4, "character": end}, at
+            assert client.shutdown_and_exit() == 0
+        finally:
+            client.kill()
+
+
 def test_exit_without_shutdown_is_exit_code_1():
     client = started()
     try:
