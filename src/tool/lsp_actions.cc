@@ -13,6 +13,7 @@
 #include "massprops/analysis/repair.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "massprops/output/reporters.h"
 #include "massprops/output/xml_patch.h"
 
 namespace massprops::cli::lsp {
@@ -149,7 +150,7 @@ json CodeActions(const Document& document, const ServerOptions& options, int fir
                                           repair.link + "' (" + repair.method + ", a guess)"
                                     : "massprops fix: link '" + repair.link + "' " + repair.rule +
                                           " (" + repair.method + ")";
-      actions.push_back({{"title", title},
+      actions.push_back({{"title", ShortenLongWords(title)},
                          {"kind", kind},
                          {"diagnostics", answered},
                          {"isPreferred", !planned.heuristic},

@@ -118,7 +118,8 @@ json GroupMembers(const Finding& finding, const Analysis& analysis, const Docume
                                     {"range", LineRange(document.text, link.location.line)}}
                              : Location(link.location.file, link.location.line, "");
         related.push_back(
-            {{"location", location}, {"message", "welded group member '" + link.name + "'"}});
+            {{"location", location},
+             {"message", ShortenLongWords("welded group member '" + link.name + "'")}});
       }
       return related;
     }
@@ -128,11 +129,12 @@ json GroupMembers(const Finding& finding, const Analysis& analysis, const Docume
 
 json Diagnostic(const Document& document, int line, int severity, const std::string& code,
                 const std::string& message) {
+  // Names are shortened as in every report (a 10 MB link name is not sent whole).
   return {{"range", LineRange(document.text, line)},
           {"severity", severity},
           {"source", "massprops"},
           {"code", code},
-          {"message", message}};
+          {"message", ShortenLongWords(message)}};
 }
 
 // The diagnostic of one finding: at its line in the document, or (a number written in another
@@ -165,7 +167,6 @@ json FindingDiagnostic(const Finding& finding, const Document& document, const A
         {{"location", Location(file, line, "")}, {"message", "the numbers were written here"}});
   }
   if (!related.empty()) diagnostic["relatedInformation"] = related;
-  diagnostic["data"] = {{"link", finding.link}, {"model", finding.model}};
   return diagnostic;
 }
 

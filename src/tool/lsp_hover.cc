@@ -11,6 +11,7 @@
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/format_number.h"
 #include "massprops/core/principal_axes.h"
+#include "massprops/output/reporters.h"
 
 namespace massprops::cli::lsp {
 namespace {
@@ -125,7 +126,7 @@ json Hover(const Document& document, int line, int utf16_column) {
     const std::string kind = model.format == Model::Format::kMjcf ? "body" : "link";
     const std::string markdown = "**" + kind + " `" + link->name + "`** (model `" + model.name +
                                  "`)\n\n" + LinkTable(*link, model) + GroupTable(model, index);
-    return {{"contents", {{"kind", "markdown"}, {"value", markdown}}},
+    return {{"contents", {{"kind", "markdown"}, {"value", ShortenLongWords(markdown)}}},
             {"range", LineRange(analysis.text, line + 1)}};
   }
   return nullptr;
