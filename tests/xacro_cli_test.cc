@@ -14,6 +14,8 @@
 #include <sstream>
 #include <string>
 
+#include "shared_data.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -66,7 +68,7 @@ bool Contains(const std::string& text, const std::string& part) {
 class XacroCliTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!fs::exists(kXacroDir / "pmb2" / "expanded.urdf")) GTEST_SKIP() << "no " << kXacroDir;
+    MASSPROPS_SKIP_WITHOUT_SHARED("xacro/pmb2/expanded.urdf");
   }
 };
 
@@ -151,7 +153,7 @@ class XacroFixTest : public XacroCliTest {
  protected:
   void SetUp() override {
     XacroCliTest::SetUp();
-    if (IsSkipped()) return;
+    if (IsSkipped() || HasFatalFailure()) return;
     copy_ = fs::temp_directory_path() / ("massprops_xacro_fix_" + std::to_string(getpid()));
     fs::remove_all(copy_);
     fs::copy(kXacroDir / "pmb2", copy_, fs::copy_options::recursive);
