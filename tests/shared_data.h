@@ -69,10 +69,10 @@ inline bool SharedPartPresent(const std::string& part) {
 
 /// Skips the test (or, where ../shared is required, fails it) unless ../shared/`part` exists. In a
 /// test's body or SetUp().
-#define MASSPROPS_SKIP_WITHOUT_SHARED(part)                                                   \
-  do {                                                                                        \
-    const std::string massprops_missing_ = ::massprops::test_support::SharedMissing(part);   \
-    if (massprops_missing_.empty()) break;                                                    \
-    if (::massprops::test_support::SharedRequired()) FAIL() << massprops_missing_;            \
-    GTEST_SKIP() << massprops_missing_;                                                       \
+#define MASSPROPS_SKIP_WITHOUT_SHARED(part)                                                \
+  do {                                                                                     \
+    const std::string massprops_missing_ = ::massprops::test_support::SharedMissing(part); \
+    if (massprops_missing_.empty()) break;                                                 \
+    if (::massprops::test_support::SharedRequired()) FAIL() << massprops_missing_;         \
+    GTEST_SKIP() << massprops_missing_;                                                    \
   } while (false)

@@ -68,9 +68,7 @@ bool Contains(const std::string& text, const std::string& part) {
 
 class XacroCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    MASSPROPS_SKIP_WITHOUT_SHARED("xacro/pmb2/expanded.urdf");
-  }
+  void SetUp() override { MASSPROPS_SKIP_WITHOUT_SHARED("xacro/pmb2/expanded.urdf"); }
 };
 
 // pmb2's antennas (urdf/objects/antenna.urdf.xacro lines 26-28, one macro for both antennas)
@@ -386,10 +384,11 @@ TEST(XacroTraceCliTest, EveryFormatOfTraceOnAPackageWrittenHere) {
   const std::vector<std::string> lines = Lines(text.out);
   ASSERT_EQ(lines.size(), 28u) << text.out;
   // robot.urdf: the arm's <inertia> is on line 24, the right leg's on line 12.
-  EXPECT_TRUE(Contains(text.out, "arm izz 5 (generated 24): robot.urdf.xacro:27 computed (m=1)"))
+  EXPECT_TRUE(
+      Contains(text.out, "arm inertia izz 5 (generated 24): robot.urdf.xacro:27 computed (m=1)"))
       << text.out;
   EXPECT_TRUE(
-      Contains(text.out, "right_leg izz 0.5 (generated 12): robot.urdf.xacro:12 parameter"))
+      Contains(text.out, "right_leg inertia izz 0.5 (generated 12): robot.urdf.xacro:12 parameter"))
       << text.out;
 
   const RunResult json_run = RunTool(trace + "json", dir.string());
