@@ -530,7 +530,7 @@ TEST(ChecksTest, GeometryBoundsFollowTheGeometryPoseAndSkipMeshes) {
 // a 1e-6·trace tolerance) name exactly the links that massprops reports inertia-not-physical
 // for, per link (group findings are left out).
 TEST(ChecksTest, CorpusInvalidLinksMatchTheManifest) {
-  if (!std::ifstream(test_support::CorpusDir() + "/MANIFEST.tsv")) GTEST_SKIP() << "no corpus";
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   int files = 0;
   for (const test_support::ManifestRow& row : test_support::ReadCorpusManifest("urdf")) {
     const std::string& notes = row.notes;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "shared_data.h"
+
 namespace massprops::test_support {
 
 struct ManifestRow {

@@ -19,12 +19,19 @@
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "shared_data.h"
 
 namespace massprops {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 const std::string kRobots = std::string(MASSPROPS_CORPUS_DIR) + "/example-robot-data/robots/";
+
+// Every test reads the corpus: skipped without ../shared (tests/shared_data.h).
+class CorpusMeshTest : public ::testing::Test {
+ protected:
+  void SetUp() override { MASSPROPS_SKIP_WITHOUT_SHARED("corpus"); }
+};
 
 // What each corpus mesh is, as found by this library (and checked independently where
 // possible: a binary STL holds (file size − 84)/50 triangles, by the format's definition).
@@ -52,7 +59,7 @@ const std::vector<MeshFact> kMeshFacts = {
     {"double_pendulum_description/meshes/link2.stl", true, 16},
 };
 
-TEST(CorpusMeshTest, EveryShippedMeshLoadsAndEnclosesItsVolume) {
+TEST_F(CorpusMeshTest, EveryShippedMeshLoadsAndEnclosesItsVolume) {
   for (const MeshFact& fact : kMeshFacts) {
     const std::string path = kRobots + fact.path;
     TriangleMesh mesh;
@@ -149,7 +156,7 @@ const Comparison& Row(const std::vector<Comparison>& rows, const std::string& li
   return none;
 }
 
-TEST(CorpusMeshTest, DoublePendulumLinksMatchTheirMeshesAsSteel) {
+TEST_F(CorpusMeshTest, DoublePendulumLinksMatchTheirMeshesAsSteel) {
   // double_pendulum.urdf is a SolidWorks export: its link1 and link2 inertias were computed by
   // CAD from the solids. Their meshes give the same principal moments within 1.5%, the same
   // center within 0.1 mm, and an implied density mass/volume of about 7990 kg/m³: steel
@@ -175,7 +182,7 @@ TEST(CorpusMeshTest, DoublePendulumLinksMatchTheirMeshesAsSteel) {
   }
 }
 
-TEST(CorpusMeshTest, FingerBaseDeclaresAPlaceholderBox) {
+TEST_F(CorpusMeshTest, FingerBaseDeclaresAPlaceholderBox) {
   // finger_edu.urdf's finger_base_link declares m = 1 and moments 0.0108333, 0.0566667,
   // 0.0608333 with its center 0.4 m up. Hand-derived: a box a × b × c of mass 1 has
   // (b² + c²)/12, (a² + c²)/12, (a² + b²)/12, so a² + b² = 0.13, a² + c² = 0.68,
@@ -203,7 +210,7 @@ TEST(CorpusMeshTest, FingerBaseDeclaresAPlaceholderBox) {
   EXPECT_LT(Row(rows, "finger_middle_link").max_relative_moment_difference, 0.07);
 }
 
-TEST(CorpusMeshTest, SoloLegsShareMeshesLoadedOnce) {
+TEST_F(CorpusMeshTest, SoloLegsShareMeshesLoadedOnce) {
   // solo.urdf: 13 links with geometry reference 6 OBJ files; the 4 legs are the same parts.
   // Its upper legs and feet agree with their meshes within 3% and 10% (the feet are nearly
   // axially symmetric: the mesh's two smaller moments are equal to 1e-5 relative); its lower
@@ -244,7 +251,7 @@ std::vector<Finding> CheckWithMeshes(const std::string& relative, MeshCache* cac
   return CheckModel(read.models.at(0), options);
 }
 
-TEST(CorpusMeshTest, MeshAwareChecksFindTheFingersFlippedProductAndPlaceholderBase) {
+TEST_F(CorpusMeshTest, MeshAwareChecksFindTheFingersFlippedProductAndPlaceholderBase) {
   MeshCache cache;
   std::vector<std::pair<std::string, std::string>> found;  // (link, rule)
   for (const Finding& f :
@@ -264,7 +271,7 @@ TEST(CorpusMeshTest, MeshAwareChecksFindTheFingersFlippedProductAndPlaceholderBa
       CheckWithMeshes("double_pendulum_description/urdf/double_pendulum.urdf", &cache).empty());
 }
 
-TEST(CorpusMeshTest, DeclaredVersusMeshInertiaTable) {
+TEST_F(CorpusMeshTest, DeclaredVersusMeshInertiaTable) {
   // Prints the markdown table of docs/meshes.md; asserts only that every link with geometry and
   // an inertial was computed (the findings are asserted in the tests above).
   std::printf(

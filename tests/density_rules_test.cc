@@ -14,6 +14,7 @@
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/mesh/mesh_loader.h"
+#include "shared_data.h"
 
 namespace massprops {
 namespace {
@@ -126,7 +127,8 @@ TEST(DensityRulesTest, SilentOnTheCorpusDoublePendulumWhoseMaterialsWereSet) {
   const std::string corpus = MASSPROPS_CORPUS_DIR;
   const std::string file =
       corpus + "/example-robot-data/robots/double_pendulum_description/urdf/double_pendulum.urdf";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no corpus at " << corpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED(
+      "corpus/example-robot-data/robots/double_pendulum_description/urdf/double_pendulum.urdf");
   MeshCache cache;
   const Model model = Read(file);
   const std::vector<Finding> findings = CheckWithMeshes(model, {corpus}, &cache);
@@ -164,7 +166,7 @@ TEST(DensityRulesTest, CorpusRobotsWithMeshes) {
       "solo_description/robots/solo.urdf",
       "solo_description/robots/solo12.urdf",
   };
-  if (!std::filesystem::exists(robots + files[0])) GTEST_SKIP() << "no corpus at " << corpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/example-robot-data/robots");
   MeshCache cache;
   int density_findings = 0;
   for (const std::string& name : files) {

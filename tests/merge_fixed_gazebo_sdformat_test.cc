@@ -239,6 +239,7 @@ void CompareWithSdformat(const std::string& file, const sdf::Model& sdf_model, c
 }
 
 TEST(MergeFixedGazeboSdformatTest, EveryMergedBodyAgreesWithLongDoubleAndLibsdformat) {
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   sdf::Console::Instance()->SetQuiet(true);
   const std::vector<test_support::ManifestRow> rows = test_support::ReadCorpusManifest("urdf");
   ASSERT_GT(rows.size(), 100u) << "corpus MANIFEST.tsv not found under " << kCorpus;

@@ -376,7 +376,7 @@ void CheckFile(const std::string& path, const std::string& label, const sdf::Par
 }
 
 TEST(MergeFixedSdfSdformatTest, MergedCorpusFilesLoadWithTheCompositesAndUnchangedPoses) {
-  if (!std::ifstream(kCorpus + "/MANIFEST.tsv")) GTEST_SKIP() << "no corpus at " << kCorpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   std::string sdf_path;
   for (const std::string& p : CorpusModelPaths()) sdf_path += (sdf_path.empty() ? "" : ":") + p;
   setenv("SDF_PATH", sdf_path.c_str(), 1);  // Both libsdformat and massprops search it.

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "massprops/mesh/mesh_loader.h"
+#include "shared_data.h"
 
 namespace massprops {
 namespace {
@@ -509,7 +510,8 @@ TEST(MeshCacheTest, PointsAreThoseOfTheFullLoader) {
                                     kMeshDir + "/cube_quads.obj", kMeshDir + "/tet_cm.dae"};
   const std::string corpus = std::string(MASSPROPS_CORPUS_DIR) +
                              "/example-robot-data/robots/double_pendulum_description/meshes/";
-  if (fs::exists(corpus)) {
+  if (test_support::SharedPartPresent(
+          "corpus/example-robot-data/robots/double_pendulum_description/meshes")) {
     for (const char* name : {"base_link.stl", "link1.stl", "link2.stl"}) {
       files.push_back(corpus + name);
     }

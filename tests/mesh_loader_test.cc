@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "massprops/io/model_reader.h"
+#include "shared_data.h"
 
 namespace massprops {
 namespace {
@@ -478,7 +479,8 @@ TEST(MeshLoaderTest, StlReadDirectlyGivesTheSameMassProperties) {
   std::vector<std::string> files = {kMeshDir + "/box_ascii.stl", kMeshDir + "/box_binary.stl"};
   const std::string corpus = std::string(MASSPROPS_CORPUS_DIR) +
                              "/example-robot-data/robots/double_pendulum_description/meshes/";
-  if (fs::exists(corpus)) {
+  if (test_support::SharedPartPresent(
+          "corpus/example-robot-data/robots/double_pendulum_description/meshes")) {
     for (const char* name : {"base_link.stl", "link1.stl", "link2.stl"})
       files.push_back(corpus + name);
   }

@@ -222,7 +222,7 @@ std::string CompareWithLibsdformat(const std::string& path, const SdfReadOptions
 }
 
 TEST(SdfReaderSdformatTest, EveryCorpusFileLibsdformatLoadsReadsTheSamePosesAndInertias) {
-  if (!std::ifstream(kCorpus + "/MANIFEST.tsv")) GTEST_SKIP() << "no corpus at " << kCorpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   std::string sdf_path;
   for (const std::string& p : CorpusModelPaths()) sdf_path += (sdf_path.empty() ? "" : ":") + p;
   setenv("SDF_PATH", sdf_path.c_str(), 1);  // libsdformat resolves plain include URIs with it.

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "massprops/model/model.h"
+#include "shared_data.h"
 
 namespace massprops {
 namespace {
@@ -528,7 +529,7 @@ TEST(SdfReaderTest, AutoInertialsAreComputedFromEachCollisionShapeAsSdformat14Do
 TEST(SdfReaderTest, InertialStatsAutoOfTheCorpusGivesFourSixKilogramCubes) {
   const std::string path =
       std::string(MASSPROPS_CORPUS_DIR) + "/sdformat/test/sdf/inertial_stats_auto.sdf";
-  if (!std::ifstream(path)) GTEST_SKIP() << "no corpus";
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/sdformat/test/sdf/inertial_stats_auto.sdf");
   const ReadResult r = ReadSdfFile(path, FixtureOptions());
   ASSERT_TRUE(r.ok()) << r.errors.front().ToString();
   ASSERT_EQ(r.models.at(0).links.size(), 4u);

@@ -243,8 +243,8 @@ struct Outcome {
 };
 
 TEST(MujocoProfileCorpusTest, PredictsMujocosDecisionOnEveryCorpusUrdf) {
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   const std::vector<test_support::ManifestRow> rows = test_support::ReadCorpusManifest("urdf");
-  if (rows.empty()) GTEST_SKIP() << "corpus not found at " << test_support::CorpusDir();
   const fs::path tmp = fs::temp_directory_path() /
                        ("massprops_mujoco_" + std::to_string(static_cast<long>(getpid())));
   fs::create_directories(tmp);

@@ -191,6 +191,59 @@ TEST(MujocoProfileTest, LinkWithoutInertialGetsMassFromItsCollisionBox) {
   EXPECT_NEAR(p.bodies[0].inertia[0], 1.0 / 600, 1e-15);
 }
 
+// A link without <inertial> whose two collision boxes are 1e-7 m cubes: MuJoCo's density 1000 gives
+// each 1000 · (1e-7)³ = 1e-18 kg, 2e-18 kg in all, below mjMINVAL = 1e-15: mjCBody::GeomFrame
+// cannot place the center of mass of several geoms.
+TEST(MujocoProfileTest, TinyCollisionGeomsGiveTooLittleMassForTheirCenter) {
+  auto speck = [](const std::string& z) {
+    return "<collision><origin xyz=\"0 0 " + z +
+           "\"/><geometry><box size=\"1e-7 1e-7 1e-7\"/></geometry></collision>";
+  };
+  const MujocoPrediction p = Predict(Robot("<link name=\"specks\">" + speck("0") + speck("1") +
+                                           "</link>" + Joint("j", "revolute", "base", "specks")));
+  ASSERT_FALSE(p.errors.empty());
+  EXPECT_EQ(p.errors[0].rule, "mujoco-rejects-geom-inertia");
+  EXPECT_EQ(p.errors[0].body, "specks");
+  EXPECT_EQ(p.errors[0].message, "body mass is too small, cannot compute center of mass");
+  EXPECT_NEAR(p.errors[0].mass, 2e-18, 1e-30);
+}
+
+// boundmass lifts a mass to at least its value (mju_max): with boundmass="-2" a mass of -1 stays
+// -1, and MuJoCo refuses it; with the default 0 it becomes 0 (and then is below mjMINVAL).
+TEST(MujocoProfileTest, NegativeMassThatBoundmassDoesNotLiftIsRefused) {
+  const std::string body =
+      Link("arm", Inertial(-1, 0.01, 0.01, 0.01)) + Joint("j", "revolute", "base", "arm");
+  const MujocoPrediction p = Predict(Robot(body, "<mujoco><compiler boundmass=\"-2\"/></mujoco>"));
+  ASSERT_FALSE(p.errors.empty());
+  EXPECT_EQ(p.errors[0].rule, "mujoco-rejects-negative");
+  EXPECT_EQ(p.errors[0].message, "mass and inertia cannot be negative");
+  const MujocoPrediction lifted = Predict(Robot(body));
+  ASSERT_FALSE(lifted.errors.empty());
+  EXPECT_EQ(lifted.errors[0].rule, "mujoco-rejects-below-minval");
+}
+
+// A moving link without <inertial> whose collision is a mesh: MuJoCo computes its mass from the
+// mesh's volume, which the prediction does not read; `check --target mujoco` says so.
+TEST(MujocoProfileTest, InertiaFromAMeshIsSaidToBeUnpredicted) {
+  const std::string path = ::testing::TempDir() + "/massprops_target_mesh.urdf";
+  {
+    std::ofstream out(path);
+    out << Robot(
+               "<link name=\"shell\"><collision><geometry><mesh filename=\"shell.stl\"/>"
+               "</geometry></collision></link>" +
+               Joint("j", "revolute", "base", "shell"))
+        << "\n";
+  }
+  const test_support::ToolRun run =
+      test_support::RunTool("check --target mujoco --no-geometry '" + path + "'");
+  EXPECT_NE(run.output.find("MuJoCo's decision cannot be fully predicted: link 'shell' takes its "
+                            "inertia from mesh geometry"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("[mujoco-not-predicted]"), std::string::npos) << run.output;
+  std::remove(path.c_str());
+}
+
 // fix --target mujoco: the repaired model is accepted (triangle: nearest valid inertia; below
 // mjMINVAL: a negligible mass and moment floor).
 TEST(MujocoProfileTest, RepairsMakeMujocoAcceptTheModel) {

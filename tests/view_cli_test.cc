@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "shared_data.h"
 #include "tool_runner.h"
 
 namespace {
@@ -112,6 +113,7 @@ TEST(ViewCliTest, PageHoldsOneScriptAndTheEquivalentBoxOfEachLink) {
 }
 
 TEST(ViewCliTest, MeshesAreDrawnFromTheirFilesAndDecimated) {
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus");
   const std::string model =
       "'" + kCorpus +
       "/example-robot-data/robots/double_pendulum_description/urdf/double_pendulum.urdf'";

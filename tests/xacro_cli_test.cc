@@ -10,9 +10,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+
+#include "shared_data.h"
 
 namespace {
 
@@ -65,9 +68,7 @@ bool Contains(const std::string& text, const std::string& part) {
 
 class XacroCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (!fs::exists(kXacroDir / "pmb2" / "expanded.urdf")) GTEST_SKIP() << "no " << kXacroDir;
-  }
+  void SetUp() override { MASSPROPS_SKIP_WITHOUT_SHARED("xacro/pmb2/expanded.urdf"); }
 };
 
 // pmb2's antennas (urdf/objects/antenna.urdf.xacro lines 26-28, one macro for both antennas)
@@ -151,7 +152,7 @@ class XacroFixTest : public XacroCliTest {
  protected:
   void SetUp() override {
     XacroCliTest::SetUp();
-    if (IsSkipped()) return;
+    if (IsSkipped() || HasFatalFailure()) return;
     copy_ = fs::temp_directory_path() / ("massprops_xacro_fix_" + std::to_string(getpid()));
     fs::remove_all(copy_);
     fs::copy(kXacroDir / "pmb2", copy_, fs::copy_options::recursive);
@@ -260,10 +261,9 @@ TEST_F(XacroCliTest, FixEditsAYamlValueThatOnlyTheRepairedLinksRead) {
 
 // A package written here: legs share the literal ixx="0.01" and take izz as a macro argument; the
 // body's inertia is its own literal; the arm's ixx and iyy are its own literals but its izz is
-// computed (m·5), so no part of its repair is written.
-TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("massprops_xacro_refusal_" + std::to_string(getpid()));
+// computed (m·5). Its source robot.urdf.xacro, and robot.urdf, the expansion ROS's xacro gives
+// (written by hand), in `dir`; returns the source.
+std::string WriteSmallPackage(const fs::path& dir) {
   fs::create_directories(dir);
   const std::string source = R"(<?xml version="1.0"?>
 <robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
@@ -324,6 +324,15 @@ TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
   </link>
 </robot>
 )";
+  return source;
+}
+
+// The package of WriteSmallPackage: the legs' shared literal and the arm's computed izz leave
+// their repairs to a person; the body's own literal is edited.
+TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("massprops_xacro_refusal_" + std::to_string(getpid()));
+  const std::string source = WriteSmallPackage(dir);
   // right_leg: 0.01 + 0.01 < 0.5 and body: 1 + 1 < 5 break the triangle inequality.
   const RunResult r =
       RunTool("fix --expanded robot.urdf --source-root . --no-geometry --in-place", dir.string());
@@ -353,6 +362,51 @@ TEST(XacroFixRefusalTest, SharedParameterAndComputedValuesAreLeftForAPerson) {
     }
   }
   EXPECT_TRUE(Contains(r.out, "re-expansion could not be verified")) << r.out;
+  fs::remove_all(dir);
+}
+
+// `trace` in its three formats on the package of WriteSmallPackage (no ../shared needed). Counted
+// by hand from the source: 4 links, each with a mass and 6 inertia numbers and no origin, 28
+// numbers; the arm's izz = m·5 is computed at the call on line 27 (m = 1), every other number has
+// one place: a literal (lines 6, 7, 15, 16, 23) or an argument (izz on lines 11 and 12, the arm's
+// mass m on line 27).
+TEST(XacroTraceCliTest, EveryFormatOfTraceOnAPackageWrittenHere) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("massprops_xacro_trace_" + std::to_string(getpid()));
+  WriteSmallPackage(dir);
+  const std::string trace = "trace --expanded robot.urdf --source-root . --format ";
+  const RunResult summary = RunTool(trace + "summary", dir.string());
+  ASSERT_EQ(summary.exit_code, 0) << summary.err;
+  EXPECT_EQ(summary.out, "28\t27\t0\t1\t0\n");  // numbers, one place, several, computed, none
+
+  const RunResult text = RunTool(trace + "text", dir.string());
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  const std::vector<std::string> lines = Lines(text.out);
+  ASSERT_EQ(lines.size(), 28u) << text.out;
+  // robot.urdf: the arm's <inertia> is on line 24, the right leg's on line 12.
+  EXPECT_TRUE(
+      Contains(text.out, "arm inertia izz 5 (generated 24): robot.urdf.xacro:27 computed (m=1)"))
+      << text.out;
+  EXPECT_TRUE(
+      Contains(text.out, "right_leg inertia izz 0.5 (generated 12): robot.urdf.xacro:12 parameter"))
+      << text.out;
+
+  const RunResult json_run = RunTool(trace + "json", dir.string());
+  ASSERT_EQ(json_run.exit_code, 0) << json_run.err;
+  const json data = json::parse(json_run.out);
+  ASSERT_EQ(data["numbers"].size(), 28u);
+  std::map<std::string, int> how;
+  for (const json& number : data["numbers"]) {
+    ASSERT_EQ(number["places"].size(), 1u) << number.dump();
+    ++how[number["places"][0]["how"].get<std::string>()];
+  }
+  // Literals: 2 legs × 6 (mass, ixx..iyz) + the body's 7 + the arm's 5 = 24; arguments: the
+  // legs' izz and the arm's mass = 3; computed: the arm's izz = 1.
+  EXPECT_EQ(how, (std::map<std::string, int>{{"computed", 1}, {"literal", 24}, {"parameter", 3}}));
+  const json& left_mass = data["numbers"][0];
+  EXPECT_EQ(left_mass["link"], "left_leg");
+  EXPECT_EQ(left_mass["generated_line"], 5);
+  EXPECT_EQ(left_mass["places"][0]["line"], 6);
   fs::remove_all(dir);
 }
 

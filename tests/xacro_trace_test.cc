@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "shared_data.h"
+
 namespace massprops {
 namespace {
 
@@ -44,7 +46,7 @@ XacroTrace TracePackage(const std::string& package) {
 }
 
 TEST(XacroTraceTest, EveryRowOfProvenanceIsTracedToItsFileLineAndHow) {
-  if (!fs::exists(kXacroDir / "provenance.tsv")) GTEST_SKIP() << "no " << kXacroDir;
+  MASSPROPS_SKIP_WITHOUT_SHARED("xacro/provenance.tsv");
   std::ifstream in(kXacroDir / "provenance.tsv");
   std::string line;
   std::getline(in, line);  // header
@@ -78,7 +80,7 @@ TEST(XacroTraceTest, EveryRowOfProvenanceIsTracedToItsFileLineAndHow) {
 }
 
 TEST(XacroTraceTest, EveryInertialNumberOfEveryPackageIsReadAndAnsweredInTheVocabulary) {
-  if (!fs::exists(kXacroDir / "provenance.tsv")) GTEST_SKIP() << "no " << kXacroDir;
+  MASSPROPS_SKIP_WITHOUT_SHARED("xacro/provenance.tsv");
   // The counts of mass value, origin xyz/rpy and inertia attributes inside each <inertial> of
   // each expanded.urdf, counted with a regular expression in Python (docs/xacro.md's table).
   const std::map<std::string, std::size_t> counts = {{"franka_fr3", 99},
@@ -104,7 +106,7 @@ TEST(XacroTraceTest, EveryInertialNumberOfEveryPackageIsReadAndAnsweredInTheVoca
 }
 
 TEST(XacroTraceTest, ComputedValuesNameTheirInputs) {
-  if (!fs::exists(kXacroDir / "turtlebot4")) GTEST_SKIP() << "no " << kXacroDir;
+  MASSPROPS_SKIP_WITHOUT_SHARED("xacro/turtlebot4");
   // rplidar.urdf.xacro:34 calls inertial_cuboid with mass="0.17", y = 10 cm, z = 6 cm:
   // ixx = m (y² + z²) / 12 = 0.17 · 0.0136 / 12 (common_properties.urdf.xacro line 9).
   const XacroTrace trace = TracePackage("turtlebot4");

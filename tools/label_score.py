@@ -30,6 +30,9 @@ SHARED = os.path.join(ROOT, "..", "shared")
 EXACT = {"inertia-not-physical", "mass-not-positive", "inertia-not-finite", "inertial-unreadable",
          "read-warning", "inertia-near-boundary"}
 PHYSICS_ERRORS = set()  # (file, link) of every per-link inertia-not-physical error seen
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+import shared_data  # noqa: E402  (tests/shared_data.py: a missing ../shared skips, exit 77)
+
 CORPUS_MODEL_PATHS = ["gazebo_models", "sdformat/test/integration/model",
                       "gz-sim/test/worlds/models", "example-robot-data/robots"]
 
@@ -148,6 +151,8 @@ def main():
         SHARED = os.path.abspath(args.shared)
     tool = os.path.abspath(args.tool)
     extra = args.extra_args.split()
+    shared_data.check(SHARED, (["corpus/MANIFEST.tsv"] if args.set in ("corpus", "all") else []) +
+                      (["labelled"] if args.set in ("labelled", "all") or args.meshes else []))
     results = {}
     if args.set in ("corpus", "all"):
         rows = read_rows(os.path.join(ROOT, "testdata", "labels", "warnings.tsv"))

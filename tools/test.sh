@@ -8,6 +8,8 @@
 #                    as many at once as there are cores. MASSPROPS_FUZZ_SECONDS: the time per
 #                    target.
 # Set MASSPROPS_SKIP_SANITIZERS=1 to run only the first (no sanitizer build, no fuzzing).
+# The tests that read ../shared (the corpus beside the checkout) skip without it and fail where it
+# is present but incomplete (tests/shared_data.py); the last line says how many were skipped.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=$(nproc)
@@ -39,14 +41,31 @@ if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   trap '[[ -z $asan_pid ]] || kill -- -"$asan_pid" 2>/dev/null || true' EXIT
 fi
 
-(cd "$here/build" && ctest --output-on-failure -j "$jobs")
+# Each ctest pass writes its results as JUnit, whose skipped tests are counted at the end.
+junit=("$here/build/Testing/test-sh.xml")
+shared_skips() {
+  local count passes=Release
+  count=$(python3 "$here/tests/shared_data.py" --count "${junit[@]}")
+  ((${#junit[@]} == 1)) || passes="Release and sanitizer passes"
+  if ((count > 0)); then
+    echo "tools/test.sh: $count tests skipped ($passes): ../shared/corpus not found" \
+         "(docs/development.md says where the corpus comes from)"
+  else
+    echo "tools/test.sh: 0 tests skipped for a missing corpus ($passes)"
+  fi
+}
+
+(cd "$here/build" && ctest --output-on-failure -j "$jobs" --output-junit "${junit[0]}")
 
 # As users install it (docs/install.md): the .deb built, judged by lintian and run from its files
 # only, with the GitHub Action's script on it; a ROS 2 workspace built by colcon.
 bash "$here/tools/package_test.sh" -DMASSPROPS_WERROR=ON
 bash "$here/tools/colcon_test.sh" -DMASSPROPS_WERROR=ON
 
-[[ -n ${MASSPROPS_SKIP_SANITIZERS:-} ]] && exit 0
+if [[ -n ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
+  shared_skips
+  exit 0
+fi
 
 if ! wait "$asan_pid"; then
   asan_pid=
@@ -55,9 +74,10 @@ if ! wait "$asan_pid"; then
   exit 1
 fi
 asan_pid=
+junit+=("$asan/Testing/test-sh.xml")
 (cd "$asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
-   ctest --output-on-failure -j "$jobs" -LE 'lint|sdformat')
+   ctest --output-on-failure -j "$jobs" -LE 'lint|sdformat' --output-junit "${junit[1]}")
 # Left out here, run in the Release pass: the lint, and the comparisons with libsdformat (label
 # sdformat), whose time goes to libsdformat's own allocations through ASan's allocator (61-80 s
 # each); the same corpus goes through our readers here in corpus_sdf_test and the CLI tests.
@@ -85,3 +105,4 @@ if ((${#failed[@]} > 0)); then
   echo "tools/test.sh: fuzz target(s) failed: ${failed[*]} (inputs in build-asan/artifacts/)" >&2
   exit 1
 fi
+shared_skips

@@ -9,7 +9,7 @@ import subprocess
 import pytest
 
 import massprops
-from conftest import CORPUS
+from conftest import CORPUS, need_shared
 
 
 def corpus_files():
@@ -21,6 +21,11 @@ def corpus_files():
 
 
 FILES = corpus_files()
+
+
+@pytest.fixture(autouse=True, scope="module")
+def corpus_present():
+    need_shared("corpus/MANIFEST.tsv")
 
 
 def normalized(finding):
@@ -39,12 +44,10 @@ def tool_results(tool):
     return {entry["path"]: entry for entry in document["files"]}
 
 
-@pytest.mark.skipif(not FILES, reason="../shared/corpus is not there")
 def test_corpus_has_the_files_the_manifest_lists():
     assert len(FILES) > 200
 
 
-@pytest.mark.skipif(not FILES, reason="../shared/corpus is not there")
 def test_check_gives_the_tools_findings_on_every_corpus_file(tool_results, monkeypatch):
     monkeypatch.chdir(CORPUS)  # the same working directory (configuration lookup) as the tool
     compared = findings_total = read_errors = 0

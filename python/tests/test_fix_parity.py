@@ -10,7 +10,7 @@ import subprocess
 import pytest
 
 import massprops
-from conftest import CORPUS
+from conftest import CORPUS, need_shared
 
 HEURISTIC = ["units-suspect", "products-sign-suspect", "inertia-about-origin-suspect"]
 
@@ -36,8 +36,8 @@ def tool_fix(tool, path, *options):
     return run.returncode, run.stdout
 
 
-@pytest.mark.skipif(not FILES, reason="../shared/corpus is not there")
 def test_fix_writes_what_the_tool_writes(tool):
+    need_shared("corpus/MANIFEST.tsv")
     help_text = subprocess.run([tool, "fix", "--help"], capture_output=True, text=True).stdout
     has_apply = "--apply" in help_text
     every_rule = [rule["id"] for rule in massprops.rules()]

@@ -2,22 +2,19 @@
 the same source places as `massprops check --expanded ... --source-root ... --format json`."""
 import json
 import os
-import pathlib
 import subprocess
 
 import pytest
 
 import massprops
-from conftest import SOURCE
+from conftest import XACRO, need_shared
 
-XACRO = pathlib.Path(os.environ.get("MASSPROPS_XACRO_DIR", SOURCE.parent / "shared" / "xacro"))
 PMB2 = XACRO / "pmb2"
 
 
 @pytest.fixture
 def pmb2():
-    if not (PMB2 / "expanded.urdf").is_file():
-        pytest.skip(f"no {PMB2}")
+    need_shared("xacro/pmb2/expanded.urdf")
     return PMB2
 
 

@@ -5,7 +5,10 @@ Run by ctest (tests/CMakeLists.txt) with Debian's python3, python3-selenium, chr
 chromium-driver:
 
     /usr/bin/python3 tests/browser/view_browser_test.py --tool build/massprops \
-        --testdata testdata --corpus ../shared/corpus
+        --testdata testdata --shared ../shared
+
+Without ../shared/corpus (two of the pages are corpus robots) it exits 77, which ctest reports as
+skipped, or fails where ../shared is there (tests/shared_data.py).
 
 What is checked, each against numbers worked out here, independently of the tool:
 - the page loads from a file with the network switched off, asks for nothing but itself (the
@@ -38,6 +41,9 @@ from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import shared_data  # noqa: E402  (tests/shared_data.py)
 
 ARGS = None
 
@@ -310,10 +316,12 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--tool", required=True)
     parser.add_argument("--testdata", required=True)
-    parser.add_argument("--corpus", required=True)
+    parser.add_argument("--shared", required=True, help="the shared folder (../shared)")
     parser.add_argument("--chromium", default="/usr/bin/chromium")
     parser.add_argument("--chromedriver", default="/usr/bin/chromedriver")
     ARGS, rest = parser.parse_known_args()
+    shared_data.check(ARGS.shared, ["corpus/example-robot-data/robots"])
+    ARGS.corpus = os.path.join(ARGS.shared, "corpus")
     unittest.main(argv=[sys.argv[0]] + rest, verbosity=2)
 
 
