@@ -87,8 +87,7 @@ void ReportLeftAtOrigin(RuleContext& ctx, const JudgedLink& judged, double dista
             {"box_center_x_m", box.center().x()},
             {"box_center_y_m", box.center().y()},
             {"box_center_z_m", box.center().z()}},
-           "write the part's center of mass (from CAD; the middle of its geometry, " +
-               Vec(box.center()) + ", if nothing better) in <inertial><origin xyz>");
+           "write the part's center of mass (from CAD) in <inertial><origin xyz>");
 }
 
 }  // namespace

@@ -36,10 +36,16 @@ constexpr const char* kInertiaExceedsGeometry = "inertia-exceeds-geometry";
 constexpr double kHullSlack = 1.1;
 // The same bound over the corners of primitives: they are often simpler and smaller than the
 // body (a cylinder around the motor of a longer casting), so a moment is flagged only beyond
-// twice what they allow (a body reaching sqrt(2) times farther from every axis). A part's
-// tensor written before it was turned 90° exceeds it severalfold about the axis it now lies
-// along (a 0.4 × 0.1 × 0.1 m box: (0.4² + 0.1²)/12 against (0.05² + 0.05²), 2.83 times).
-constexpr double kPrimitiveAxisSlack = 2;
+// kGeometryMargin² times what they allow: a body reaching twice farther from every axis, the
+// allowance the bounding sphere gives them too.
+constexpr double kPrimitiveAxisSlack = kGeometryMargin * kGeometryMargin;
+// Where the moments together fit the primitives (the trace within the sum of the three frame
+// axes' bounds: the part's size is right) but one moment exceeds its axis's bound, the mass sits
+// about the wrong axis: a tensor written for the part before it was turned. Then twice the bound
+// is reported (a body reaching sqrt(2) times farther from that axis): a 0.4 × 0.1 × 0.1 m box
+// turned 90° with the unrotated tensor has (0.4² + 0.1²)/12 against (0.05² + 0.05²), 2.83 times,
+// while its trace is 1/3 of the bounds' sum.
+constexpr double kTurnedAxisSlack = 2;
 
 }  // namespace
 
@@ -105,6 +111,7 @@ namespace {
 struct WorstAxis {
   double ratio = 0, moment = 0, bound = 0;
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
+  double frame_bounds = 0;  // the sum of the bounds about the three axes of the frame
 };
 
 std::optional<WorstAxis> FindWorstAxis(const LinkGeometryPoints& points, double m,
@@ -136,8 +143,9 @@ std::optional<WorstAxis> FindWorstAxis(const LinkGeometryPoints& points, double 
     const double moment = a.dot(I * a);
     const double bound = m * reach2[i];
     if (!(bound > 0)) continue;
-    if (moment / bound > worst.ratio) worst = {moment / bound, moment, bound, a};
+    if (moment / bound > worst.ratio) worst = {moment / bound, moment, bound, a, 0};
   }
+  worst.frame_bounds = m * (reach2[3] + reach2[4] + reach2[5]);
   return worst;
 }
 
@@ -178,11 +186,13 @@ bool AddPrimitiveCorners(const Geometry& g, std::vector<Eigen::Vector3d>* corner
 }
 
 // The points whose hull holds a link whose geometry is all primitives (its collision alone when
-// the collision is its envelope): nullopt when some of it is a mesh or of unknown size.
+// the collision is its envelope and its visual is of unknown size): nullopt when some of it is a
+// mesh or of unknown size.
 std::optional<LinkGeometryPoints> PrimitivePoints(const JudgedLink& judged) {
+  const bool collision_only = judged.collision_envelope && judged.bounds->partial;
   LinkGeometryPoints points;
   for (const Geometry& g : judged.link->geometries) {
-    if (judged.collision_envelope && !g.is_collision) continue;
+    if (collision_only && !g.is_collision) continue;
     if (!AddPrimitiveCorners(g, &points.corners_B)) return std::nullopt;
   }
   if (points.corners_B.empty()) return std::nullopt;
@@ -252,9 +262,13 @@ void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
   const double m = link.inertial->mass;
   const Eigen::Vector3d& c = judged.props.p_FoScm_F;
   const std::optional<WorstAxis> found = FindWorstAxis(*points, m, c, judged.props.I_SScm_F);
-  if (!found || !(found->ratio > kPrimitiveAxisSlack)) return;
+  if (!found) return;
   const WorstAxis& worst = *found;
-  const std::string geometry = judged.collision_envelope ? "collision" : judged.geometry_name;
+  const bool turned = judged.props.I_SScm_F.trace() <= worst.frame_bounds;
+  const double allowed = turned ? kTurnedAxisSlack : kPrimitiveAxisSlack;
+  if (!(worst.ratio > allowed)) return;
+  const std::string geometry =
+      judged.collision_envelope && judged.bounds->partial ? "collision" : judged.geometry_name;
   ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
            judged.who + ": about the axis " + Vec(worst.axis) + " through the center of mass " +
                Vec(c) + " the moment of inertia is " + Num(worst.moment) +
@@ -262,20 +276,22 @@ void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
                " primitives as placed (their origins' rotations applied) has at most m · "
                "(farthest corner from that axis)² = " +
                Num(worst.bound) + " kg·m² about it (ratio " + Num(worst.ratio) + ", allowed " +
-               Num(kPrimitiveAxisSlack) +
-               " for simplified geometry): an inertia written for the part before it was "
-               "turned, or for another part",
+               Num(allowed) +
+               (turned ? ": the moments together fit the part, so the mass sits about the wrong "
+                         "axis: an inertia written for the part before it was turned)"
+                       : " for simplified geometry: an inertia for a larger part, or typed in)"),
            {{"moment", worst.moment}, {"axis_bound", worst.bound}, {"ratio", worst.ratio}},
            LinkHeadline(link.name) + ": axis moment " + FormatRatio(worst.ratio) + " what its " +
-               geometry + " allows (tensor not rotated?)",
+               geometry + " allows" + (turned ? " (tensor not rotated?)" : " (typed-in inertia?)"),
            {{"moment_kg_m2", worst.moment},
             {"axis_bound_kg_m2", worst.bound},
             {"ratio", worst.ratio},
             {"axis_x", worst.axis.x()},
             {"axis_y", worst.axis.y()},
             {"axis_z", worst.axis.z()}},
-           "rotate the inertia into the link frame as the geometry is placed (R·I·Rᵀ), or "
-           "recompute it (massprops fix --from-geometry)");
+           turned ? "rotate the inertia as the geometry is placed (R·I·Rᵀ), or massprops fix "
+                    "--from-geometry"
+                  : "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
 }
 
 }  // namespace rules

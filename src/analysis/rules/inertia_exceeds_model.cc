@@ -136,8 +136,7 @@ void CheckInertiaWithinModel(RuleContext& ctx) {
               {"model_reach_m", reach},
               {"ratio", ratio},
               {"mass_kg", m}},
-             "recompute the part's inertia (from CAD, or massprops fix --from-geometry): no body "
-             "inside the model has this one");
+             "recompute the part's inertia (from CAD, or massprops fix --from-geometry)");
   }
 }
 
