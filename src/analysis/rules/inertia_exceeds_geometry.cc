@@ -46,6 +46,9 @@ constexpr double kPrimitiveAxisSlack = kGeometryMargin * kGeometryMargin;
 // turned 90° with the unrotated tensor has (0.4² + 0.1²)/12 against (0.05² + 0.05²), 2.83 times,
 // while its trace is 1/3 of the bounds' sum.
 constexpr double kTurnedAxisSlack = 2;
+// A tensor whose largest principal moment is within this factor of its smallest is the same in
+// every orientation (to the rounding of typed-in numbers): turning the part cannot explain it.
+constexpr double kAnisotropic = 1.1;
 
 }  // namespace
 
@@ -264,7 +267,10 @@ void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
   const std::optional<WorstAxis> found = FindWorstAxis(*points, m, c, judged.props.I_SScm_F);
   if (!found) return;
   const WorstAxis& worst = *found;
-  const bool turned = judged.props.I_SScm_F.trace() <= worst.frame_bounds;
+  // An isotropic tensor (a typed-in 1, 1, 1) is the same in every orientation: not a turned one.
+  const Validity moments = Analyze(judged.props.I_SScm_F);
+  const bool anisotropic = moments.moments(2) > kAnisotropic * moments.moments(0);
+  const bool turned = anisotropic && judged.props.I_SScm_F.trace() <= worst.frame_bounds;
   const double allowed = turned ? kTurnedAxisSlack : kPrimitiveAxisSlack;
   if (!(worst.ratio > allowed)) return;
   const std::string geometry =
