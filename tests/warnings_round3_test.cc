@@ -167,6 +167,14 @@ TEST(WarningsRound3Test, AnInertiaThatFitsTheWholeModelIsNotReported) {
   EXPECT_FALSE(Flags(findings, "base_link")) << Dump(findings);
 }
 
+// The same vehicle with a rotor mesh that does not resolve: the model's extent is unknown, so the
+// base is not judged by it.
+TEST(WarningsRound3Test, AModelWithGeometryOfUnknownSizeDoesNotBoundItsLinks) {
+  const std::vector<Finding> findings = Check("drone-unknown-mesh");
+  EXPECT_TRUE(Select(findings, "inertia-exceeds-model").empty()) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "base_link")) << Dump(findings);
+}
+
 // The legs carry one part's numbers; the right COM is 0.025 m off the left's mirror image,
 // allowed max(0.005, 0.02 × 0.308221) = 0.00616441 m (before: 0.0308221 m, 10% of the
 // half-diagonal). The arms differ on purpose (2 and 2.03 kg): 10% of the half-diagonal still.
