@@ -342,12 +342,15 @@ TEST(MeshAwareChecksTest, FixWithGeometryRepairsTheMeshFindingsAndTheResultCheck
 
 TEST(MeshAwareChecksTest, FixFromGeometryWithoutALinkNameReplacesEveryLinkWithGeometry) {
   // `--from-geometry` with no value, before another option or after FILE: all links. In
-  // robot.urdf, scaled_box and box_and_sphere have an inertial and usable geometry.
+  // robot.urdf, scaled_box and box_and_sphere have an inertial and usable geometry. scaled_box is
+  // a finding of check too (issue 43: its center of mass is left at its origin, 0.8 m from its
+  // mesh, while its welded neighbours carry their own mass), so its repair names that finding.
   for (const std::string& args : {"fix --from-geometry --dry-run '" + kMeshRobot + "'",
                                   "fix --dry-run '" + kMeshRobot + "' --from-geometry"}) {
     const ToolRun run = RunTool(args, true);
     EXPECT_EQ(run.exit_code, 0) << args << "\n" << run.output;
-    EXPECT_NE(run.output.find("link 'scaled_box' [--from-geometry"), std::string::npos)
+    EXPECT_NE(run.output.find("link 'scaled_box' [com-outside-geometry → from-geometry]"),
+              std::string::npos)
         << run.output;
     EXPECT_NE(run.output.find("link 'box_and_sphere' [--from-geometry"), std::string::npos)
         << run.output;

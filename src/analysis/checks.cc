@@ -132,6 +132,7 @@ const std::vector<RuleInfo>& AllRules() {
       rules::InertiaExceedsGeometryRule(),
       rules::ComOutsideGeometryRule(),
       rules::ComNotMirroredRule(),
+      rules::InertiaExceedsModelRule(),
       rules::InertiaNearBoundaryRule(),
       rules::UrdfNotLoadableRule(),
       rules::InertialUnreadableRule(),
@@ -161,6 +162,7 @@ std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options)
     for (const WeldedGroup& group : ctx.groups) CheckGroup(ctx, group);
     rules::CheckCopiedPlaceholders(ctx);
     rules::CheckMirroredPairs(ctx);
+    rules::CheckInertiaWithinModel(ctx);
   }
   std::vector<Finding>& findings = ctx.findings;
   std::stable_sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {

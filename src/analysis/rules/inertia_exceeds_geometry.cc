@@ -34,6 +34,21 @@ constexpr const char* kInertiaExceedsGeometry = "inertia-exceeds-geometry";
 // it exceeds m · max over the hull of the squared distance to its axis by more than this factor
 // (rounding of the written numbers and of float mesh vertices is far below it).
 constexpr double kHullSlack = 1.1;
+// The same bound over the corners of primitives: they are often simpler and smaller than the
+// body (a cylinder around the motor of a longer casting), so a moment is flagged only beyond
+// kGeometryMargin² times what they allow: a body reaching twice farther from every axis, the
+// allowance the bounding sphere gives them too.
+constexpr double kPrimitiveAxisSlack = kGeometryMargin * kGeometryMargin;
+// Where the moments together fit the primitives (the trace within the sum of the three frame
+// axes' bounds: the part's size is right) but one moment exceeds its axis's bound, the mass sits
+// about the wrong axis: a tensor written for the part before it was turned. Then twice the bound
+// is reported (a body reaching sqrt(2) times farther from that axis): a 0.4 × 0.1 × 0.1 m box
+// turned 90° with the unrotated tensor has (0.4² + 0.1²)/12 against (0.05² + 0.05²), 2.83 times,
+// while its trace is 1/3 of the bounds' sum.
+constexpr double kTurnedAxisSlack = 2;
+// A tensor whose largest principal moment is within this factor of its smallest is the same in
+// every orientation (to the rounding of typed-in numbers): turning the part cannot explain it.
+constexpr double kAnisotropic = 1.1;
 
 }  // namespace
 
@@ -91,21 +106,21 @@ bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged) {
   return true;
 }
 
-void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
-  if (!ctx.options.points || !judged.bounds || !judged.bounds->from_mesh ||
-      judged.bounds->partial || !judged.group_bounds || judged.group_bounds->partial) {
-    return;
-  }
-  // Judged against the group's geometry (a mass lumped from welded neighbours): not here.
-  if (!judged.group_bounds->box_B.isApprox(judged.bounds->box_B)) return;
-  const Link& link = *judged.link;
-  const std::optional<LinkGeometryPoints> points = ctx.options.points(link);
-  if (!points || points->unknown > 0 || points->meshes == 0 || points->empty()) return;
-  const double m = link.inertial->mass;
-  const Eigen::Vector3d& c = judged.props.p_FoScm_F;
-  const Eigen::Matrix3d& I = judged.props.I_SScm_F;
+namespace {
+
+// The axis through the center of mass about which the moment of inertia most exceeds what the
+// points allow, m · (farthest point from that axis)²: over the three principal axes and the
+// three axes of the link frame.
+struct WorstAxis {
+  double ratio = 0, moment = 0, bound = 0;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
+  double frame_bounds = 0;  // the sum of the bounds about the three axes of the frame
+};
+
+std::optional<WorstAxis> FindWorstAxis(const LinkGeometryPoints& points, double m,
+                                       const Eigen::Vector3d& c, const Eigen::Matrix3d& I) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(I);
-  if (eig.info() != Eigen::Success) return;
+  if (eig.info() != Eigen::Success) return std::nullopt;
   // The six axes: the principal axes and those of the frame. The farthest point from each is
   // found in one pass over the points (the points of a robot's meshes are many; one pass reads
   // them from memory once, not six times).
@@ -117,7 +132,7 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
   // About a frame axis the squared distance is the sum of two squared coordinates: r × x̂ is
   // (±0, r_z, -r_y) exactly, so |r × x̂|² = r_z² + r_y², the same number in fewer operations.
   std::array<double, 6> reach2{};
-  points->ForEachPoint([&](const Eigen::Vector3d& p) {
+  points.ForEachPoint([&](const Eigen::Vector3d& p) {
     const Eigen::Vector3d r = p - c;
     for (int i = 0; i < 3; ++i) reach2[i] = std::max(reach2[i], r.cross(axes[i]).squaredNorm());
     const double xx = r.x() * r.x(), yy = r.y() * r.y(), zz = r.z() * r.z();
@@ -125,36 +140,164 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
     reach2[4] = std::max(reach2[4], xx + zz);
     reach2[5] = std::max(reach2[5], xx + yy);
   });
-  double worst = 0, worst_moment = 0, worst_bound = 0;
-  Eigen::Vector3d worst_axis = Eigen::Vector3d::UnitX();
+  WorstAxis worst;
   for (int i = 0; i < 6; ++i) {
     const Eigen::Vector3d& a = axes[i];
     const double moment = a.dot(I * a);
     const double bound = m * reach2[i];
     if (!(bound > 0)) continue;
-    if (moment / bound > worst) {
-      worst = moment / bound;
-      worst_moment = moment;
-      worst_bound = bound;
-      worst_axis = a;
-    }
+    if (moment / bound > worst.ratio) worst = {moment / bound, moment, bound, a, 0};
   }
-  if (!(worst > kHullSlack)) return;
+  worst.frame_bounds = m * (reach2[3] + reach2[4] + reach2[5]);
+  return worst;
+}
+
+// The corners of a primitive's own box (its extent along its own axes), posed in the link frame
+// by its origin: their convex hull holds the primitive whatever its orientation (a box turned
+// 90° by its <origin rpy> is the box as placed). False for a mesh, an unknown type or a size
+// that is not finite and non-negative.
+bool AddPrimitiveCorners(const Geometry& g, std::vector<Eigen::Vector3d>* corners) {
+  Eigen::Vector3d h;
+  switch (g.type) {
+    case Geometry::Type::kBox:
+      h = 0.5 * g.size;
+      break;
+    case Geometry::Type::kCylinder:
+      h = Eigen::Vector3d(g.radius, g.radius, 0.5 * g.length);
+      break;
+    case Geometry::Type::kCapsule:
+      h = Eigen::Vector3d(g.radius, g.radius, 0.5 * g.length + g.radius);
+      break;
+    case Geometry::Type::kSphere:
+      h = Eigen::Vector3d::Constant(g.radius);
+      break;
+    case Geometry::Type::kEllipsoid:
+      h = g.radii;
+      break;
+    default:
+      return false;
+  }
+  if (!h.allFinite() || (h.array() < 0).any() || !g.X_BG.p_AB.allFinite() ||
+      !g.X_BG.R_AB.allFinite()) {
+    return false;
+  }
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d s((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
+    corners->push_back(g.X_BG.p_AB + g.X_BG.R_AB * s.cwiseProduct(h));
+  }
+  return true;
+}
+
+// The points whose hull holds a link whose geometry is all primitives (its collision alone when
+// the collision is its envelope and its visual is of unknown size): nullopt when some of it is a
+// mesh or of unknown size.
+std::optional<LinkGeometryPoints> PrimitivePoints(const JudgedLink& judged) {
+  const bool collision_only = judged.collision_envelope && judged.bounds->partial;
+  LinkGeometryPoints points;
+  for (const Geometry& g : judged.link->geometries) {
+    if (collision_only && !g.is_collision) continue;
+    if (!AddPrimitiveCorners(g, &points.corners_B)) return std::nullopt;
+  }
+  if (points.corners_B.empty()) return std::nullopt;
+  points.count = points.corners_B.size();
+  return points;
+}
+
+// A welded part whose inertia is less than kMadeUpInertiaShare of its welded group's central
+// inertia changes nothing the group does (a 15 g sensor tube on an airframe): its numbers are
+// not judged axis by axis. A link alone in its group always weighs.
+bool WeighsInItsGroup(const RuleContext& ctx, const JudgedLink& judged) {
+  const WeldedGroup& group = ctx.GroupOf(judged.index);
+  if (group.links.size() < 2) return true;
+  const CompositeInertia composite = CalcCompositeInertia(ctx.model, group);
+  const double total = composite.I_SScm_R.trace();
+  if (!std::isfinite(total) || !(total > 0)) return true;
+  return judged.props.I_SScm_F.trace() >= kMadeUpInertiaShare * total;
+}
+
+}  // namespace
+
+void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
+  if (!judged.bounds || !judged.group_bounds || judged.group_bounds->partial) return;
+  // Judged against the group's geometry (a mass lumped from welded neighbours): not here.
+  if (!judged.group_bounds->box_B.isApprox(judged.bounds->box_B)) return;
+  if (!judged.bounds->from_mesh) {
+    CheckInertiaFitsPrimitives(ctx, judged);
+    return;
+  }
+  if (!ctx.options.points || judged.bounds->partial) return;
+  const Link& link = *judged.link;
+  const std::optional<LinkGeometryPoints> points = ctx.options.points(link);
+  if (!points || points->unknown > 0 || points->meshes == 0 || points->empty()) return;
+  const double m = link.inertial->mass;
+  const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+  const std::optional<WorstAxis> found = FindWorstAxis(*points, m, c, judged.props.I_SScm_F);
+  if (!found || !(found->ratio > kHullSlack)) return;
+  const WorstAxis& worst = *found;
   ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
            judged.who + ": no mass distribution inside the convex hull of its " +
                judged.geometry_name + " (" + std::to_string(points->meshes) + " mesh" +
                (points->meshes == 1 ? "" : "es") + ", " + std::to_string(points->count) +
-               " points) has this inertia: about the axis " + Vec(worst_axis) +
-               " through the center of mass " + Vec(c) + " the moment is " + Num(worst_moment) +
+               " points) has this inertia: about the axis " + Vec(worst.axis) +
+               " through the center of mass " + Vec(c) + " the moment is " + Num(worst.moment) +
                " kg·m², but the hull allows at most m · (farthest point from that axis)² = " +
-               Num(worst_bound) + " kg·m² (ratio " + Num(worst) +
+               Num(worst.bound) + " kg·m² (ratio " + Num(worst.ratio) +
                "): the mass was probably changed without its inertia, or the inertia comes from "
                "another part",
-           {{"moment", worst_moment}, {"hull_bound", worst_bound}, {"ratio", worst}},
-           LinkHeadline(link.name) + ": inertia " + FormatRatio(worst) + " too large for its " +
+           {{"moment", worst.moment}, {"hull_bound", worst.bound}, {"ratio", worst.ratio}},
+           LinkHeadline(link.name) + ": inertia " + FormatRatio(worst.ratio) + " too large for its " +
                judged.geometry_name + " hull (mass changed?)",
-           {{"moment_kg_m2", worst_moment}, {"hull_bound_kg_m2", worst_bound}, {"ratio", worst}},
+           {{"moment_kg_m2", worst.moment},
+            {"hull_bound_kg_m2", worst.bound},
+            {"ratio", worst.ratio}},
            "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
+}
+
+void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
+  if (judged.bounds->marker || (judged.bounds->partial && !judged.collision_envelope)) return;
+  // A stub around one joint of a body that reaches to the next (a motor's cylinder on a link
+  // whose child joint is 10 cm away) is not the body's envelope.
+  if (!ctx.JointsWithin(judged.index, *judged.bounds)) return;
+  if (!WeighsInItsGroup(ctx, judged)) return;
+  const std::optional<LinkGeometryPoints> points = PrimitivePoints(judged);
+  if (!points) return;
+  const Link& link = *judged.link;
+  const double m = link.inertial->mass;
+  const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+  const std::optional<WorstAxis> found = FindWorstAxis(*points, m, c, judged.props.I_SScm_F);
+  if (!found) return;
+  const WorstAxis& worst = *found;
+  // An isotropic tensor (a typed-in 1, 1, 1) is the same in every orientation: not a turned one.
+  const Validity moments = Analyze(judged.props.I_SScm_F);
+  const bool anisotropic = moments.moments(2) > kAnisotropic * moments.moments(0);
+  const bool turned = anisotropic && judged.props.I_SScm_F.trace() <= worst.frame_bounds;
+  const double allowed = turned ? kTurnedAxisSlack : kPrimitiveAxisSlack;
+  if (!(worst.ratio > allowed)) return;
+  const std::string geometry =
+      judged.collision_envelope && judged.bounds->partial ? "collision" : judged.geometry_name;
+  ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
+           judged.who + ": about the axis " + Vec(worst.axis) + " through the center of mass " +
+               Vec(c) + " the moment of inertia is " + Num(worst.moment) +
+               " kg·m², but a body inside the " + geometry +
+               " primitives as placed (their origins' rotations applied) has at most m · "
+               "(farthest corner from that axis)² = " +
+               Num(worst.bound) + " kg·m² about it (ratio " + Num(worst.ratio) + ", allowed " +
+               Num(allowed) +
+               (turned ? ": the moments together fit the part, so the mass sits about the wrong "
+                         "axis: an inertia written for the part before it was turned)"
+                       : " for simplified geometry: an inertia for a larger part, or typed in)"),
+           {{"moment", worst.moment}, {"axis_bound", worst.bound}, {"ratio", worst.ratio}},
+           LinkHeadline(link.name) + ": axis moment " + FormatRatio(worst.ratio) + " what its " +
+               geometry + " allows" + (turned ? " (tensor not rotated?)" : " (typed-in inertia?)"),
+           {{"moment_kg_m2", worst.moment},
+            {"axis_bound_kg_m2", worst.bound},
+            {"ratio", worst.ratio},
+            {"axis_x", worst.axis.x()},
+            {"axis_y", worst.axis.y()},
+            {"axis_z", worst.axis.z()}},
+           turned ? "rotate the inertia as the geometry is placed (R·I·Rᵀ), or massprops fix "
+                    "--from-geometry"
+                  : "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
 }
 
 }  // namespace rules

@@ -188,13 +188,14 @@ class RuleContext {
   // For an invalid member of a welded group: whether the group is valid as a whole.
   std::string GroupNote(int link_index) const;
 
+  // Whether every joint to a child of link `link_index` lies within kGeometryMargin of `bounds`.
+  bool JointsWithin(int link_index, const GeometryBounds& bounds) const;
+
  private:
   void BuildJointTree();
   // The severity of `rule` after the overrides, or nullopt when the rule is off.
   std::optional<Severity> SeverityOf(const std::string& rule) const;
   bool Enabled(const std::string& rule, const Link& link) const;
-  // Whether every joint to a child of link `link_index` lies within kGeometryMargin of `bounds`.
-  bool JointsWithin(int link_index, const GeometryBounds& bounds) const;
   // The union of the known geometry of every link of `link_index`'s welded group, in that link's
   // frame, starting from the link's own `bounds`.
   std::optional<GeometryBounds> GroupBounds(int link_index, const GeometryBounds& bounds) const;

@@ -65,8 +65,11 @@ bool CheckMadeUpInertia(RuleContext& ctx, const JudgedLink& judged);
 // inertia-about-origin-suspect where the numbers fit as the inertia about the link origin;
 // returns whether either was flagged.
 bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged);
-// inertia-exceeds-geometry by the convex hull of the link's meshes.
+// inertia-exceeds-geometry by the convex hull of the link's meshes, or, for a link whose geometry
+// is all primitives, axis by axis by the corners of the primitives as placed
+// (CheckInertiaFitsPrimitives).
 void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged);
+void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged);
 // com-outside-geometry.
 void CheckComInsideGeometry(RuleContext& ctx, const JudgedLink& judged);
 

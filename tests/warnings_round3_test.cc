@@ -1,0 +1,196 @@
+// The rule changes of issue 43 (warnings, third round), each on a fixture of
+// testdata/check/round3/ whose numbers are worked out by hand in its comment: a welded part's
+// center of mass left at its frame's origin (com-outside-geometry), a tensor written for the part
+// before it was turned (inertia-exceeds-geometry, axis by axis over the primitives as placed), an
+// inertia no body inside the whole model can have (inertia-exceeds-model), and mirror twins that
+// carry the same numbers but whose centers of mass do not mirror (com-not-mirrored); and the
+// look-alikes of each, which stay quiet.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "massprops/analysis/checks.h"
+#include "massprops/analysis/geometry_checks.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/mesh/mesh_loader.h"
+
+namespace massprops {
+namespace {
+
+const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/round3/";
+
+// Checks the fixture as `massprops check` does by default.
+std::vector<Finding> Check(const std::string& name) {
+  const std::string file = kDir + name + ".urdf";
+  const ReadResult read = ReadModelFile(file);
+  EXPECT_TRUE(read.ok()) << file;
+  if (read.models.empty()) return {};
+  static MeshCache cache;
+  MeshResolveOptions resolve;
+  resolve.model_file = file;
+  resolve.use_environment = false;
+  resolve.cache = &cache;
+  CheckOptions options;
+  options.box = MakeLinkBoxFunction(resolve);
+  options.points = MakeLinkPointsFunction(resolve);
+  options.closed_mesh = MakeClosedMeshShapeFunction(resolve);
+  return CheckModel(read.models[0], options);
+}
+
+std::vector<Finding> Select(const std::vector<Finding>& findings, const std::string& rule) {
+  std::vector<Finding> out;
+  for (const Finding& f : findings) {
+    if (f.rule == rule) out.push_back(f);
+  }
+  return out;
+}
+
+double ValueOf(const Finding& f, const std::string& name) {
+  for (const auto& [key, value] : f.values) {
+    if (key == name) return value;
+  }
+  ADD_FAILURE() << "no value " << name << " in " << f.message;
+  return NAN;
+}
+
+double EvidenceOf(const Finding& f, const std::string& name) {
+  for (const auto& [key, value] : f.evidence) {
+    if (key == name) return value;
+  }
+  ADD_FAILURE() << "no evidence " << name << " in " << f.headline;
+  return NAN;
+}
+
+std::string Dump(const std::vector<Finding>& findings) {
+  std::string text;
+  for (const Finding& f : findings) text += "  [" + f.rule + "] " + f.message + "\n";
+  return text;
+}
+
+bool Flags(const std::vector<Finding>& findings, const std::string& link) {
+  return std::any_of(findings.begin(), findings.end(),
+                     [&](const Finding& f) { return f.link == link && f.severity != Severity::kNote; });
+}
+
+// Every headline a whole sentence of at most 110 characters, without an ellipsis.
+void ExpectReadableHeadlines(const std::vector<Finding>& findings) {
+  for (const Finding& f : findings) {
+    EXPECT_LE(f.headline.size(), 110u) << f.headline;
+    EXPECT_EQ(f.headline.find("…"), std::string::npos) << f.headline;
+  }
+}
+
+// 'front_cover': its box spans x 0.11..0.13 m, its COM is (0, 0, 0): 0.11 m outside, allowed
+// max(0.01, 0.25 × 0.5 × sqrt(0.0504)) = 0.0280624 m. The chassis (3 kg) carries its own mass,
+// so the origin inside the chassis box is no lumped mass.
+TEST(WarningsRound3Test, AWeldedCoverWhoseCenterOfMassWasLeftAtItsOriginIsReported) {
+  const std::vector<Finding> findings = Check("com-left-at-origin");
+  const std::vector<Finding> com = Select(findings, "com-outside-geometry");
+  ASSERT_EQ(com.size(), 1u) << Dump(findings);
+  EXPECT_EQ(com[0].link, "front_cover");
+  EXPECT_NEAR(ValueOf(com[0], "distance"), 0.11, 1e-12);
+  EXPECT_NEAR(ValueOf(com[0], "allowed"), 0.25 * 0.5 * std::sqrt(0.0504), 1e-12);
+  EXPECT_NEAR(EvidenceOf(com[0], "box_center_x_m"), 0.12, 1e-12);
+  ExpectReadableHeadlines(com);
+}
+
+// The look-alikes: a COM written at the part's middle; a sensor frame's COM outside its 8 mm
+// visual marker; a 5 kg ballast (more than the 3.85 kg of the rest of its group) whose COM sits
+// at the origin, inside the chassis: the group's mass lumped on one link.
+TEST(WarningsRound3Test, ACenterOfMassOutsideAMarkerOrLumpedFromWeldedNeighboursIsNotReported) {
+  const std::vector<Finding> findings = Check("com-left-at-origin");
+  EXPECT_FALSE(Flags(findings, "rear_cover")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "imu_frame")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "ballast")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "chassis")) << Dump(findings);
+}
+
+// 'beam': the box 0.4 × 0.1 × 0.1 m turned by rpy (0, 0, 1.5708) lies along y; from the y axis
+// through the COM (0, 0, 0) its corners (x, y, z) = (a cos θ − b sin θ, a sin θ + b cos θ, ±0.05),
+// a = ±0.2, b = ±0.05, are at most x² + z² = 0.005 m² away (θ = 1.5708 is not quite π/2: the
+// corners are computed from it), so a body inside has iyy <= m · 0.005; the unrotated tensor's
+// iyy = 0.0141667 is 2.8333 times that.
+TEST(WarningsRound3Test, ATensorWrittenBeforeThePartWasTurnedIsReportedAxisByAxis) {
+  const std::vector<Finding> findings = Check("tensor-not-rotated");
+  const std::vector<Finding> exceeds = Select(findings, "inertia-exceeds-geometry");
+  ASSERT_EQ(exceeds.size(), 1u) << Dump(findings);
+  EXPECT_EQ(exceeds[0].link, "beam");
+  const double c = std::cos(1.5708), s = std::sin(1.5708);
+  double reach2 = 0;  // the farthest corner from the y axis through (0, 0, 0)
+  for (const double a : {-0.2, 0.2}) {
+    for (const double b : {-0.05, 0.05}) reach2 = std::max(reach2, std::pow(c * a - s * b, 2));
+  }
+  reach2 += 0.05 * 0.05;
+  EXPECT_NEAR(reach2, 0.005, 1e-4);
+  EXPECT_NEAR(ValueOf(exceeds[0], "moment"), 0.0141667, 1e-9);
+  EXPECT_NEAR(ValueOf(exceeds[0], "axis_bound"), 1.0 * reach2, 1e-12);
+  EXPECT_NEAR(ValueOf(exceeds[0], "ratio"), 0.0141667 / reach2, 1e-9);
+  EXPECT_NEAR(ValueOf(exceeds[0], "ratio"), 2.8333, 1e-3);
+  ExpectReadableHeadlines(exceeds);
+}
+
+// The look-alikes: the same box with the tensor rotated with it (each moment 1/3 of its axis
+// bound), a thin ring whose mass is on its rim (0.5 of the bound about z, 0.499 about x), and a
+// hub larger than its disc (3.84 times the bound about x, but its trace 0.036 exceeds the bounds'
+// sum 0.01125: a larger body, allowed 4 times, not a turned one).
+TEST(WarningsRound3Test, APartThatFitsItsGeometryAsPlacedIsNotReported) {
+  const std::vector<Finding> findings = Check("tensor-not-rotated");
+  EXPECT_FALSE(Flags(findings, "beam_ok")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "ring")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "hub")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "base")) << Dump(findings);
+}
+
+// 'base_link': k = sqrt(0.48 / 2) = 0.489898 m; the farthest corner of the model from its COM is
+// (0.26, 0.06, 0.045), R = sqrt(0.073225) = 0.270601 m; k / R = 1.81041 > 1.5.
+TEST(WarningsRound3Test, AnInertiaNoBodyInsideTheWholeModelCanHaveIsReported) {
+  const std::vector<Finding> findings = Check("inertia-exceeds-model");
+  const std::vector<Finding> model = Select(findings, "inertia-exceeds-model");
+  ASSERT_EQ(model.size(), 1u) << Dump(findings);
+  EXPECT_EQ(model[0].link, "base_link");
+  EXPECT_NEAR(ValueOf(model[0], "radius_of_gyration"), std::sqrt(0.24), 1e-12);
+  EXPECT_NEAR(ValueOf(model[0], "model_reach"), std::sqrt(0.073225), 1e-12);
+  EXPECT_NEAR(ValueOf(model[0], "ratio"), std::sqrt(0.24) / std::sqrt(0.073225), 1e-9);
+  EXPECT_NEAR(EvidenceOf(model[0], "radius_of_gyration_m"), 0.489898, 1e-6);
+  // The rules judging the link by itself allowed it.
+  EXPECT_TRUE(Select(findings, "units-suspect").empty()) << Dump(findings);
+  ExpectReadableHeadlines(model);
+}
+
+// The same vehicle with k = sqrt(0.012) = 0.109545 m on its base, 0.405 of R.
+TEST(WarningsRound3Test, AnInertiaThatFitsTheWholeModelIsNotReported) {
+  const std::vector<Finding> findings = Check("drone-ok");
+  EXPECT_TRUE(Select(findings, "inertia-exceeds-model").empty()) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "base_link")) << Dump(findings);
+}
+
+// The same vehicle with a rotor mesh that does not resolve: the model's extent is unknown, so the
+// base is not judged by it.
+TEST(WarningsRound3Test, AModelWithGeometryOfUnknownSizeDoesNotBoundItsLinks) {
+  const std::vector<Finding> findings = Check("drone-unknown-mesh");
+  EXPECT_TRUE(Select(findings, "inertia-exceeds-model").empty()) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "base_link")) << Dump(findings);
+}
+
+// The legs carry one part's numbers; the right COM is 0.025 m off the left's mirror image,
+// allowed max(0.005, 0.02 × 0.308221) = 0.00616441 m (before: 0.0308221 m, 10% of the
+// half-diagonal). The arms differ on purpose (2 and 2.03 kg): 10% of the half-diagonal still.
+TEST(WarningsRound3Test, MirrorTwinsCarryingTheSameNumbersMustMirrorToTheRounding) {
+  const std::vector<Finding> findings = Check("mirror-copy");
+  const std::vector<Finding> mirror = Select(findings, "com-not-mirrored");
+  ASSERT_EQ(mirror.size(), 1u) << Dump(findings);
+  EXPECT_EQ(mirror[0].link, "right_leg");
+  EXPECT_NEAR(ValueOf(mirror[0], "com_miss"), 0.025, 1e-12);
+  EXPECT_NEAR(ValueOf(mirror[0], "expected_com_x"), 0.0, 1e-12);
+  EXPECT_NEAR(ValueOf(mirror[0], "expected_com_y"), -0.3, 1e-12);
+  EXPECT_NEAR(ValueOf(mirror[0], "expected_com_z"), -0.6, 1e-12);
+  EXPECT_FALSE(Flags(findings, "right_arm")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "left_arm")) << Dump(findings);
+  ExpectReadableHeadlines(mirror);
+}
+
+}  // namespace
+}  // namespace massprops
