@@ -191,11 +191,13 @@ std::string FormatEvidenceValue(std::string_view name, double value) {
 std::string EvidenceLabel(std::string_view name) {
   const std::size_t suffix = UnitOf(name).second;
   std::string label(name == "ratio" ? name : name.substr(0, name.size() - suffix));
-  // "k_over_e" → "k/e".
-  for (std::size_t at; (at = label.find("_over_")) != std::string::npos;) {
-    label.replace(at, 6, "/");
-  }
   std::replace(label.begin(), label.end(), '_', ' ');
+  // The center of mass is "COM" as robot engineers write it: "com x" → "COM x".
+  for (std::size_t at = label.find("com"); at != std::string::npos; at = label.find("com", at + 3)) {
+    const bool starts = at == 0 || label[at - 1] == ' ';
+    const bool ends = at + 3 == label.size() || label[at + 3] == ' ';
+    if (starts && ends) label.replace(at, 3, "COM");
+  }
   return label;
 }
 
@@ -219,8 +221,67 @@ std::string FormatEvidence(const std::vector<std::pair<std::string, double>>& ev
   return out;
 }
 
-const std::string& HeadlineOf(const Finding& finding) {
-  return finding.headline.empty() ? finding.message : finding.headline;
+std::size_t CountChars(std::string_view text) {
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+namespace {
+
+// `before` + `kind` 'NAME' + `after`, or `before` + "this " + `kind` + `after` when that is too
+// long for a headline.
+std::string NamedHeadline(std::string_view kind, std::string_view name, std::string_view after,
+                          std::string_view before) {
+  std::string named(before);
+  named.append(kind).append(" '").append(name).append("'").append(after);
+  if (CountChars(named) <= kMaxHeadlineChars) return named;
+  std::string unnamed(before);
+  unnamed.append("this ").append(kind).append(after);
+  return unnamed;
+}
+
+}  // namespace
+
+std::string LinkHeadline(std::string_view name, std::string_view after, std::string_view before) {
+  return NamedHeadline("link", name, after, before);
+}
+
+std::string ModelHeadline(std::string_view name, std::string_view after,
+                          std::string_view before) {
+  return NamedHeadline("model", name, after, before);
+}
+
+std::string FirstThatFits(std::initializer_list<std::string> sentences) {
+  std::string last;
+  for (const std::string& sentence : sentences) {
+    if (CountChars(sentence) <= kMaxHeadlineChars) return sentence;
+    last = sentence;
+  }
+  return last;
+}
+
+std::string HeadlineFromMessage(std::string_view text, std::string_view fallback) {
+  if (CountChars(text) <= kMaxHeadlineChars) return std::string(text);
+  // The leading clauses: a "; " joins two sentences that each stand alone.
+  std::size_t best = std::string_view::npos;
+  for (std::size_t at = text.find("; "); at != std::string_view::npos; at = text.find("; ", at + 2)) {
+    if (CountChars(text.substr(0, at)) > kMaxHeadlineChars) break;
+    best = at;
+  }
+  if (best != std::string_view::npos && best > 0) return std::string(text.substr(0, best));
+  // The subject before the first ": " (an element, a link, a file), then the fallback.
+  const std::size_t colon = text.find(": ");
+  if (colon != std::string_view::npos && colon > 0) {
+    std::string headline(text.substr(0, colon));
+    headline.append(": ").append(fallback);
+    if (CountChars(headline) <= kMaxHeadlineChars) return headline;
+  }
+  return std::string(fallback);
+}
+
+std::string HeadlineOf(const Finding& finding) {
+  const std::string& text = finding.headline.empty() ? finding.message : finding.headline;
+  return HeadlineFromMessage(text, "the whole message is under --explain and in JSON");
 }
 
 std::optional<std::string> RuleLongForm(std::string_view rule) {

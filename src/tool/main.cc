@@ -406,15 +406,7 @@ FileResult CheckFile(const std::string& file, const Settings& settings) {
   const ReadResult read = massprops::ReadModelFile(file, read_options);
   result.errors = read.errors;
   for (const ReadError& warning : read.warnings) {
-    Finding finding;
-    finding.rule = massprops::kReadWarningRule;
-    finding.severity = Severity::kWarning;
-    finding.location = warning.location;
-    finding.message =
-        warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
-    finding.headline = finding.message.substr(0, finding.message.find("; "));
-    finding.help = "the element was skipped: fix it so that the file reads whole";
-    result.findings.push_back(finding);
+    result.findings.push_back(massprops::ReadWarningFinding(warning));
   }
   for (Finding& finding : massprops::ReaderFindings(read, settings.options)) {
     result.findings.push_back(std::move(finding));

@@ -54,13 +54,13 @@ void CheckComInsideGeometry(RuleContext& ctx, const JudgedLink& judged) {
             {"com_z", c.z()},
             {"distance", distance},
             {"allowed", allowed}},
-           LinkHeadline(link.name) + ": center of mass " + FormatLength(distance) +
-               " outside its " + judged.geometry_name + " (mirrored part?)",
+           LinkHeadline(link.name, ": center of mass " + FormatLength(distance) + " outside its " +
+                                       judged.geometry_name + " (mirrored part?)"),
            {{"com_x_m", c.x()},
             {"com_y_m", c.y()},
             {"com_z_m", c.z()},
             {"outside_by_m", distance},
-            {"allowed_m", allowed}},
+            {"allowed_by_m", allowed}},
            "write the part's center of mass (from CAD) in <inertial><origin xyz>");
 }
 

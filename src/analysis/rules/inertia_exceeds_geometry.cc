@@ -81,12 +81,12 @@ bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged) {
             {"bound", bound},
             {"ratio", spread / bound},
             {"half_diagonal", std::sqrt(r2)}},
-           LinkHeadline(link.name) + ": inertia " + FormatRatio(spread / bound) +
-               " too large for its size (mass changed?)",
-           {{"spread_kg_m2", spread},
-            {"bound_kg_m2", bound},
+           LinkHeadline(link.name,
+                        ": inertia " + FormatRatio(spread / bound) + " too large for its size (mass changed?)"),
+           {{"polar_moment_kg_m2", spread},
+            {"max_for_its_size_kg_m2", bound},
             {"ratio", spread / bound},
-            {"reach_m", std::sqrt(r2)}},
+            {"allowed_radius_m", std::sqrt(r2)}},
            "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
   return true;
 }
@@ -151,9 +151,11 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
                "): the mass was probably changed without its inertia, or the inertia comes from "
                "another part",
            {{"moment", worst_moment}, {"hull_bound", worst_bound}, {"ratio", worst}},
-           LinkHeadline(link.name) + ": inertia " + FormatRatio(worst) + " too large for its " +
-               judged.geometry_name + " hull (mass changed?)",
-           {{"moment_kg_m2", worst_moment}, {"hull_bound_kg_m2", worst_bound}, {"ratio", worst}},
+           LinkHeadline(link.name, ": inertia " + FormatRatio(worst) + " too large for its " +
+                                       judged.geometry_name + " hull (mass changed?)"),
+           {{"worst_axis_moment_kg_m2", worst_moment},
+            {"max_for_its_hull_kg_m2", worst_bound},
+            {"ratio", worst}},
            "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
 }
 
