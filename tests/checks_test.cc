@@ -182,7 +182,7 @@ TEST(ChecksTest, InertiaNotPhysicalQuotesThePrincipalMomentsAndTheViolatedInequa
   EXPECT_TRUE(found);
   // The evidence beside the headline: 0.5 − (0.1 + 0.2) = 0.2 of the trace 0.8, 25% (by hand).
   ASSERT_EQ(f.evidence.size(), 4u);
-  EXPECT_EQ(f.evidence[3].first, "excess_percent");
+  EXPECT_EQ(f.evidence[3].first, "triangle_excess_percent");
   EXPECT_NEAR(f.evidence[3].second, 25, 1e-9);
 }
 
