@@ -111,6 +111,21 @@ TEST(FindingTextTest, LinkHeadlineSaysThisLinkWhenTheNameWouldNotFit) {
             "this model: all 3 links weigh 1000 kg/m³");
 }
 
+TEST(FindingTextTest, LinkHeadlineFirstFitKeepsTheNameWithAShorterSentence) {
+  const std::string longer = ": placeholder inertia copied onto 13 links, radius of gyration 4.3x "
+                             "the reach of its assembly";  // 93 characters
+  const std::string shorter = ": placeholder inertia on 13 links, 4.3x too wide for its assembly";
+  ASSERT_EQ(CountChars(longer), 93u);
+  ASSERT_EQ(CountChars(shorter), 65u);
+  // "link 'arm'" (10) + 93 = 103 fits.
+  EXPECT_EQ(LinkHeadlineFirstFit("arm", {longer, shorter}), "link 'arm'" + longer);
+  // A 33-character name: 6 + 33 + 1 + 93 = 133 does not; with the shorter, 105 does.
+  const std::string name = "wide_stereo_l_stereo_camera_frame";
+  EXPECT_EQ(LinkHeadlineFirstFit(name, {longer, shorter}), "link '" + name + "'" + shorter);
+  // A 50-character name fits neither (6 + 50 + 1 + 65 = 122): "this link" with the shorter.
+  EXPECT_EQ(LinkHeadlineFirstFit(std::string(50, 'n'), {longer, shorter}), "this link" + shorter);
+}
+
 TEST(FindingTextTest, FirstThatFitsTakesTheFullestSentenceThatFits) {
   const std::string twin(80, 't');
   // "link 'arm'" (10) + ": center of mass 2 cm off the mirror image of " (46) + "link '" (6) +
@@ -136,16 +151,25 @@ TEST(FindingTextTest, HeadlineFromMessageKeepsWholeClausesNeverCutsOne) {
   const std::string second(50, 's');
   EXPECT_EQ(HeadlineFromMessage(first + "; " + second + "; " + std::string(50, 'x'), "F"),
             first + "; " + second);
-  // No clause fits: the subject before the first ": " and the fallback.
-  EXPECT_EQ(HeadlineFromMessage("<mesh>: " + std::string(200, 'p'), "the file cannot be read"),
-            "<mesh>: the file cannot be read");
-  // Not even the subject fits (a 200-character element): the fallback alone.
+  // Parenthetical remarks left out keep the sentence whole: tinyxml2's error (as on the corpus's
+  // malformed files), 51 characters without its 130-character remark (181 with it).
+  const std::string remark = " (Error=XML_ERROR ErrorID=11 (0xb) Line number=17: " +
+                             std::string(78, 'v') + ")";
+  EXPECT_EQ(CountChars(remark), 130u);
+  EXPECT_EQ(HeadlineFromMessage("<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION" + remark, "F"),
+            "<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION");
+  // No clause fits: the longest lead up to a ": " that fits, and `more`.
+  EXPECT_EQ(HeadlineFromMessage("<mesh>: " + std::string(200, 'p'), "F", "more follows"),
+            "<mesh>: more follows");
+  EXPECT_EQ(HeadlineFromMessage("<joint> 'j': bad pose: " + std::string(200, 'p'), "F", "more"),
+            "<joint> 'j': bad pose: more");
+  // Not even the lead fits (a 200-character element): the fallback alone.
   EXPECT_EQ(HeadlineFromMessage(std::string(200, 'e') + ": " + std::string(20, 'p'), "fallback"),
             "fallback");
   // HeadlineOf applies it to a message too long for a headline.
   Finding f;
   f.message = "link 'a': " + std::string(300, 'z');
-  EXPECT_EQ(HeadlineOf(f), "link 'a': the whole message is under --explain and in JSON");
+  EXPECT_EQ(HeadlineOf(f), "link 'a': --explain gives the whole message");
 }
 
 TEST(FindingTextTest, EveryRuleHasALongFormFromDocsRulesMd) {

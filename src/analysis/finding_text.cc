@@ -246,6 +246,18 @@ std::string LinkHeadline(std::string_view name, std::string_view after, std::str
   return NamedHeadline("link", name, after, before);
 }
 
+std::string LinkHeadlineFirstFit(std::string_view name,
+                                 std::initializer_list<std::string> afters) {
+  std::string last;
+  for (const std::string& after : afters) {
+    std::string named = "link '";
+    named.append(name).append("'").append(after);
+    if (CountChars(named) <= kMaxHeadlineChars) return named;
+    last = after;
+  }
+  return "this link" + last;
+}
+
 std::string ModelHeadline(std::string_view name, std::string_view after,
                           std::string_view before) {
   return NamedHeadline("model", name, after, before);
@@ -260,28 +272,69 @@ std::string FirstThatFits(std::initializer_list<std::string> sentences) {
   return last;
 }
 
-std::string HeadlineFromMessage(std::string_view text, std::string_view fallback) {
+namespace {
+
+// `text` without its parenthetical remarks (" (...)", nested ones too): a sentence stays whole
+// without them. An unclosed "(" is kept with the rest.
+std::string WithoutParentheses(std::string_view text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (text.compare(i, 2, " (") == 0) {
+      int depth = 0;
+      std::size_t j = i + 1;
+      for (; j < text.size(); ++j) {
+        if (text[j] == '(') ++depth;
+        if (text[j] == ')' && --depth == 0) break;
+      }
+      if (j < text.size()) {
+        i = j + 1;
+        continue;
+      }
+    }
+    out += text[i++];
+  }
+  return out;
+}
+
+// The longest run of leading clauses of `text` (joined by "; ", each a sentence of its own) that
+// fits a headline; "" when even the first does not.
+std::string LeadingClauses(std::string_view text) {
   if (CountChars(text) <= kMaxHeadlineChars) return std::string(text);
-  // The leading clauses: a "; " joins two sentences that each stand alone.
   std::size_t best = std::string_view::npos;
-  for (std::size_t at = text.find("; "); at != std::string_view::npos; at = text.find("; ", at + 2)) {
+  for (std::size_t at = text.find("; "); at != std::string_view::npos;
+       at = text.find("; ", at + 2)) {
     if (CountChars(text.substr(0, at)) > kMaxHeadlineChars) break;
     best = at;
   }
-  if (best != std::string_view::npos && best > 0) return std::string(text.substr(0, best));
-  // The subject before the first ": " (an element, a link, a file), then the fallback.
-  const std::size_t colon = text.find(": ");
-  if (colon != std::string_view::npos && colon > 0) {
-    std::string headline(text.substr(0, colon));
-    headline.append(": ").append(fallback);
-    if (CountChars(headline) <= kMaxHeadlineChars) return headline;
+  return best == std::string_view::npos ? "" : std::string(text.substr(0, best));
+}
+
+}  // namespace
+
+std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
+                                std::string_view more) {
+  std::string headline = LeadingClauses(text);
+  if (!headline.empty()) return headline;
+  const std::string plain = WithoutParentheses(text);
+  headline = LeadingClauses(plain);
+  if (!headline.empty()) return headline;
+  // The longest lead up to a ": " (the element, the subject, what went wrong), then `more`.
+  std::size_t best = std::string_view::npos;
+  for (std::size_t at = plain.find(": "); at != std::string::npos; at = plain.find(": ", at + 2)) {
+    if (CountChars(plain.substr(0, at)) + 2 + CountChars(more) > kMaxHeadlineChars) break;
+    best = at;
+  }
+  if (best != std::string::npos && best > 0) {
+    return plain.substr(0, best) + ": " + std::string(more);
   }
   return std::string(fallback);
 }
 
 std::string HeadlineOf(const Finding& finding) {
   const std::string& text = finding.headline.empty() ? finding.message : finding.headline;
-  return HeadlineFromMessage(text, "the whole message is under --explain and in JSON");
+  return HeadlineFromMessage(text, "this finding's message is too long for a headline (--explain)",
+                             "--explain gives the whole message");
 }
 
 std::optional<std::string> RuleLongForm(std::string_view rule) {

@@ -728,13 +728,15 @@ Finding ReadWarningFinding(const ReadError& warning) {
   finding.message = ReadErrorText(warning);
   // The readers' messages say what is wrong, then "; " and what follows from it.
   finding.headline = HeadlineFromMessage(finding.message.substr(0, finding.message.find("; ")),
-                                         "this element was skipped (--explain says why)");
+                                         "an element was skipped (--explain says why)",
+                                         "skipped (--explain says why)");
   finding.help = "the element was skipped: fix it so that the file reads whole";
   return finding;
 }
 
 std::string ReadErrorHeadline(const ReadError& error) {
-  return HeadlineFromMessage(ReadErrorText(error), "the full message says what cannot be read");
+  return HeadlineFromMessage(ReadErrorText(error),
+                             "the file cannot be read: its message is too long for a headline");
 }
 
 std::string ShortenLongWords(std::string_view text, std::size_t max_word) {

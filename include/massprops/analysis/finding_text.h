@@ -64,18 +64,22 @@ std::size_t CountChars(std::string_view text);
 /// and JSON's `link` name it), however long the name.
 std::string LinkHeadline(std::string_view name, std::string_view after,
                          std::string_view before = "");
+/// "link 'NAME'" + the first of `afters` (the fullest first) with which the sentence fits; else
+/// "this link" + the last of them.
+std::string LinkHeadlineFirstFit(std::string_view name, std::initializer_list<std::string> afters);
 /// As LinkHeadline, about a model: "model 'NAME'", else "this model".
 std::string ModelHeadline(std::string_view name, std::string_view after,
                           std::string_view before = "");
 /// The first of `sentences` (whole headlines, the fullest first) that has at most
 /// kMaxHeadlineChars characters; the last one when none does (its author makes it short).
 std::string FirstThatFits(std::initializer_list<std::string> sentences);
-/// A headline made of `text` (a reader's message: "what is wrong; what follows from it"): the
-/// text itself when it fits kMaxHeadlineChars, else its leading clauses up to a "; " that fit
-/// (each clause a sentence of its own), else the part before its first ": " (the element or
-/// the subject, a sentence heading) followed by `fallback`, else `fallback` alone. Never cuts a
-/// word or a name.
-std::string HeadlineFromMessage(std::string_view text, std::string_view fallback);
+/// A headline made of `text` (a reader's message: "what is wrong; what follows from it"), never
+/// cutting a word or a name: the text itself when it fits kMaxHeadlineChars; else its leading
+/// clauses up to a "; " that fit (each clause a sentence of its own); else the same of the text
+/// without its parenthetical remarks " (...)"; else its longest lead up to a ": " (the element,
+/// the subject, what went wrong) followed by ": " and `more`; else `fallback`, a whole sentence.
+std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
+                                std::string_view more = "the full message says more");
 
 /// The finding's headline, or a headline made of its message (HeadlineFromMessage) when the
 /// rule gave none (a Finding made by other code); at most kMaxHeadlineChars characters when

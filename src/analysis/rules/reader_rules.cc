@@ -69,7 +69,7 @@ void DescribeReaderFinding(Finding& f) {
                          : f.rule == kIncludeUnresolved
                              ? "an <include> cannot be resolved (--explain says which)"
                              : "the reader's full message is under --explain";
-  f.headline = HeadlineFromMessage(f.headline, fallback);
+  f.headline = HeadlineFromMessage(f.headline, fallback, "--explain says more");
   f.evidence.clear();
   for (const auto& [name, value] : f.values) {
     const bool moment = name.size() == 3 && name[0] == 'i';

@@ -72,7 +72,8 @@ void DescribeTargetFinding(Finding& f) {
     f.help = "write the part's mass and inertia (massprops fix projects an invalid inertia)";
   } else if (f.rule == "mujoco-not-predicted") {
     f.headline = HeadlineFromMessage(
-        f.message, "MuJoCo's decision cannot be fully predicted (--explain says why)");
+        f.message, "MuJoCo's decision cannot be fully predicted (--explain says why)",
+        "--explain says more");
     f.help = "load the model in MuJoCo to know (massprops explain mujoco-not-predicted)";
   } else if (f.rule == "drake-rejects-invalid-inertia") {
     f.headline = about("Drake refuses ", ": inertia fails CouldBePhysicallyValid() (mass " +
