@@ -94,6 +94,18 @@ TEST(FindingTextTest, LinkHeadlineNamesTheLinkWhenTheSentenceFits) {
             "MuJoCo 2.2.2 refuses link 'arm': negative mass");
 }
 
+TEST(FindingTextTest, LinkHeadlineKeepsTheNameWithoutTheGuessedCauseBeforeSayingThisLink) {
+  // pr2.urdf's camera frame (42 characters): 6 + 42 + 1 + 62 = 111, one too many; without the
+  // cause guessed in parentheses (the help repeats it) 6 + 42 + 1 + 38 = 87 fits.
+  const std::string name = "narrow_stereo_gazebo_l_stereo_camera_frame";
+  const std::string after = ": inertia 8000x too large for its size (units or placeholder?)";
+  ASSERT_EQ(CountChars(name), 42u);
+  ASSERT_EQ(CountChars(after), 62u);
+  EXPECT_EQ(LinkHeadline(name, after), "link '" + name + "': inertia 8000x too large for its size");
+  // A name of 80 characters fits neither (6 + 80 + 1 + 38 = 125): "this link", cause kept.
+  EXPECT_EQ(LinkHeadline(std::string(80, 'n'), after), "this link" + after);
+}
+
 TEST(FindingTextTest, LinkHeadlineSaysThisLinkWhenTheNameWouldNotFit) {
   const std::string after = ": mass -1 kg is negative; no body has it";
   // 64 characters: 111 with the name, one too many. The sentence is kept whole, about "this

@@ -510,7 +510,7 @@ FileResult LongReadErrorResult() {
   ReadError error;
   error.location = {"r.urdf", 9, 0};
   error.element = "<mesh>";
-  // "<mesh>: " (8) + 62 = 70 characters before "; ", 70 + 2 + 80 = 152 in all.
+  // "<mesh>: " (8) + 70 = 78 characters before "; ", 78 + 2 + 80 = 160 in all.
   error.message = "filename '" + std::string(50, 'f') + "' is empty; " + std::string(80, 'w');
   result.errors.push_back(error);
   return result;
@@ -518,7 +518,7 @@ FileResult LongReadErrorResult() {
 
 TEST(ReportersPartsTest, ALongReadErrorHasAWholeHeadlineInEveryFormatAndItsTextBeside) {
   const std::string headline = "<mesh>: filename '" + std::string(50, 'f') + "' is empty";
-  ASSERT_EQ(CountChars(headline), 70u);
+  ASSERT_EQ(CountChars(headline), 78u);
   const std::string whole = headline + "; " + std::string(80, 'w');
   ReportOptions quiet;
   quiet.quiet = true;

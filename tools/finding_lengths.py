@@ -44,15 +44,18 @@ def run(tool, cwd, files, extra):
 
 def measure(text):
     lengths, under, evidence, helps = [], [], 0, 0
+    reading_error = False
     for line in text.splitlines():
         m = LINE.match(line)
         if m and m.group("rule") == "read-error":
             READ_ERRORS.append(m.group("headline"))
+            reading_error = True  # its "  = why:" line is not a finding's
         elif m:
+            reading_error = False
             lengths.append(len(m.group("headline")))
             CUT.append(ELLIPSIS in m.group("headline"))
             under.append(0)
-        elif line.startswith("  = ") and under:
+        elif line.startswith("  = ") and under and not reading_error:
             under[-1] += 1
             evidence += line.startswith("  = evidence:")
             helps += line.startswith("  = help:")

@@ -228,13 +228,18 @@ std::size_t CountChars(std::string_view text) {
 
 namespace {
 
-// `before` + `kind` 'NAME' + `after`, or `before` + "this " + `kind` + `after` when that is too
-// long for a headline.
+std::string WithoutParentheses(std::string_view text);
+
+// `before` + `kind` 'NAME' + `after` when it fits a headline; else the same without the
+// parenthetical remarks of `after` (the cause guessed, which the help repeats), the name being
+// what tells the links apart; else `before` + "this " + `kind` + `after`.
 std::string NamedHeadline(std::string_view kind, std::string_view name, std::string_view after,
                           std::string_view before) {
   std::string named(before);
-  named.append(kind).append(" '").append(name).append("'").append(after);
-  if (CountChars(named) <= kMaxHeadlineChars) return named;
+  named.append(kind).append(" '").append(name).append("'");
+  if (CountChars(named) + CountChars(after) <= kMaxHeadlineChars) return named.append(after);
+  const std::string plain = WithoutParentheses(after);
+  if (CountChars(named) + CountChars(plain) <= kMaxHeadlineChars) return named.append(plain);
   std::string unnamed(before);
   unnamed.append("this ").append(kind).append(after);
   return unnamed;
