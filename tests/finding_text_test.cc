@@ -170,11 +170,11 @@ TEST(FindingTextTest, HeadlineFromMessageKeepsWholeClausesNeverCutsOne) {
   EXPECT_EQ(CountChars(remark), 130u);
   EXPECT_EQ(HeadlineFromMessage("<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION" + remark, "F"),
             "<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION");
-  // No clause fits: the longest lead up to a ": " that fits, and `more`.
+  // No clause fits: the lead up to the first ": " (what the rest details), and `more`.
   EXPECT_EQ(HeadlineFromMessage("<mesh>: " + std::string(200, 'p'), "F", "more follows"),
             "<mesh>: more follows");
   EXPECT_EQ(HeadlineFromMessage("<joint> 'j': bad pose: " + std::string(200, 'p'), "F", "more"),
-            "<joint> 'j': bad pose: more");
+            "<joint> 'j': more");
   // Not even the lead fits (a 200-character element): the fallback alone.
   EXPECT_EQ(HeadlineFromMessage(std::string(200, 'e') + ": " + std::string(20, 'p'), "fallback"),
             "fallback");

@@ -324,14 +324,12 @@ std::string HeadlineFromMessage(std::string_view text, std::string_view fallback
   const std::string plain = WithoutParentheses(text);
   headline = LeadingClauses(plain);
   if (!headline.empty()) return headline;
-  // The longest lead up to a ": " (the element, the subject, what went wrong), then `more`.
-  std::size_t best = std::string_view::npos;
-  for (std::size_t at = plain.find(": "); at != std::string::npos; at = plain.find(": ", at + 2)) {
-    if (CountChars(plain.substr(0, at)) + 2 + CountChars(more) > kMaxHeadlineChars) break;
-    best = at;
-  }
-  if (best != std::string::npos && best > 0) {
-    return plain.substr(0, best) + ": " + std::string(more);
+  // The lead up to the first ": " (the element or the subject: what the rest details), then
+  // `more`.
+  const std::size_t lead = plain.find(": ");
+  if (lead != std::string::npos && lead > 0 &&
+      CountChars(plain.substr(0, lead)) + 2 + CountChars(more) <= kMaxHeadlineChars) {
+    return plain.substr(0, lead) + ": " + std::string(more);
   }
   return std::string(fallback);
 }

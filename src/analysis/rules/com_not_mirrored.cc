@@ -271,12 +271,11 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
            {{"com_off_mirror_image_m", m.com_miss},
             {"products_off_mirror_image_percent", 100 * m.products_miss},
             {"mirror_plane_offset_m", m.offset}},
-           m.com_bad ? "mirror the center of mass of link '" + good.name + "' across the plane " +
-                           std::string(1, axis_name) + " = " + FormatLength(m.offset) +
-                           ": in the model frame it belongs at " + Vec(expected)
-                     : "negate the products of link '" + good.name +
-                           "' that the mirror plane flips and write them on link '" + bad.name +
-                           "'");
+           m.com_bad ? "write " + Vec(expected) + " in the model frame: the mirror image of the COM of '" +
+                           good.name + "' across " + std::string(1, axis_name) + " = " +
+                           FormatLength(m.offset)
+                     : "negate the products of '" + good.name +
+                           "' that the mirror plane flips and write them on '" + bad.name + "'");
 }
 
 // Two links that draw the same mesh files at the same handedness are one part placed twice (a

@@ -69,6 +69,15 @@ void DescribeReaderFinding(Finding& f) {
                          : f.rule == kIncludeUnresolved
                              ? "an <include> cannot be resolved (--explain says which)"
                              : "the reader's full message is under --explain";
+  // "ROS's URDF parser will not load this file: WHAT: DETAIL": urdfdom's WHAT is a sentence.
+  const std::string refuses = "ROS's URDF parser will not load this file: ";
+  if (f.rule == kUrdfNotLoadable && f.headline.rfind(refuses, 0) == 0 &&
+      CountChars(f.headline) > kMaxHeadlineChars) {
+    const std::string reason = f.headline.substr(refuses.size());
+    const std::string shorter =
+        "ROS's URDF parser refuses this file: " + reason.substr(0, reason.find(": "));
+    if (CountChars(shorter) <= kMaxHeadlineChars) f.headline = shorter;
+  }
   f.headline = HeadlineFromMessage(f.headline, fallback, "--explain says more");
   f.evidence.clear();
   for (const auto& [name, value] : f.values) {
