@@ -368,7 +368,9 @@ std::string DetailLines(const std::vector<const Finding*>& group, const ReportOp
   const std::string end = options.color ? std::string(kReset) + "\n" : "\n";
   std::string out;
   const std::string evidence =
-      group.size() > 1 ? GroupEvidence(group) : FormatEvidence(first.evidence);
+      first.evidence.empty() ? ""
+      : group.size() > 1     ? GroupEvidence(group)
+                             : FormatEvidence(first.evidence);
   if (!evidence.empty()) {
     out += lead + CutToChars("evidence: " + ShortenLongWords(evidence), kMaxDetailChars - 4) + end;
   }

@@ -594,8 +594,7 @@ void PrintFixEffect(const FixArgs& args, const FixInput& input, const FixSetup& 
       }
       for (const Finding& f : CheckModel(reread.models[i], setup.check)) {
         if (f.severity == Severity::kNote || before.count({f.link, f.rule})) continue;
-        std::cerr << "massprops: note: after the repairs asked for, " << FindingHeadlineLine(f)
-                  << "\n";
+        std::cerr << FindingHeadlineLine(f) << " (after the repairs asked for)\n";
       }
     }
   }
