@@ -48,15 +48,17 @@ namespace {
 // inequality fails, as a percentage of the trace ("excess 2.58%"), or in kg·m² when the
 // trace is not positive (negative moments), where a share of it means nothing.
 std::vector<std::pair<std::string, double>> ViolationEvidence(const Validity& v) {
-  std::vector<std::pair<std::string, double>> evidence = {{"moment_1_kg_m2", v.moments(0)},
-                                                          {"moment_2_kg_m2", v.moments(1)},
-                                                          {"moment_3_kg_m2", v.moments(2)}};
-  // By how much moment 3 exceeds moments 1 + 2 (the triangle inequality every body obeys).
+  // First, the deciding number: by how much moment 3 exceeds moments 1 + 2 (the triangle
+  // inequality every body obeys); then the moments (the headline quotes them too).
+  std::vector<std::pair<std::string, double>> evidence;
   if (v.trace > 0) {
     evidence.emplace_back("triangle_excess_percent", 100 * v.excess / v.trace);
   } else {
     evidence.emplace_back("triangle_excess_kg_m2", v.excess);
   }
+  evidence.insert(evidence.end(), {{"moment_1_kg_m2", v.moments(0)},
+                                   {"moment_2_kg_m2", v.moments(1)},
+                                   {"moment_3_kg_m2", v.moments(2)}});
   return evidence;
 }
 
