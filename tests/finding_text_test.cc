@@ -138,6 +138,22 @@ TEST(FindingTextTest, LinkHeadlineFirstFitKeepsTheNameWithAShorterSentence) {
   EXPECT_EQ(LinkHeadlineFirstFit(std::string(50, 'n'), {longer, shorter}), "this link" + shorter);
 }
 
+TEST(FindingTextTest, LongestLeadThatFitsDropsTheMostSpecificDetailsFromTheEnd) {
+  // As an unreadable STL is reported (assimp's reason here 66 characters long): the whole is
+  // 84 + 2 + 66 = 152 characters; the lead up to the last ": " is 84.
+  const std::string lead = "link 'a': mesh cannot be used: collision at line 7: mesh file 'g.stl' "
+                           "cannot be read";
+  ASSERT_EQ(CountChars(lead), 84u);
+  EXPECT_EQ(LongestLeadThatFits(lead + ": " + std::string(66, 'r')), lead);
+  // Parenthetical remarks are left out first: "(mesh 'g.stl')" does not count.
+  EXPECT_EQ(LongestLeadThatFits("link 'a': mesh cannot be used: collision at line 7 (mesh "
+                                "'g.stl'): mesh file 'g.stl' cannot be read: " +
+                                std::string(66, 'r')),
+            lead);
+  // No ": " within the first 110 characters: nothing.
+  EXPECT_EQ(LongestLeadThatFits(std::string(120, 'w') + ": x"), "");
+}
+
 TEST(FindingTextTest, FirstThatFitsTakesTheFullestSentenceThatFits) {
   const std::string twin(80, 't');
   // "link 'arm'" (10) + ": center of mass 2 cm off the mirror image of " (46) + "link '" (6) +

@@ -334,6 +334,16 @@ std::string HeadlineFromMessage(std::string_view text, std::string_view fallback
   return std::string(fallback);
 }
 
+std::string LongestLeadThatFits(std::string_view text) {
+  const std::string plain = WithoutParentheses(text);
+  std::size_t best = std::string::npos;
+  for (std::size_t at = plain.find(": "); at != std::string::npos; at = plain.find(": ", at + 2)) {
+    if (CountChars(plain.substr(0, at)) > kMaxHeadlineChars) break;
+    best = at;
+  }
+  return best == std::string::npos ? "" : plain.substr(0, best);
+}
+
 std::string HeadlineOf(const Finding& finding) {
   const std::string& text = finding.headline.empty() ? finding.message : finding.headline;
   return HeadlineFromMessage(text, "this finding's message is too long for a headline (--explain)",

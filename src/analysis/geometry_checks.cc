@@ -308,9 +308,15 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
         const std::string why = error.empty()                 ? "unknown error"
                                 : clause == std::string::npos ? error
                                                               : error.substr(clause + 3);
+        // Whole, or its lead without the most specific details, or a short sentence.
+        const std::string whole = LinkHeadline(link.name, ": mesh cannot be used: " + why);
+        const std::string lead =
+            LongestLeadThatFits("link '" + link.name + "': mesh cannot be used: " + why + ": ");
         finding.headline =
-            FirstThatFits({LinkHeadline(link.name, ": mesh cannot be used: " + why),
-                           LinkHeadline(link.name, ": a mesh cannot be used (--explain says why)")});
+            CountChars(whole) <= kMaxHeadlineChars ? whole
+            : lead.size() > link.name.size() + 30
+                ? lead
+                : LinkHeadline(link.name, ": a mesh cannot be used (--explain says why)");
         finding.help =
             "fix the mesh file or its URI (--package-path DIR); the whole error is under "
             "--explain";

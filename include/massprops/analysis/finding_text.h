@@ -81,6 +81,12 @@ std::string FirstThatFits(std::initializer_list<std::string> sentences);
 std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
                                 std::string_view more = "the full message says more");
 
+/// The longest lead of `text` up to a ": " (the most specific details dropped from the end), its
+/// parenthetical remarks left out, that fits kMaxHeadlineChars; "" when none does. "link 'a':
+/// mesh cannot be used: mesh file 'g.stl' cannot be read: Failed to determine ..." → "link 'a':
+/// mesh cannot be used: mesh file 'g.stl' cannot be read".
+std::string LongestLeadThatFits(std::string_view text);
+
 /// The finding's headline, or a headline made of its message (HeadlineFromMessage) when the
 /// rule gave none (a Finding made by other code); at most kMaxHeadlineChars characters when
 /// the rule kept to it. Never empty when either is set.

@@ -274,8 +274,8 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
            m.com_bad ? "write " + Vec(expected) + " in the model frame: the mirror image of the COM of '" +
                            good.name + "' across " + std::string(1, axis_name) + " = " +
                            FormatLength(m.offset)
-                     : "negate the products of '" + good.name +
-                           "' that the mirror plane flips and write them on '" + bad.name + "'");
+                     : "write on '" + bad.name + "' the products of '" + good.name +
+                           "', negated where the mirror plane flips them");
 }
 
 // Two links that draw the same mesh files at the same handedness are one part placed twice (a
