@@ -183,8 +183,10 @@ TEST(ChecksTest, InertiaNotPhysicalQuotesThePrincipalMomentsAndTheViolatedInequa
   EXPECT_TRUE(found);
   // The evidence beside the headline: 0.5 − (0.1 + 0.2) = 0.2 of the trace 0.8, 25% (by hand).
   ASSERT_EQ(f.evidence.size(), 4u);
-  EXPECT_EQ(f.evidence[3].first, "excess_percent");
-  EXPECT_NEAR(f.evidence[3].second, 25, 1e-9);
+  EXPECT_EQ(f.evidence[0].first, "triangle_excess_percent");  // the deciding number first
+  EXPECT_NEAR(f.evidence[0].second, 25, 1e-9);
+  EXPECT_EQ(f.evidence[3].first, "moment_3_kg_m2");
+  EXPECT_NEAR(f.evidence[3].second, 0.5, 1e-12);
 }
 
 // Products +0.0045 on diagonal 0.01: eigenvalues 0.01 + 2·0.0045 = 0.019 and 0.01 − 0.0045 =

@@ -185,7 +185,11 @@ TEST_F(FixMassCliTest, AMassThatDrawsAWarningIsWrittenAndSaidSo) {
   const ToolRun run =
       Run("fix --total-mass 0.006 -o '" + Path("light.urdf") + "' '" + Path("arm.urdf") + "'");
   EXPECT_EQ(run.code, 0) << run.err;
-  EXPECT_NE(run.err.find("note: after the repairs asked for, warning [density-implausible]"),
+  // Said as `check` says it: `file:line: warning: HEADLINE [rule]`, and why it is new. The
+  // headline is density-implausible's (0.002 kg / 0.006 m³ = 0.333 kg/m³).
+  EXPECT_NE(run.err.find(":17: warning: link 'upper': density 0.333 kg/m³ over its closed mesh, "
+                         "lighter than foam (placeholder mass?) [density-implausible] (after the "
+                         "repairs asked for)\n"),
             std::string::npos)
       << run.err;
 }

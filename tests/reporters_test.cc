@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "massprops/analysis/finding_text.h"
+
 namespace massprops {
 namespace {
 
@@ -163,6 +165,7 @@ TEST(ReportersTest, JsonCarriesEveryFieldOfTheDocumentedSchema) {
   EXPECT_EQ(broken["errors"][0].at("column"), 5);
   EXPECT_EQ(broken["errors"][0].at("element"), "<link>");
   EXPECT_EQ(broken["errors"][0].at("message"), "unclosed element");
+  EXPECT_EQ(broken["errors"][0].at("headline"), "<link>: unclosed element");
 
   const json& summary = doc.at("summary");
   EXPECT_EQ(summary.at("files"), 2);
@@ -410,7 +413,7 @@ FileResult PartsResult() {
     f.location = {"humanoid.urdf", line, 0};
     f.message = "the whole reasoning about " + link;
     f.headline = "link '" + link + "': inertia too large (looks like kg·mm²)";
-    f.evidence = {{"k_over_e_ratio", ratio}, {"mass_kg", 2}};
+    f.evidence = {{"ratio", ratio}, {"mass_kg", 2}};
     f.help = help;
     result.findings.push_back(f);
   };
@@ -431,11 +434,11 @@ TEST(ReportersPartsTest, RepeatsOfOneCauseShareOneEvidenceAndHelpLine) {
             "[units-suspect]\n"
             "humanoid.urdf:30: warning: link 'shin': inertia too large (looks like kg·mm²) "
             "[units-suspect]\n"
-            "  = evidence: 2 links: k/e 1000x to 1200x, mass 2 kg\n"
+            "  = evidence: 2 links: ratio 1000x to 1200x, mass 2 kg\n"
             "  = help: multiply the inertia by 1e-6\n"
             "humanoid.urdf:20: warning: link 'foot': inertia too large (looks like kg·mm²) "
             "[units-suspect]\n"
-            "  = evidence: k/e 5x, mass 2 kg\n"
+            "  = evidence: ratio 5x, mass 2 kg\n"
             "  = help: check the mass\n");
 }
 
@@ -450,7 +453,7 @@ TEST(ReportersPartsTest, BriefPrintsHeadlinesAloneAndExplainAddsTheReasoning) {
   const std::string explained = RenderText({PartsResult()}, explain);
   // Not grouped: each finding has its evidence, help and reasoning, in file order.
   EXPECT_NE(
-      explained.find("[units-suspect]\n  = evidence: k/e 1000x, mass 2 kg\n  = help: multiply "
+      explained.find("[units-suspect]\n  = evidence: ratio 1000x, mass 2 kg\n  = help: multiply "
                      "the inertia by 1e-6\n  = why: the whole reasoning about thigh\n"),
       std::string::npos);
   EXPECT_NE(explained.find("  = why: the whole reasoning about shin\n"), std::string::npos);
@@ -476,14 +479,14 @@ TEST(ReportersPartsTest, MachineFormatsCarryThePartsAndKeepTheMessage) {
   const json& first = doc["files"][0]["findings"][0];
   EXPECT_EQ(first.at("message"), "the whole reasoning about thigh");
   EXPECT_EQ(first.at("headline"), "link 'thigh': inertia too large (looks like kg·mm²)");
-  EXPECT_EQ(first.at("evidence").at("k_over_e_ratio"), 1000);
+  EXPECT_EQ(first.at("evidence").at("ratio"), 1000);
   EXPECT_EQ(first.at("evidence").at("mass_kg"), 2);
   EXPECT_EQ(first.at("help"), "multiply the inertia by 1e-6");
 
   const json sarif = json::parse(RenderSarif({PartsResult()}));
   const json& result = sarif["runs"][0]["results"][0];
   EXPECT_EQ(result.at("message").at("text"), "link 'thigh': inertia too large (looks like kg·mm²)");
-  EXPECT_EQ(result.at("properties").at("evidence").at("k_over_e_ratio"), 1000);
+  EXPECT_EQ(result.at("properties").at("evidence").at("ratio"), 1000);
   EXPECT_EQ(result.at("properties").at("message"), "the whole reasoning about thigh");
   for (const json& rule : sarif["runs"][0]["tool"]["driver"]["rules"]) {
     if (rule.at("id") != "units-suspect") continue;
@@ -497,6 +500,62 @@ TEST(ReportersPartsTest, MachineFormatsCarryThePartsAndKeepTheMessage) {
   EXPECT_NE(github.find("title=units-suspect::link 'thigh': inertia too large (looks like "
                         "kg·mm²)%0Ahelp: multiply the inertia by 1e-6\n"),
             std::string::npos);
+}
+
+// A read error whose text (element + message) is longer than a headline: its first clause is
+// the headline in every format, whole (no "…"), and the whole text is beside it.
+FileResult LongReadErrorResult() {
+  FileResult result;
+  result.path = "r.urdf";
+  ReadError error;
+  error.location = {"r.urdf", 9, 0};
+  error.element = "<mesh>";
+  // "<mesh>: " (8) + 70 = 78 characters before "; ", 78 + 2 + 80 = 160 in all.
+  error.message = "filename '" + std::string(50, 'f') + "' is empty; " + std::string(80, 'w');
+  result.errors.push_back(error);
+  return result;
+}
+
+TEST(ReportersPartsTest, ALongReadErrorHasAWholeHeadlineInEveryFormatAndItsTextBeside) {
+  const std::string headline = "<mesh>: filename '" + std::string(50, 'f') + "' is empty";
+  ASSERT_EQ(CountChars(headline), 78u);
+  const std::string whole = headline + "; " + std::string(80, 'w');
+  ReportOptions quiet;
+  quiet.quiet = true;
+  EXPECT_EQ(RenderText({LongReadErrorResult()}, quiet),
+            "r.urdf:9: error: " + headline + " [read-error]\n  = why: " + whole + "\n");
+  const json doc = json::parse(RenderJson({LongReadErrorResult()}));
+  EXPECT_EQ(doc["files"][0]["errors"][0].at("headline"), headline);
+  const json sarif = json::parse(RenderSarif({LongReadErrorResult()}));
+  const json& result = sarif["runs"][0]["results"][0];
+  EXPECT_EQ(result.at("message").at("text"), headline);
+  EXPECT_EQ(result.at("properties").at("message"), whole);
+  EXPECT_EQ(RenderGithub({LongReadErrorResult()}),
+            "::error file=r.urdf,line=9,title=read-error::" + headline + "%0A" + whole + "\n");
+}
+
+// A finding of a rule whose headline names a long link (60 characters, one "word" longer than
+// the 55 that messages shorten): printed whole, as the rule wrote it, in text and JSON.
+TEST(ReportersPartsTest, AHeadlineThatFitsIsPrintedWholeWhateverItsWords) {
+  FileResult result;
+  result.path = "r.urdf";
+  Finding f;
+  f.rule = "mass-not-positive";
+  f.severity = Severity::kError;
+  f.link = std::string(60, 'l');
+  f.location = {"r.urdf", 4, 0};
+  f.message = "the reasoning";
+  f.headline = LinkHeadline(f.link, ": mass -1 kg is negative");  // 6 + 60 + 1 + 24 = 91
+  ASSERT_EQ(f.headline, "link '" + f.link + "': mass -1 kg is negative");
+  result.findings.push_back(f);
+  ReportOptions options;
+  options.quiet = options.brief = true;
+  EXPECT_EQ(RenderText({result}, options),
+            "r.urdf:4: error: link '" + f.link + "': mass -1 kg is negative [mass-not-positive]\n");
+  EXPECT_EQ(json::parse(RenderJson({result}))["files"][0]["findings"][0].at("headline"),
+            f.headline);
+  EXPECT_EQ(FindingHeadlineLine(f),
+            "r.urdf:4: error: link '" + f.link + "': mass -1 kg is negative [mass-not-positive]");
 }
 
 }  // namespace

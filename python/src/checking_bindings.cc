@@ -22,6 +22,7 @@
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
 #include "massprops/analysis/finding_sources.h"
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/mass_repair.h"
 #include "massprops/analysis/mass_report.h"
@@ -110,18 +111,8 @@ std::vector<Finding> Check(const py::handle& source_arg, std::optional<double> t
   if (!read.errors.empty()) RaiseReadError(read.errors);
 
   std::vector<Finding> findings;
-  for (const ReadError& warning : read.warnings) {
-    Finding finding;
-    finding.rule = kReadWarningRule;
-    finding.severity = Severity::kWarning;
-    finding.location = warning.location;
-    finding.message =
-        warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
-    // As `massprops check` gives it (src/tool/main.cc).
-    finding.headline = finding.message.substr(0, finding.message.find("; "));
-    finding.help = "the element was skipped: fix it so that the file reads whole";
-    findings.push_back(finding);
-  }
+  // As `massprops check` gives them (reporters.h).
+  for (const ReadError& warning : read.warnings) findings.push_back(ReadWarningFinding(warning));
   for (Finding& finding : ReaderFindings(read, options)) findings.push_back(std::move(finding));
   MeshCache cache;
   for (const Model& model : read.models) {
@@ -243,7 +234,7 @@ void BindFinding(py::module_& m) {
             d["line"] = f.location.line;
             d["column"] = f.location.column;
             d["message"] = f.message;
-            d["headline"] = f.headline.empty() ? f.message : f.headline;
+            d["headline"] = HeadlineOf(f);
             d["evidence"] = ValuesDict(f.evidence);
             d["help"] = f.help;
             d["values"] = ValuesDict(f.values);
@@ -257,8 +248,8 @@ void BindFinding(py::module_& m) {
              std::string where = f.location.file;
              if (f.location.line > 0) where += ":" + std::to_string(f.location.line);
              if (f.location.column > 0) where += ":" + std::to_string(f.location.column);
-             return where + ": " + ToString(f.severity) + ": " +
-                    (f.headline.empty() ? f.message : f.headline) + " [" + f.rule + "]";
+             return where + ": " + ToString(f.severity) + ": " + HeadlineOf(f) + " [" + f.rule +
+                    "]";
            })
       .def("__repr__", [](const Finding& f) {
         return "Finding(rule=" + Quote(f.rule) + ", severity=" + Quote(ToString(f.severity)) +

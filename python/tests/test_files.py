@@ -99,7 +99,7 @@ def test_findings_have_a_headline_evidence_and_help(examples):
     findings = massprops.check(examples / "two_link_arm.urdf")
     bad = next(f for f in findings if (f.link, f.rule) == ("forearm", "inertia-not-physical"))
     assert bad.headline == "link 'forearm': impossible inertia (moments 0.00427 + 0.00427 < 0.009)"
-    assert bad.evidence["moment3_kg_m2"] == pytest.approx(0.009, rel=1e-9)
+    assert bad.evidence["moment_3_kg_m2"] == pytest.approx(0.009, rel=1e-9)
     assert "massprops fix" in bad.help
     assert "0.00427333" in bad.message  # the full reasoning is kept
     assert bad.to_dict()["headline"] == bad.headline

@@ -118,9 +118,11 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
       MakeFinding(kDensityImplausibleRule, severity, model, link.name, MassLocation(link),
                   std::move(message), {{"mass", d.mass}, {"volume", d.volume}, {"density", rho}});
   const bool mesh_in_mm = millimetres >= kMinSolidDensity && millimetres <= kMaxSolidDensity;
-  f.headline = "link '" + link.name + "': density " + FormatSignificant(rho) +
-               " kg/m³ over its closed mesh, lighter than foam (" +
-               (mesh_in_mm ? "mesh in mm without scale?" : "placeholder mass?") + ")";
+  f.headline = LinkHeadline(link.name, ": density " + FormatSignificant(rho) +
+                                           " kg/m³ over its closed mesh, lighter than foam (" +
+                                           (mesh_in_mm ? "mesh in mm without scale?"
+                                                       : "placeholder mass?") +
+                                           ")");
   f.evidence = {{"mass_kg", d.mass}, {"volume_m3", d.volume}, {"density_kg_m3", rho}};
   f.help =
       "write the weighed mass, or massprops fix --material LINK=NAME (massprops explain "
@@ -171,8 +173,9 @@ std::optional<Finding> CheckCadDefault(const Model& model, const std::vector<Lin
                            {"volume", volume},
                            {"density_min", lowest},
                            {"density_max", highest}});
-  f.headline = "model '" + model.name + "': all " + std::to_string(counted.size()) +
-               " links with closed meshes weigh 1000 kg/m³ (CAD default, no material set?)";
+  f.headline = ModelHeadline(model.name, ": all " + std::to_string(counted.size()) +
+                                             " links with closed meshes weigh 1000 kg/m³ (CAD "
+                                             "default, no material set?)");
   f.evidence = {{"links_count", static_cast<double>(counted.size())},
                 {"total_mass_kg", total},
                 {"density_min_kg_m3", lowest},

@@ -191,11 +191,13 @@ std::string FormatEvidenceValue(std::string_view name, double value) {
 std::string EvidenceLabel(std::string_view name) {
   const std::size_t suffix = UnitOf(name).second;
   std::string label(name == "ratio" ? name : name.substr(0, name.size() - suffix));
-  // "k_over_e" → "k/e".
-  for (std::size_t at; (at = label.find("_over_")) != std::string::npos;) {
-    label.replace(at, 6, "/");
-  }
   std::replace(label.begin(), label.end(), '_', ' ');
+  // The center of mass is "COM" as robot engineers write it: "com x" → "COM x".
+  for (std::size_t at = label.find("com"); at != std::string::npos; at = label.find("com", at + 3)) {
+    const bool starts = at == 0 || label[at - 1] == ' ';
+    const bool ends = at + 3 == label.size() || label[at + 3] == ' ';
+    if (starts && ends) label.replace(at, 3, "COM");
+  }
   return label;
 }
 
@@ -219,8 +221,133 @@ std::string FormatEvidence(const std::vector<std::pair<std::string, double>>& ev
   return out;
 }
 
-const std::string& HeadlineOf(const Finding& finding) {
-  return finding.headline.empty() ? finding.message : finding.headline;
+std::size_t CountChars(std::string_view text) {
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+namespace {
+
+std::string WithoutParentheses(std::string_view text);
+
+// `before` + `kind` 'NAME' + `after` when it fits a headline; else the same without the
+// parenthetical remarks of `after` (the cause guessed, which the help repeats), the name being
+// what tells the links apart; else `before` + "this " + `kind` + `after`.
+std::string NamedHeadline(std::string_view kind, std::string_view name, std::string_view after,
+                          std::string_view before) {
+  std::string named(before);
+  named.append(kind).append(" '").append(name).append("'");
+  if (CountChars(named) + CountChars(after) <= kMaxHeadlineChars) return named.append(after);
+  const std::string plain = WithoutParentheses(after);
+  if (CountChars(named) + CountChars(plain) <= kMaxHeadlineChars) return named.append(plain);
+  std::string unnamed(before);
+  unnamed.append("this ").append(kind).append(after);
+  return unnamed;
+}
+
+}  // namespace
+
+std::string LinkHeadline(std::string_view name, std::string_view after, std::string_view before) {
+  return NamedHeadline("link", name, after, before);
+}
+
+std::string LinkHeadlineFirstFit(std::string_view name,
+                                 std::initializer_list<std::string> afters) {
+  std::string last;
+  for (const std::string& after : afters) {
+    std::string named = "link '";
+    named.append(name).append("'").append(after);
+    if (CountChars(named) <= kMaxHeadlineChars) return named;
+    last = after;
+  }
+  return "this link" + last;
+}
+
+std::string ModelHeadline(std::string_view name, std::string_view after,
+                          std::string_view before) {
+  return NamedHeadline("model", name, after, before);
+}
+
+std::string FirstThatFits(std::initializer_list<std::string> sentences) {
+  std::string last;
+  for (const std::string& sentence : sentences) {
+    if (CountChars(sentence) <= kMaxHeadlineChars) return sentence;
+    last = sentence;
+  }
+  return last;
+}
+
+namespace {
+
+// `text` without its parenthetical remarks (" (...)", nested ones too): a sentence stays whole
+// without them. An unclosed "(" is kept with the rest.
+std::string WithoutParentheses(std::string_view text) {
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    if (text.compare(i, 2, " (") == 0) {
+      int depth = 0;
+      std::size_t j = i + 1;
+      for (; j < text.size(); ++j) {
+        if (text[j] == '(') ++depth;
+        if (text[j] == ')' && --depth == 0) break;
+      }
+      if (j < text.size()) {
+        i = j + 1;
+        continue;
+      }
+    }
+    out += text[i++];
+  }
+  return out;
+}
+
+// The longest run of leading clauses of `text` (joined by "; ", each a sentence of its own) that
+// fits a headline; "" when even the first does not.
+std::string LeadingClauses(std::string_view text) {
+  if (CountChars(text) <= kMaxHeadlineChars) return std::string(text);
+  std::size_t best = std::string_view::npos;
+  for (std::size_t at = text.find("; "); at != std::string_view::npos;
+       at = text.find("; ", at + 2)) {
+    if (CountChars(text.substr(0, at)) > kMaxHeadlineChars) break;
+    best = at;
+  }
+  return best == std::string_view::npos ? "" : std::string(text.substr(0, best));
+}
+
+}  // namespace
+
+std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
+                                std::string_view more) {
+  std::string headline = LeadingClauses(text);
+  if (!headline.empty()) return headline;
+  const std::string plain = WithoutParentheses(text);
+  headline = LeadingClauses(plain);
+  if (!headline.empty()) return headline;
+  // The lead up to the first ": " (the element or the subject: what the rest details), then
+  // `more`.
+  const std::size_t lead = plain.find(": ");
+  if (lead != std::string::npos && lead > 0 &&
+      CountChars(plain.substr(0, lead)) + 2 + CountChars(more) <= kMaxHeadlineChars) {
+    return plain.substr(0, lead) + ": " + std::string(more);
+  }
+  return std::string(fallback);
+}
+
+std::string LongestLeadThatFits(std::string_view text) {
+  const std::string plain = WithoutParentheses(text);
+  std::size_t best = std::string::npos;
+  for (std::size_t at = plain.find(": "); at != std::string::npos; at = plain.find(": ", at + 2)) {
+    if (CountChars(plain.substr(0, at)) > kMaxHeadlineChars) break;
+    best = at;
+  }
+  return best == std::string::npos ? "" : plain.substr(0, best);
+}
+
+std::string HeadlineOf(const Finding& finding) {
+  const std::string& text = finding.headline.empty() ? finding.message : finding.headline;
+  return HeadlineFromMessage(text, "this finding's message is too long for a headline (--explain)",
+                             "--explain gives the whole message");
 }
 
 std::optional<std::string> RuleLongForm(std::string_view rule) {

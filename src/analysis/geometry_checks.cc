@@ -308,7 +308,15 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
         const std::string why = error.empty()                 ? "unknown error"
                                 : clause == std::string::npos ? error
                                                               : error.substr(clause + 3);
-        finding.headline = "link '" + link.name + "': mesh cannot be used: " + why;
+        // Whole, or its lead without the most specific details, or a short sentence.
+        const std::string whole = LinkHeadline(link.name, ": mesh cannot be used: " + why);
+        const std::string lead =
+            LongestLeadThatFits("link '" + link.name + "': mesh cannot be used: " + why + ": ");
+        finding.headline =
+            CountChars(whole) <= kMaxHeadlineChars ? whole
+            : lead.size() > link.name.size() + 30
+                ? lead
+                : LinkHeadline(link.name, ": a mesh cannot be used (--explain says why)");
         finding.help =
             "fix the mesh file or its URI (--package-path DIR); the whole error is under "
             "--explain";
@@ -362,9 +370,10 @@ std::vector<Finding> CheckModelGeometry(const Model& model, const GeometryCheckO
                       {"declared_moment", declared(worst_k)},
                       {"geometry_moment", g},
                       {"factor", worst}};
-    finding.headline = "link '" + link.name + "': inertia " + FormatRatio(worst) + " off its " +
+    finding.headline = LinkHeadline(
+        link.name, ": inertia " + FormatRatio(worst) + " off that of its " +
                        (comparison.from_collision ? "collision" : "visual") +
-                       " geometry's, principal moment " + std::to_string(worst_k + 1);
+                       " geometry (principal moment " + std::to_string(worst_k + 1) + ")");
     finding.evidence = {{"mass_kg", link.inertial->mass},
                         {"declared_moment_kg_m2", declared(worst_k)},
                         {"geometry_moment_kg_m2", g},

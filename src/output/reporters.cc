@@ -108,10 +108,6 @@ const char* GithubCommand(Severity severity) {
   return "notice";
 }
 
-std::string ReadErrorText(const ReadError& error) {
-  if (error.element.empty()) return error.message;
-  return error.element + ": " + error.message;
-}
 
 std::string Escape(std::string_view text, bool property) {
   std::string out;
@@ -293,7 +289,7 @@ std::string CutToChars(const std::string& text, std::size_t max_chars) {
 }
 
 // The evidence of a group of findings of one rule and cause: each number of the first finding,
-// as its range over the group ("k/e 577x–1.2e3x"), or its value when all agree.
+// as its range over the group ("ratio 577x to 1200x"), or its value when all agree.
 std::string GroupEvidence(const std::vector<const Finding*>& group) {
   std::vector<std::pair<std::string, double>> lows, highs;
   for (const auto& [name, value] : group.front()->evidence) {
@@ -353,8 +349,9 @@ std::string HeadlineLine(const Finding& finding, const FileResult& result, bool 
                                                     finding.location.line, finding.location.column);
   const std::string note = traced ? ShortenLongWords(SourceNote(*finding.source)) : "";
   const std::string severity = std::string(ToString(finding.severity)) + ":";
-  const std::string headline =
-      CutToChars(ShortenLongWords(HeadlineOf(finding), kMaxHeadlineChars / 2), kMaxHeadlineChars);
+  // Whole, as the rule wrote it: a headline is a sentence of at most kMaxHeadlineChars
+  // characters (finding_text.h), so no word of it needs shortening.
+  const std::string headline = HeadlineOf(finding);
   if (color) {
     return std::string(kBold) + where + ":" + kReset + " " + SeverityColor(finding.severity) +
            severity + kReset + " " + headline + " " + kDim + "[" + finding.rule + "]" + note +
@@ -371,7 +368,9 @@ std::string DetailLines(const std::vector<const Finding*>& group, const ReportOp
   const std::string end = options.color ? std::string(kReset) + "\n" : "\n";
   std::string out;
   const std::string evidence =
-      group.size() > 1 ? GroupEvidence(group) : FormatEvidence(first.evidence);
+      first.evidence.empty() ? ""
+      : group.size() > 1     ? GroupEvidence(group)
+                             : FormatEvidence(first.evidence);
   if (!evidence.empty()) {
     out += lead + CutToChars("evidence: " + ShortenLongWords(evidence), kMaxDetailChars - 4) + end;
   }
@@ -422,10 +421,16 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
                                                error.location.column);
       out += color ? std::string(kBold) + where + ":" + kReset + " " + kRed + "error:" + kReset
                    : where + ": error:";
-      out += " " + ShortenLongWords(ReadErrorText(error)) + " ";
+      const std::string headline = ReadErrorHeadline(error);
+      out += " " + headline + " ";
       out += color ? std::string(kDim) + "[" + kReadErrorRule + "]" + kReset
                    : std::string("[") + kReadErrorRule + "]";
       out += "\n";
+      // A read error has no --explain: its whole message goes under a shorter headline.
+      if (headline != ReadErrorText(error) && !options.brief) {
+        out += (color ? std::string(kDim) + "  = why: " : std::string("  = why: ")) +
+               ShortenLongWords(ReadErrorText(error)) + (color ? std::string(kReset) : "") + "\n";
+      }
     }
     const bool group = !options.explain && !options.brief;
     for (const std::vector<const Finding*>& members : GroupFindings(result.findings, group)) {
@@ -463,7 +468,7 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                           {"line", finding.location.line},
                           {"column", finding.location.column},
                           {"message", ShortenLongWords(finding.message)},
-                          {"headline", ShortenLongWords(HeadlineOf(finding))},
+                          {"headline", HeadlineOf(finding)},
                           {"evidence", EvidenceJson(finding)},
                           {"help", ShortenLongWords(finding.help)},
                           {"values", values}});
@@ -487,7 +492,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                         {"line", error.location.line},
                         {"column", error.location.column},
                         {"element", ShortenLongWords(error.element)},
-                        {"message", ShortenLongWords(error.message)}});
+                        {"message", ShortenLongWords(error.message)},
+                        {"headline", ReadErrorHeadline(error)}});
     }
     std::vector<int> counts(8, 0);
     json mesh_uris = json::array();
@@ -579,7 +585,7 @@ json SarifFinding(const Finding& finding, const FileResult& result,
   const int index = SarifRuleIndex(rule_ids, finding.rule);
   if (index >= 0) entry["ruleIndex"] = index;
   entry["level"] = SarifLevel(finding.severity);
-  entry["message"] = {{"text", ShortenLongWords(HeadlineOf(finding))}};
+  entry["message"] = {{"text", HeadlineOf(finding)}};
   if (finding.source && !finding.source->places.empty()) {
     // The source file is the artifact; the generated line and any other candidate place are
     // related locations.
@@ -630,9 +636,10 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
           {{"ruleId", kReadErrorRule},
            {"ruleIndex", SarifRuleIndex(rule_ids, kReadErrorRule)},
            {"level", "error"},
-           {"message", {{"text", ShortenLongWords(ReadErrorText(error))}}},
+           {"message", {{"text", ReadErrorHeadline(error)}}},
            {"locations", SarifLocation(FileOf(error.location, result), error.location.line,
-                                       error.location.column)}});
+                                       error.location.column)},
+           {"properties", {{"message", ShortenLongWords(ReadErrorText(error))}}}});
     }
     for (const Finding& finding : result.findings) {
       sarif_results.push_back(SarifFinding(finding, result, rule_ids));
@@ -663,9 +670,11 @@ std::string RenderGithub(const std::vector<FileResult>& results, const ReportOpt
   std::string out;
   for (const FileResult& result : results) {
     for (const ReadError& error : result.errors) {
-      out +=
-          GithubLine("error", FileOf(error.location, result), error.location.line,
-                     error.location.column, kReadErrorRule, ShortenLongWords(ReadErrorText(error)));
+      const std::string headline = ReadErrorHeadline(error);
+      const std::string text = ReadErrorText(error);
+      out += GithubLine("error", FileOf(error.location, result), error.location.line,
+                        error.location.column, kReadErrorRule,
+                        headline == text ? headline : headline + "\n" + ShortenLongWords(text));
     }
     for (const Finding& finding : result.findings) {
       if (finding.source && !finding.source->places.empty()) {
@@ -701,6 +710,35 @@ std::string Render(ReportFormat format, const std::vector<FileResult>& results,
 void WriteReport(std::ostream& out, ReportFormat format, const std::vector<FileResult>& results,
                  const ReportOptions& options) {
   out << Render(format, results, options);
+}
+
+std::string ReadErrorText(const ReadError& error) {
+  if (error.element.empty()) return error.message;
+  return error.element + ": " + error.message;
+}
+
+std::string FindingHeadlineLine(const Finding& finding) {
+  return FormatLocation(finding.location.file, finding.location.line, finding.location.column) +
+         ": " + ToString(finding.severity) + ": " + HeadlineOf(finding) + " [" + finding.rule + "]";
+}
+
+Finding ReadWarningFinding(const ReadError& warning) {
+  Finding finding;
+  finding.rule = kReadWarningRule;
+  finding.severity = Severity::kWarning;
+  finding.location = warning.location;
+  finding.message = ReadErrorText(warning);
+  // The readers' messages say what is wrong, then "; " and what follows from it.
+  finding.headline = HeadlineFromMessage(finding.message.substr(0, finding.message.find("; ")),
+                                         "an element was skipped (--explain says why)",
+                                         "skipped (--explain says why)");
+  finding.help = "the element was skipped: fix it so that the file reads whole";
+  return finding;
+}
+
+std::string ReadErrorHeadline(const ReadError& error) {
+  return HeadlineFromMessage(ReadErrorText(error),
+                             "the file cannot be read: its message is too long for a headline");
 }
 
 std::string ShortenLongWords(std::string_view text, std::size_t max_word) {

@@ -37,15 +37,7 @@ FileResult CheckReadModels(const std::string& file, const ReadResult& read,
   result.path = file == "-" ? "<stdin>" : file;
   result.errors = read.errors;
   for (const ReadError& warning : read.warnings) {
-    Finding finding;
-    finding.rule = kReadWarningRule;
-    finding.severity = Severity::kWarning;
-    finding.location = warning.location;
-    finding.message =
-        warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
-    finding.headline = finding.message.substr(0, finding.message.find("; "));
-    finding.help = "the element was skipped: fix it so that the file reads whole";
-    result.findings.push_back(finding);
+    result.findings.push_back(ReadWarningFinding(warning));
   }
   for (Finding& finding : ReaderFindings(read, settings.options)) {
     result.findings.push_back(std::move(finding));

@@ -491,10 +491,7 @@ int ListRemainingErrors(const ReadResult& final_read, bool includes_written,
       remaining.push_back(f);
     }
   }
-  for (const Finding& f : remaining) {
-    std::cerr << f.location.file << ":" << f.location.line
-              << ": error: " << ShortenLongWords(f.message) << " [" << f.rule << "] (no repair)\n";
-  }
+  for (const Finding& f : remaining) std::cerr << FindingHeadlineLine(f) << " (no repair)\n";
   return static_cast<int>(remaining.size());
 }
 
@@ -597,8 +594,7 @@ void PrintFixEffect(const FixArgs& args, const FixInput& input, const FixSetup& 
       }
       for (const Finding& f : CheckModel(reread.models[i], setup.check)) {
         if (f.severity == Severity::kNote || before.count({f.link, f.rule})) continue;
-        std::cerr << "massprops: note: after the repairs asked for, " << ToString(f.severity)
-                  << " [" << f.rule << "]: " << f.message << "\n";
+        std::cerr << FindingHeadlineLine(f) << " (after the repairs asked for)\n";
       }
     }
   }
@@ -747,13 +743,10 @@ int RunFix(const FixArgs& given) {
 
 void PrintReaderFindings(const ReadResult& read, const CheckOptions& options) {
   for (const Finding& f : ReaderFindings(read, options)) {
-    std::cerr << f.location.file << ":" << f.location.line << ": " << ToString(f.severity) << ": "
-              << f.message << " [" << f.rule << "]\n";
+    std::cerr << FindingHeadlineLine(f) << "\n";
   }
   for (const ReadError& w : read.warnings) {  // as `check` prints them
-    std::cerr << w.location.file << ":" << w.location.line
-              << ": warning: " << (w.element.empty() ? w.message : w.element + ": " + w.message)
-              << " [" << kReadWarningRule << "]\n";
+    std::cerr << FindingHeadlineLine(ReadWarningFinding(w)) << "\n";
   }
 }
 

@@ -31,6 +31,7 @@
 #include "geometry_cli.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/mass_report.h"
 #include "massprops/analysis/repair.h"
@@ -237,10 +238,18 @@ class MeshTable {
   std::vector<std::pair<std::string, TriangleMesh>> meshes_;
 };
 
+// A finding in the words `check` prints: its headline, evidence and help (finding_text.h), and
+// the full reasoning as "message".
 json FindingJson(const Finding& finding) {
-  return {{"rule", finding.rule},          {"severity", ToString(finding.severity)},
-          {"message", finding.message},    {"file", finding.location.file},
-          {"line", finding.location.line}, {"fixed_by_repair", finding.repair.has_value()}};
+  return {{"rule", finding.rule},
+          {"severity", ToString(finding.severity)},
+          {"headline", HeadlineOf(finding)},
+          {"evidence", FormatEvidence(finding.evidence)},
+          {"help", finding.help},
+          {"message", finding.message},
+          {"file", finding.location.file},
+          {"line", finding.location.line},
+          {"fixed_by_repair", finding.repair.has_value()}};
 }
 
 json GeometryJson(const Geometry& geometry, const Pose& X_WB, const MeshResolveOptions& resolve,
@@ -541,18 +550,13 @@ int RunView(const ViewArgs& args) {
       failed = true;
       errors.push_back({{"file", e.location.file},
                         {"line", e.location.line},
-                        {"message", e.element.empty() ? e.message : e.element + ": " + e.message}});
+                        {"headline", ReadErrorHeadline(e)},
+                        {"message", ReadErrorText(e)}});
       std::cerr << e.ToString() << "\n";
     }
     std::vector<Finding> reader_findings;
     for (const ReadError& warning : read.warnings) {
-      Finding finding;
-      finding.rule = kReadWarningRule;
-      finding.severity = Severity::kWarning;
-      finding.location = warning.location;
-      finding.message =
-          warning.element.empty() ? warning.message : warning.element + ": " + warning.message;
-      reader_findings.push_back(std::move(finding));
+      reader_findings.push_back(ReadWarningFinding(warning));
     }
     for (Finding& finding : ReaderFindings(read, settings.options)) {
       reader_findings.push_back(std::move(finding));

@@ -18,8 +18,10 @@ What is checked, each against numbers worked out here, independently of the tool
   from the URDF's six numbers with numpy: s_k = sqrt(6 (I_i + I_j - I_k) / m) (the moments of a
   uniform box m/12 (b² + c²) etc., solved for the sides), and the base link of the fixture, whose
   inertia is that of its 0.3 x 0.2 x 0.1 m collision box, gets that very box;
-- clicking a link in the list selects it and shows its findings (as `massprops check --format
-  json` gives them) with file:line, and the repair `fix --dry-run` describes;
+- clicking a link in the list selects it and shows its findings in `check`'s words (the
+  "severity: HEADLINE [rule]" line, the help, as `massprops check --format json` gives them; the
+  full message in the headline's tooltip) with file:line, and the repair `fix --dry-run`
+  describes;
 - a screenshot of the 3D view is not blank and differs between two models.
 """
 import argparse
@@ -210,16 +212,20 @@ class ViewPageTest(unittest.TestCase):
         self.assertIn("selected", row.get_attribute("class"))
         details = self.driver.find_element(By.ID, "details").text
         for f in findings:
-            self.assertIn(f["rule"], details)
-            self.assertIn(f["message"], details)
+            self.assertIn(f"{f['severity']}: {f['headline']} [{f['rule']}]", details)
+            self.assertIn("help: " + f["help"], details)
             self.assertIn(f"{f['file']}:{f['line']}", details)
+        tooltips = [node.get_attribute("title") for node in
+                    self.driver.find_elements(By.CSS_SELECTOR, "#details .finding [title]")]
+        for f in findings:
+            self.assertIn(f["message"], tooltips)
         # The dry run prints "FILE:LINE: <description>"; the page shows the description.
         description = repair_line.split(": ", 1)[1]
         self.assertIn(description, details)
         # Another link: its own numbers, no findings of 'bad'.
         self.driver.find_element(By.CSS_SELECTOR, 'tr[data-link="base"]').click()
         self.assertEqual(self.driver.execute_script("return window.massprops.selected"), "base")
-        self.assertNotIn(findings[0]["message"], self.driver.find_element(By.ID, "details").text)
+        self.assertNotIn(findings[0]["headline"], self.driver.find_element(By.ID, "details").text)
 
     def test_clicking_a_box_in_the_view_selects_its_link_and_the_background_deselects(self):
         self.open("apart")

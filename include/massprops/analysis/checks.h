@@ -39,9 +39,10 @@ struct Finding {
   /// kMaxHeadlineChars characters: "link 'arm': inertia 1000x too large for its 15 cm box
   /// (looks like kg·mm²)". Numbers are written by finding_text.h (3 significant digits).
   std::string headline;
-  /// The named numbers that decided, each name ending in its SI unit (`mass_kg`,
-  /// `half_diagonal_m`, `trace_kg_m2`, `density_kg_m3`) or naming a pure number (`ratio`,
-  /// `k_over_e_ratio`, `links_count`). Rendered by FormatEvidence (finding_text.h).
+  /// The named numbers that decided, each name in words a robot engineer reads without the docs
+  /// (`radius_of_gyration_m`, not `k_m`) ending in its SI unit (`mass_kg`, `half_diagonal_m`,
+  /// `trace_kg_m2`, `density_kg_m3`) or naming a pure number (`ratio`, `triangle_excess_percent`,
+  /// `links_count`). Rendered by FormatEvidence (finding_text.h).
   std::vector<std::pair<std::string, double>> evidence;
   /// The next step, concretely: the value to write, or the `massprops fix ...` command.
   std::string help;

@@ -8,6 +8,7 @@
 /// the parts with them.
 
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -43,17 +44,53 @@ std::string FormatExtents(double x_m, double y_m, double z_m);
 /// `_m3` m³, `_m2` m², `_kg` kg, `_m` a length (FormatLength), `_rad` rad, `_deg` °, `_percent`
 /// %, `ratio` / `_ratio` a ratio (FormatRatio), `_count` an integer; anything else a plain number.
 std::string FormatEvidenceValue(std::string_view name, double value);
-/// The name without its unit, underscores as spaces: "half_diagonal_m" → "half diagonal",
-/// "k_over_e_ratio" → "k/e", "ratio" → "ratio".
+/// The name without its unit, underscores as spaces, the word "com" as "COM": the words a robot
+/// engineer reads without the docs, so each name says what it is in full
+/// ("radius_of_gyration_m", not "k_m"): "half_diagonal_m" → "half diagonal", "com_x_m" →
+/// "COM x", "ratio" → "ratio".
 std::string EvidenceLabel(std::string_view name);
-/// "mass 2 kg, half diagonal 21.2 cm, k/e 0.018x": as many items as fit in `max_chars`, then
+/// "mass 2 kg, half diagonal 21.2 cm, ratio 0.018x": as many items as fit in `max_chars`, then
 /// "…" when some were left out (JSON and `--explain` keep them all).
 std::string FormatEvidence(const std::vector<std::pair<std::string, double>>& evidence,
                            std::size_t max_chars = kMaxDetailChars - 14);
 
-/// The finding's headline, or its message when the rule gave no headline (a Finding made by
-/// other code). Never empty when either is set.
-const std::string& HeadlineOf(const Finding& finding);
+/// The characters of UTF-8 text (not its bytes: "·", "²" and "×" take two bytes each).
+std::size_t CountChars(std::string_view text);
+
+/// A headline is a whole sentence of at most kMaxHeadlineChars characters, never cut: where a
+/// name would make it longer, a shorter sentence is written instead. `before` + "link 'NAME'" +
+/// `after` (`after` like ": inertia 5x too large for its 15 cm box (mass changed?)" or " has no
+/// <inertial>") when it fits; else the same sentence about "this link" (text output's file:line
+/// and JSON's `link` name it), however long the name.
+std::string LinkHeadline(std::string_view name, std::string_view after,
+                         std::string_view before = "");
+/// "link 'NAME'" + the first of `afters` (the fullest first) with which the sentence fits; else
+/// "this link" + the last of them.
+std::string LinkHeadlineFirstFit(std::string_view name, std::initializer_list<std::string> afters);
+/// As LinkHeadline, about a model: "model 'NAME'", else "this model".
+std::string ModelHeadline(std::string_view name, std::string_view after,
+                          std::string_view before = "");
+/// The first of `sentences` (whole headlines, the fullest first) that has at most
+/// kMaxHeadlineChars characters; the last one when none does (its author makes it short).
+std::string FirstThatFits(std::initializer_list<std::string> sentences);
+/// A headline made of `text` (a reader's message: "what is wrong; what follows from it"), never
+/// cutting a word or a name: the text itself when it fits kMaxHeadlineChars; else its leading
+/// clauses up to a "; " that fit (each clause a sentence of its own); else the same of the text
+/// without its parenthetical remarks " (...)"; else its lead up to the first ": " (the element
+/// or the subject) followed by ": " and `more`; else `fallback`, a whole sentence.
+std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
+                                std::string_view more = "the full message says more");
+
+/// The longest lead of `text` up to a ": " (the most specific details dropped from the end), its
+/// parenthetical remarks left out, that fits kMaxHeadlineChars; "" when none does. "link 'a':
+/// mesh cannot be used: mesh file 'g.stl' cannot be read: Failed to determine ..." → "link 'a':
+/// mesh cannot be used: mesh file 'g.stl' cannot be read".
+std::string LongestLeadThatFits(std::string_view text);
+
+/// The finding's headline, or a headline made of its message (HeadlineFromMessage) when the
+/// rule gave none (a Finding made by other code); at most kMaxHeadlineChars characters when
+/// the rule kept to it. Never empty when either is set.
+std::string HeadlineOf(const Finding& finding);
 
 /// The long form of `rule` (what it means, the physics and the evidence it reads, an example,
 /// how to fix and silence it): its section of docs/rules.md, as compiled into the library.

@@ -91,18 +91,39 @@ inline constexpr const char* kReadErrorRule = "read-error";
 /// The rule id the tool gives to a reader's warnings (elements it skipped), reported as findings.
 inline constexpr const char* kReadWarningRule = "read-warning";
 
+/// A ReadError's whole text: "element: message" (the message alone without an element).
+std::string ReadErrorText(const ReadError& error);
+/// A ReadError's headline in every format: its whole text when it has at most
+/// kMaxHeadlineChars characters, else a shorter whole sentence (HeadlineFromMessage in
+/// finding_text.h: its leading clauses, or its element and "the full message says what cannot
+/// be read"); the whole text is then under it (text: `  = why: ...`; JSON: "message"; SARIF:
+/// properties.message; GitHub: the next line).
+std::string ReadErrorHeadline(const ReadError& error);
+
+/// A reader's warning (an element it skipped) as the finding every command reports: rule
+/// kReadWarningRule, its text as the message, its first clause as the headline
+/// (HeadlineFromMessage), and the help.
+Finding ReadWarningFinding(const ReadError& warning);
+
+/// `file:line:col: severity: HEADLINE [rule]` of one finding at its own location, as `check`'s
+/// text prints it (no colour, no xacro note, no new line): how `fix` names a finding.
+std::string FindingHeadlineLine(const Finding& finding);
+
 /// Counts findings by severity, and read errors, over `results`. Cost: linear.
 ReportSummary Summarize(const std::vector<FileResult>& results);
 
 /// One line per finding, `file:line:col: severity: HEADLINE [rule-id]` (`:col` left out when the
-/// column is unknown, `:line` too when the line is; the headline cut at kMaxHeadlineChars), and
+/// column is unknown, `:line` too when the line is; the headline whole: at most kMaxHeadlineChars
+/// characters, finding_text.h), and
 /// under it at most two lines, `  = evidence: ...` and `  = help: ...` (each at most
 /// kMaxDetailChars; finding_text.h). Findings of one rule in one file with the same help (one
 /// cause) are a group: each keeps its headline line, and the evidence (each number's range over
 /// the group) and the help are printed once, under the last. `options.brief`: headlines only;
 /// `options.explain`: no grouping, and a third line `  = why: MESSAGE`; `options.statistics`:
 /// counts per rule instead of the findings. One line per ReadError,
-/// `file:line:col: error: element: message [read-error]`, then (unless quiet) a summary line,
+/// `file:line:col: error: HEADLINE [read-error]` (ReadErrorHeadline), followed by
+/// `  = why: element: message` when the headline is shorter than that (not with `brief`), then
+/// (unless quiet) a summary line,
 /// and when some links' meshes did not resolve, one more line that says how many (and the first
 /// URI), e.g. `massprops: 12 links' meshes did not resolve or could not be read: their size is
 /// unknown to the geometry rules (use --package-path DIR; first: 'package://x/y.stl')`.
@@ -114,7 +135,7 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
 /// {"version", "files": [{"path", "format", "models", "findings": [{"rule", "severity", "model",
 /// "link", "file", "line", "column", "message", "headline", "evidence": {name: number}, "help",
 /// "values": {name: number}}], "errors": [{"file",
-/// "line", "column", "element", "message"}]}], "summary": {"files", "errors", "warnings", "notes",
+/// "line", "column", "element", "message", "headline"}]}], "summary": {"files", "errors", "warnings", "notes",
 /// "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
 /// "first_unresolved_mesh" (a string, or null when none), "mesh_resolution"}}. Each file also
 /// has "mesh_links", "mesh_links_unresolved", "mesh_resolution" ({"flag", "repository-package",

@@ -219,6 +219,18 @@ double OffCenter(const Eigen::Vector3d& c, const std::optional<Eigen::AlignedBox
   return ((c - box->center()).cwiseAbs().cwiseQuotient(h)).maxCoeff();
 }
 
+// The headline of link `bad` whose numbers do not mirror those of its twin `good`: the twin
+// named when both names fit, else "its twin" (the help names it).
+std::string MirrorHeadline(const std::string& bad, const std::string& good, bool com_bad,
+                           double com_miss) {
+  const std::string what = com_bad ? ": center of mass " + FormatLength(com_miss) +
+                                         " off the mirror image of "
+                                   : std::string(": products of inertia do not mirror those of ");
+  const std::string twin = com_bad ? "its twin's" : "its twin";
+  return FirstThatFits({"link '" + bad + "'" + what + "link '" + good + "' (copied unmirrored?)",
+                        LinkHeadline(bad, what + twin + " (copied unmirrored?)")});
+}
+
 void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
   const Link& la = ctx.model.links[m.a];
   const Link& lb = ctx.model.links[m.b];
@@ -241,9 +253,9 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
   const Eigen::Vector3d expected = Reflect(wrong == m.a ? m.cb : m.ca, m.axis, m.offset);
   std::string what;
   if (m.com_bad) {
-    what = "their centers of mass do not: '" + bad.name + "''s is at " +
+    what = "their centers of mass do not: that of '" + bad.name + "' is at " +
            Vec(wrong == m.a ? m.ca : m.cb) + " in the model frame, " + Num(m.com_miss) +
-           " m from the mirror image " + Vec(expected) + " of '" + good.name + "''s";
+           " m from the mirror image " + Vec(expected) + " of that of '" + good.name + "'";
   }
   if (m.products_bad) {
     what += std::string(what.empty() ? "" : "; and ") +
@@ -262,18 +274,15 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
             {"expected_com_x", expected.x()},
             {"expected_com_y", expected.y()},
             {"expected_com_z", expected.z()}},
-           LinkHeadline(bad.name) + ": " +
-               (m.com_bad ? "center of mass " + FormatLength(m.com_miss) + " off the mirror of '"
-                          : std::string("products of inertia do not mirror those of '")) +
-               good.name + "''s (copied unmirrored?)",
-           {{"com_miss_m", m.com_miss},
-            {"products_miss_of_trace", m.products_miss},
+           MirrorHeadline(bad.name, good.name, m.com_bad, m.com_miss),
+           {{"com_off_mirror_image_m", m.com_miss},
+            {"products_off_mirror_image_percent", 100 * m.products_miss},
             {"mirror_plane_offset_m", m.offset}},
-           m.com_bad ? "mirror '" + good.name + "''s center of mass across the plane " +
-                           std::string(1, axis_name) + " = " + FormatLength(m.offset) +
-                           ": in the model frame it belongs at " + Vec(expected)
-                     : "negate the products of '" + good.name +
-                           "' that the mirror plane flips and write them on '" + bad.name + "'");
+           m.com_bad ? "write " + Vec(expected) + " in the model frame: the mirror image of the COM of '" +
+                           good.name + "' across " + std::string(1, axis_name) + " = " +
+                           FormatLength(m.offset)
+                     : "write on '" + bad.name + "' the products of '" + good.name +
+                           "', negated where the mirror plane flips them");
 }
 
 // Two links that draw the same mesh files at the same handedness are one part placed twice (a

@@ -80,8 +80,8 @@ void ReportLeftAtOrigin(RuleContext& ctx, const JudgedLink& judged, double dista
                " m); the welded links around it carry their own mass, so it is no mass lumped "
                "from them: the part's center of mass was never written",
            {{"com_x", 0}, {"com_y", 0}, {"com_z", 0}, {"distance", distance}, {"allowed", allowed}},
-           LinkHeadline(link.name) + ": center of mass left at (0, 0, 0), " +
-               FormatLength(distance) + " outside its " + geometry,
+           LinkHeadline(link.name, ": center of mass left at (0, 0, 0), " +
+                                       FormatLength(distance) + " outside its " + geometry),
            {{"outside_by_m", distance},
             {"allowed_m", allowed},
             {"box_center_x_m", box.center().x()},
@@ -127,13 +127,13 @@ void CheckComInsideGeometry(RuleContext& ctx, const JudgedLink& judged) {
             {"com_z", c.z()},
             {"distance", distance},
             {"allowed", allowed}},
-           LinkHeadline(link.name) + ": center of mass " + FormatLength(distance) +
-               " outside its " + judged.geometry_name + " (mirrored part?)",
+           LinkHeadline(link.name, ": center of mass " + FormatLength(distance) + " outside its " +
+                                       judged.geometry_name + " (mirrored part?)"),
            {{"com_x_m", c.x()},
             {"com_y_m", c.y()},
             {"com_z_m", c.z()},
             {"outside_by_m", distance},
-            {"allowed_m", allowed}},
+            {"allowed_by_m", allowed}},
            "write the part's center of mass (from CAD) in <inertial><origin xyz>");
 }
 

@@ -155,14 +155,18 @@ void ReportCopies(RuleContext& ctx, const std::vector<int>& copies, bool typed_i
               {"ratio", ratio},
               {"mass", in.mass},
               {"copies", static_cast<double>(copies.size())}},
-             LinkHeadline(link.name) + ": placeholder inertia copied onto " +
-                 std::to_string(copies.size()) + " links, radius of gyration " +
-                 FormatRatio(ratio) + " its assembly",
-             {{"k_m", k},
+             LinkHeadlineFirstFit(link.name, {": placeholder inertia copied onto " +
+                                                  std::to_string(copies.size()) +
+                                                  " links, radius of gyration " +
+                                                  FormatRatio(ratio) + " the reach of its assembly",
+                                              ": placeholder inertia on " +
+                                                  std::to_string(copies.size()) + " links, " +
+                                                  FormatRatio(ratio) + " too wide for its assembly"}),
+             {{"radius_of_gyration_m", k},
               {"assembly_reach_m", a.reach},
               {"ratio", ratio},
               {"mass_kg", in.mass},
-              {"copies", static_cast<double>(copies.size())}},
+              {"copies_count", static_cast<double>(copies.size())}},
              "give each of " + names +
                  " the inertia of its own part (or zero mass and inertia if it is only a frame)");
   }

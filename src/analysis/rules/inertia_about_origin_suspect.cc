@@ -66,12 +66,13 @@ bool CheckInertiaAboutOrigin(RuleContext& ctx, const JudgedLink& judged, const G
             {"shifted_principal_min", vs.moments(0)},
             {"shifted_principal_mid", vs.moments(1)},
             {"shifted_principal_max", vs.moments(2)}},
-           LinkHeadline(link.name) + ": inertia " + FormatRatio(spread / bound) +
-               " too spread for its " + geometry_kind + "; fits as about the link origin",
-           {{"spread_kg_m2", spread},
-            {"bound_kg_m2", bound},
-            {"shifted_spread_kg_m2", shifted_spread},
-            {"com_distance_m", c.norm()}},
+           LinkHeadline(link.name, ": inertia " + FormatRatio(spread / bound) +
+                                       " too spread for its " + geometry_kind +
+                                       "; fits as about the link origin"),
+           {{"polar_moment_kg_m2", spread},
+            {"max_for_its_size_kg_m2", bound},
+            {"polar_moment_if_about_origin_kg_m2", shifted_spread},
+            {"com_from_origin_m", c.norm()}},
            "shift it to the center of mass: massprops fix --apply inertia-about-origin-suspect");
   return true;
 }

@@ -96,12 +96,12 @@ bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged) {
             {"bound", bound},
             {"ratio", spread / bound},
             {"half_diagonal", std::sqrt(r2)}},
-           LinkHeadline(link.name) + ": inertia " + FormatRatio(spread / bound) +
-               " too large for its size (mass changed?)",
-           {{"spread_kg_m2", spread},
-            {"bound_kg_m2", bound},
+           LinkHeadline(link.name,
+                        ": inertia " + FormatRatio(spread / bound) + " too large for its size (mass changed?)"),
+           {{"polar_moment_kg_m2", spread},
+            {"max_for_its_size_kg_m2", bound},
             {"ratio", spread / bound},
-            {"reach_m", std::sqrt(r2)}},
+            {"allowed_radius_m", std::sqrt(r2)}},
            "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
   return true;
 }
@@ -245,10 +245,10 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
                "): the mass was probably changed without its inertia, or the inertia comes from "
                "another part",
            {{"moment", worst.moment}, {"hull_bound", worst.bound}, {"ratio", worst.ratio}},
-           LinkHeadline(link.name) + ": inertia " + FormatRatio(worst.ratio) + " too large for its " +
-               judged.geometry_name + " hull (mass changed?)",
-           {{"moment_kg_m2", worst.moment},
-            {"hull_bound_kg_m2", worst.bound},
+           LinkHeadline(link.name, ": inertia " + FormatRatio(worst.ratio) + " too large for its " +
+                                       judged.geometry_name + " hull (mass changed?)"),
+           {{"worst_axis_moment_kg_m2", worst.moment},
+            {"max_for_its_hull_kg_m2", worst.bound},
             {"ratio", worst.ratio}},
            "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
 }
@@ -287,8 +287,9 @@ void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
                          "axis: an inertia written for the part before it was turned)"
                        : " for simplified geometry: an inertia for a larger part, or typed in)"),
            {{"moment", worst.moment}, {"axis_bound", worst.bound}, {"ratio", worst.ratio}},
-           LinkHeadline(link.name) + ": axis moment " + FormatRatio(worst.ratio) + " what its " +
-               geometry + " allows" + (turned ? " (tensor not rotated?)" : " (typed-in inertia?)"),
+           LinkHeadline(link.name, ": axis moment " + FormatRatio(worst.ratio) + " what its " +
+                                       geometry + " allows" +
+                                       (turned ? " (tensor not rotated?)" : " (typed-in inertia?)")),
            {{"moment_kg_m2", worst.moment},
             {"axis_bound_kg_m2", worst.bound},
             {"ratio", worst.ratio},

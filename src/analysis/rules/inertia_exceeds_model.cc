@@ -135,8 +135,9 @@ void CheckInertiaWithinModel(RuleContext& ctx) {
                  Num(reach) + "², so k <= " + Num(reach) + " m (reported beyond " +
                  Num(kModelRatio) + " times, for a model drawn smaller than the machine)",
              {{"radius_of_gyration", k}, {"model_reach", reach}, {"ratio", ratio}, {"mass", m}},
-             LinkHeadline(link.name) + ": radius of gyration " + FormatLength(k) + ", " +
-                 FormatRatio(ratio) + " the whole model's reach of " + FormatLength(reach),
+             LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) + ", " +
+                                         FormatRatio(ratio) + " the whole model's reach of " +
+                                         FormatLength(reach)),
              {{"radius_of_gyration_m", k},
               {"model_reach_m", reach},
               {"ratio", ratio},

@@ -38,7 +38,7 @@ bool CheckInertiaNotFinite(RuleContext& ctx, const Link& link, const std::string
             {"ixy", in.ixy},
             {"ixz", in.ixz},
             {"iyz", in.iyz}},
-           LinkHeadline(link.name) + ": the inertial has a NaN or infinite number",
+           LinkHeadline(link.name, ": the inertial has a NaN or infinite number"),
            {{"ixx_kg_m2", in.ixx},
             {"iyy_kg_m2", in.iyy},
             {"izz_kg_m2", in.izz},

@@ -48,14 +48,17 @@ namespace {
 // inequality fails, as a percentage of the trace ("excess 2.58%"), or in kg·m² when the
 // trace is not positive (negative moments), where a share of it means nothing.
 std::vector<std::pair<std::string, double>> ViolationEvidence(const Validity& v) {
-  std::vector<std::pair<std::string, double>> evidence = {{"moment1_kg_m2", v.moments(0)},
-                                                          {"moment2_kg_m2", v.moments(1)},
-                                                          {"moment3_kg_m2", v.moments(2)}};
+  // First, the deciding number: by how much moment 3 exceeds moments 1 + 2 (the triangle
+  // inequality every body obeys); then the moments (the headline quotes them too).
+  std::vector<std::pair<std::string, double>> evidence;
   if (v.trace > 0) {
-    evidence.emplace_back("excess_percent", 100 * v.excess / v.trace);
+    evidence.emplace_back("triangle_excess_percent", 100 * v.excess / v.trace);
   } else {
-    evidence.emplace_back("excess_kg_m2", v.excess);
+    evidence.emplace_back("triangle_excess_kg_m2", v.excess);
   }
+  evidence.insert(evidence.end(), {{"moment_1_kg_m2", v.moments(0)},
+                                   {"moment_2_kg_m2", v.moments(1)},
+                                   {"moment_3_kg_m2", v.moments(2)}});
   return evidence;
 }
 
@@ -75,9 +78,10 @@ bool CheckInertiaValidity(RuleContext& ctx, int link_index, const std::string& w
         who + ": the inertia about the center of mass is not physically valid: " +
             DescribeViolation(v) + ctx.GroupNote(link_index),
         ValidityValues(v, tol),
-        LinkHeadline(link.name) + ": impossible inertia (moments " +
-            FormatSignificant(v.moments(0)) + " + " + FormatSignificant(v.moments(1)) + " < " +
-            FormatSignificant(v.moments(2)) + ")",
+        LinkHeadline(link.name, ": impossible inertia (moments " +
+                                    FormatSignificant(v.moments(0)) + " + " +
+                                    FormatSignificant(v.moments(1)) + " < " +
+                                    FormatSignificant(v.moments(2)) + ")"),
         ViolationEvidence(v),
         "recompute it from CAD or geometry; massprops fix projects it to the nearest valid one");
     CheckProductsSignWhenInvalid(ctx, link, who);
@@ -88,7 +92,7 @@ bool CheckInertiaValidity(RuleContext& ctx, int link_index, const std::string& w
         who + ": the inertia is valid only within the tolerance " + Num(tol) + " of the trace: " +
             DescribeViolation(v) + " (the body is a thin shape, written with rounded numbers?)",
         ValidityValues(v, tol),
-        LinkHeadline(link.name) + ": inertia valid only within tolerance (thin shape, rounded?)",
+        LinkHeadline(link.name, ": inertia valid only within tolerance (thin shape, rounded?)"),
         ViolationEvidence(v), "write the moments with more digits, or leave it: it is a note");
   }
   return valid;
@@ -107,8 +111,8 @@ void CheckCompositeValidity(RuleContext& ctx, const WeldedGroup& group, const st
           Vec(composite.p_RoScm_R) + " (mass " + Num(composite.mass) +
           ") is not physically valid: " + DescribeViolation(v),
       std::move(values),
-      LinkHeadline(root.name) + "'s welded group of " + std::to_string(group.links.size()) +
-          ": impossible composite inertia",
+      LinkHeadline(root.name, ": impossible composite inertia of its welded group of " +
+                                  std::to_string(group.links.size())),
       [&] {
         std::vector<std::pair<std::string, double>> evidence = ViolationEvidence(v);
         evidence.emplace_back("links_count", static_cast<double>(group.links.size()));

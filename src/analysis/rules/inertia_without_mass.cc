@@ -52,8 +52,8 @@ void CheckInertiaWithoutMass(RuleContext& ctx, int link_index, const std::string
                "): an inertia is that of a body with mass, so the mass was probably lost in an "
                "edit; give it the part's mass, or zero the inertia if the link is only a frame",
            {{"mass", 0}, {"trace", trace}, {"group_share", share}},
-           LinkHeadline(link.name) + ": mass 0 with inertia " + FormatInertia(trace) +
-               " (trace; mass lost in an edit?)",
+           LinkHeadline(link.name, ": mass 0 with inertia " + FormatInertia(trace) +
+                                       " (trace; mass lost in an edit?)"),
            {{"mass_kg", 0}, {"trace_kg_m2", trace}, {"group_share_percent", 100 * share}},
            "give the link its part's mass, or zero the inertia if it is only a frame");
 }

@@ -112,7 +112,7 @@ void CheckInertialMissing(RuleContext& ctx, const WeldedGroup& group, bool mass_
           "; it moves on a joint with mass outboard of it, and nothing welded to it has "
           "mass";
     }
-    std::vector<std::pair<std::string, double>> parts = {{"collisions_count", collisions},
+    std::vector<std::pair<std::string, double>> parts = {{"collision_shapes_count", collisions},
                                                          {"group_mass_kg", group_mass}};
     for (const auto& [name, value] : values) {
       if (name == "collision_volume") parts.emplace_back("collision_volume_m3", value);
@@ -128,7 +128,7 @@ void CheckInertialMissing(RuleContext& ctx, const WeldedGroup& group, bool mass_
                  : "URDF makes it massless)") +
             evidence,
         std::move(values),
-        LinkHeadline(link.name) + " has collision geometry but no <inertial> (mass forgotten?)",
+        LinkHeadline(link.name, " has collision geometry but no <inertial> (mass forgotten?)"),
         std::move(parts),
         "add an <inertial> from CAD, or massprops fix --apply inertial-missing (from geometry)");
   }

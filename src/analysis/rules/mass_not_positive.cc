@@ -32,8 +32,9 @@ void CheckMassNotPositive(RuleContext& ctx, const Link& link, const std::string&
                  " (a mass must be a finite number >= 0; 0 only for a massless frame welded to a "
                  "body)",
              {{"mass", m}},
-             LinkHeadline(link.name) + ": mass " + FormatMass(m) + " is " +
-                 (std::isfinite(m) ? "negative" : "not a number") + "; no body has it",
+             LinkHeadline(link.name, ": mass " + FormatMass(m) + " is " +
+                                         (std::isfinite(m) ? "negative" : "not a number") +
+                                         "; no body has it"),
              {{"mass_kg", m}}, "write the part's mass in kg (0 only for a frame welded to a body)");
   }
 }

@@ -209,14 +209,14 @@ MasslessVerdict CheckMasslessMovingGroup(RuleContext& ctx, const WeldedGroup& gr
   if (hinge.singular) {
     ctx.Emit(kMasslessMovingBody, root, MassLocation(root),
              who + " " + how + " but has zero mass, and " + hinge.why + singular, values,
-             LinkHeadline(root.name) + ": massless, and nothing outboard has mass (singular)",
+             LinkHeadline(root.name, ": massless, and nothing outboard has mass (singular)"),
              evidence, help);
     return MasslessVerdict::kSingular;
   }
   if (const std::optional<std::string> carried = SingularCarriedJoint(ctx, group)) {
     ctx.Emit(kMasslessMovingBody, root, MassLocation(root),
              who + " " + how + " but has zero mass, and " + *carried + singular, values,
-             LinkHeadline(root.name) + ": massless; a joint it carries gets no inertia (singular)",
+             LinkHeadline(root.name, ": massless; a joint it carries gets no inertia (singular)"),
              evidence, help);
     return MasslessVerdict::kSingular;
   }
@@ -227,8 +227,8 @@ MasslessVerdict CheckMasslessMovingGroup(RuleContext& ctx, const WeldedGroup& gr
                "moving body whose mass is below mjMINVAL = 1e-15 unless its compiler options "
                "boundmass/boundinertia raise it (see `massprops check --target mujoco`)",
            values,
-           LinkHeadline(root.name) + ": massless, " + FormatMass(hinge.mass) +
-               " outboard (MuJoCo refuses it)",
+           LinkHeadline(root.name,
+                        ": massless, " + FormatMass(hinge.mass) + " outboard (MuJoCo refuses it)"),
            evidence,
            "check with --target mujoco; a multi-axis joint's cross link may stay massless");
   return MasslessVerdict::kMassOutboard;

@@ -42,8 +42,9 @@ void NoteModelWithoutInertials(RuleContext& ctx, const WeldedGroup& group) {
                  " link(s) the default mass 1 kg and inertia diag(1, 1, 1) kg·m²; fine for a "
                  "kinematic or visual model, wrong for a robot that is simulated",
              {{"links", links}},
-             "model '" + ctx.model.name + "' has no <inertial>: SDF gives its " +
-                 std::to_string(ctx.model.links.size()) + " link(s) 1 kg each",
+             ModelHeadline(ctx.model.name, " has no <inertial>: SDF gives its " +
+                                               std::to_string(ctx.model.links.size()) +
+                                               " link(s) 1 kg each"),
              {{"links_count", links}},
              "fine for a visual model; for simulation add <inertial>s (massprops fix "
              "--from-geometry)");

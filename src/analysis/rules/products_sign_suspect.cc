@@ -53,12 +53,12 @@ void CheckProductsSignWhenInvalid(RuleContext& ctx, const Link& link, const std:
             {"negated_principal_min", vn.moments(0)},
             {"negated_principal_mid", vn.moments(1)},
             {"negated_principal_max", vn.moments(2)}},
-           LinkHeadline(link.name) +
-               ": inertia valid only with ixy, ixz, iyz negated (sign convention?)",
+           LinkHeadline(link.name,
+                        ": inertia valid only with ixy, ixz, iyz negated (sign convention?)"),
            {{"ixy_kg_m2", in.ixy},
             {"ixz_kg_m2", in.ixz},
             {"iyz_kg_m2", in.iyz},
-            {"negated_principal_min_kg_m2", vn.moments(0)}},
+            {"smallest_moment_if_negated_kg_m2", vn.moments(0)}},
            "negate the products (URDF/SDF want -∫xy dm): massprops fix --apply "
            "products-sign-suspect");
 }
@@ -90,8 +90,8 @@ void CheckProductsSignAgainstGeometry(RuleContext& ctx, const JudgedLink& judged
             {"cosine", evidence->cosine},
             {"mismatch_as_written", evidence->mismatch_as_written},
             {"mismatch_negated", evidence->mismatch_negated}},
-           LinkHeadline(link.name) + ": products of inertia opposite its " + judged.geometry_name +
-               "'s (sign or mirror?)",
+           LinkHeadline(link.name, ": products of inertia opposite those of its " +
+                                       judged.geometry_name + " (sign or mirror?)"),
            {{"ixy_kg_m2", in.ixy},
             {"ixz_kg_m2", in.ixz},
             {"iyz_kg_m2", in.iyz},

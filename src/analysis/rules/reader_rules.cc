@@ -46,7 +46,7 @@ void DescribeReaderFinding(Finding& f) {
   const std::size_t read = f.headline.find(" read "), of = f.headline.find(" of link '");
   if (f.rule == kInertialUnreadable && read != std::string::npos && of != std::string::npos &&
       of > read) {
-    f.headline = "link '" + f.link + "': cannot read " + f.headline.substr(read + 6, of - read - 6);
+    f.headline = LinkHeadline(f.link, ": cannot read " + f.headline.substr(read + 6, of - read - 6));
   }
   // "<include> 'uri' cannot be resolved: where it was looked for": the why is under --explain.
   const std::size_t resolved = f.headline.find("cannot be resolved");
@@ -57,10 +57,28 @@ void DescribeReaderFinding(Finding& f) {
   if (f.rule == "inertial-auto") {
     for (const auto& [name, value] : f.values) {
       if (name == "mass") {
-        f.headline = "link '" + f.link + "': <inertial auto> computed as " + FormatMass(value);
+        f.headline = LinkHeadline(f.link, ": <inertial auto> computed as " + FormatMass(value));
       }
     }
   }
+  // A whole sentence within the headline's length however long the names it quotes.
+  const char* fallback = f.rule == kUrdfNotLoadable
+                             ? "ROS's URDF parser will not load the file (--explain says why)"
+                         : f.rule == kInertialUnreadable
+                             ? "a number of an <inertial> cannot be read (--explain says which)"
+                         : f.rule == kIncludeUnresolved
+                             ? "an <include> cannot be resolved (--explain says which)"
+                             : "the reader's full message is under --explain";
+  // "ROS's URDF parser will not load this file: WHAT: DETAIL": urdfdom's WHAT is a sentence.
+  const std::string refuses = "ROS's URDF parser will not load this file: ";
+  if (f.rule == kUrdfNotLoadable && f.headline.rfind(refuses, 0) == 0 &&
+      CountChars(f.headline) > kMaxHeadlineChars) {
+    const std::string reason = f.headline.substr(refuses.size());
+    const std::string shorter =
+        "ROS's URDF parser refuses this file: " + reason.substr(0, reason.find(": "));
+    if (CountChars(shorter) <= kMaxHeadlineChars) f.headline = shorter;
+  }
+  f.headline = HeadlineFromMessage(f.headline, fallback, "--explain says more");
   f.evidence.clear();
   for (const auto& [name, value] : f.values) {
     const bool moment = name.size() == 3 && name[0] == 'i';

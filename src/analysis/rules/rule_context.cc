@@ -50,18 +50,6 @@ std::string Format(const char* format, ...) {
 
 std::string Num(double x) { return FormatPrecision(x, 6); }  // printf's "%.6g"
 
-std::string LinkHeadline(const std::string& link_name) {
-  constexpr std::size_t kMaxName = 32;
-  if (link_name.size() <= kMaxName) return "link '" + link_name + "'";
-  // Cut at UTF-8 character boundaries: keep the start and the end, which tell links apart.
-  std::size_t head = 20, tail = link_name.size() - 11;
-  while (head > 0 && (static_cast<unsigned char>(link_name[head]) & 0xC0) == 0x80) --head;
-  while (tail < link_name.size() && (static_cast<unsigned char>(link_name[tail]) & 0xC0) == 0x80) {
-    ++tail;
-  }
-  return "link '" + link_name.substr(0, head) + "…" + link_name.substr(tail) + "'";
-}
-
 std::string Vec(const Eigen::Vector3d& v) {
   return "(" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + ")";
 }

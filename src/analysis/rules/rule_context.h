@@ -55,9 +55,6 @@ constexpr double kMarkerGeometryMargin = 3;
 constexpr double kMadeUpInertiaShare = 0.05;
 
 std::string Format(const char* format, ...) __attribute__((format(printf, 1, 2)));
-// "link 'name'" for headlines: the name shortened to at most 32 characters ("…" in the middle), so
-// that a long generated name leaves room for what is wrong.
-std::string LinkHeadline(const std::string& link_name);
 // A number as %g with 6 significant digits (enough to recognise the file's numbers).
 std::string Num(double x);
 // "(x, y, z)" with Num.

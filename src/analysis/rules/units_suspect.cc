@@ -318,10 +318,13 @@ bool CheckUnitsAgainstKinematics(RuleContext& ctx, const JudgedLink& judged, dou
             {"ratio", ratio},
             {"mass", m},
             {"trace", judged.I_written.trace()}},
-           LinkHeadline(link.name) + ": radius of gyration " + FormatLength(k) + " is " +
-               FormatRatio(ratio) + " its joints' " + FormatLength(scale.span) + " (" +
-               words.cause + ")",
-           {{"k_m", k}, {"kinematic_span_m", scale.span}, {"ratio", ratio}, {"mass_kg", m}},
+           LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) + " is " +
+                                       FormatRatio(ratio) + " the " + FormatLength(scale.span) +
+                                       " span of its joints (" + words.cause + ")"),
+           {{"radius_of_gyration_m", k},
+            {"joint_span_m", scale.span},
+            {"ratio", ratio},
+            {"mass_kg", m}},
            words.help);
   return true;
 }
@@ -357,9 +360,10 @@ bool CheckUnits(RuleContext& ctx, const JudgedLink& judged) {
                  " m (the link has no geometry of known size): " +
                  CausesWithoutGeometry(judged.I_written, k),
              {{"radius_of_gyration", k}, {"mass", m}, {"trace", trace}},
-             LinkHeadline(link.name) + ": radius of gyration " + FormatLength(k) +
-                 ", over 10 m, no geometry (" + no_geometry.cause + ")",
-             {{"k_m", k}, {"mass_kg", m}, {"trace_kg_m2", trace}}, no_geometry.help);
+             LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) +
+                                         ", over 10 m, no geometry (" + no_geometry.cause + ")"),
+             {{"radius_of_gyration_m", k}, {"mass_kg", m}, {"trace_kg_m2", trace}},
+             no_geometry.help);
     return true;
   }
   const double extent = 0.5 * judged.bounds->box_B.diagonal().norm();
@@ -383,10 +387,14 @@ bool CheckUnits(RuleContext& ctx, const JudgedLink& judged) {
             {"ratio", ratio},
             {"mass", m},
             {"trace", trace}},
-           LinkHeadline(link.name) + ": " + InertiaFactorWords(ratio) + " for its size (" +
-               words.cause +
-               (MeshScaleHint(*judged.bounds, ratio).empty() ? "" : " or mesh in mm?") + ")",
-           {{"k_m", k}, {"half_diagonal_m", extent}, {"k_over_e_ratio", ratio}, {"mass_kg", m}},
+           LinkHeadline(link.name,
+                        ": " + InertiaFactorWords(ratio) + " for its size (" + words.cause +
+                            (MeshScaleHint(*judged.bounds, ratio).empty() ? "" : " or mesh in mm?") +
+                            ")"),
+           {{"radius_of_gyration_m", k},
+            {"half_diagonal_m", extent},
+            {"ratio", ratio},
+            {"mass_kg", m}},
            words.help);
   return true;
 }
@@ -445,13 +453,14 @@ bool CheckMadeUpInertia(RuleContext& ctx, const JudgedLink& judged) {
             {"trace", own},
             {"group_share", share},
             {"other_links", others}},
-           LinkHeadline(link.name) + ": typed-in inertia " +
-               FormatSignificant(judged.I_written(0, 0)) + " is " + FormatSignificant(100 * share) +
-               "% of its welded group's",
-           {{"k_m", k},
+           LinkHeadline(link.name, ": typed-in inertia " +
+                                       FormatSignificant(judged.I_written(0, 0)) + " is " +
+                                       FormatSignificant(100 * share) +
+                                       "% of that of its welded group"),
+           {{"radius_of_gyration_m", k},
             {"mass_kg", m},
             {"trace_kg_m2", own},
-            {"group_share_percent", 100 * share},
+            {"share_of_welded_group_percent", 100 * share},
             {"other_links_count", static_cast<double>(others)}},
            "give the link its part's inertia, or zero if it is only a frame");
   return true;

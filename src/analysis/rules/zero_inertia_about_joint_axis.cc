@@ -49,8 +49,8 @@ void CheckInertiaAboutJointAxis(RuleContext& ctx, const WeldedGroup& group, cons
          {"mass", composite.mass},
          {"trace", I_Ro.trace()},
          {"group_links", static_cast<double>(group.links.size())}},
-        LinkHeadline(root.name) + ": no inertia about its joint's axis (" + FormatInertia(I_axis) +
-            ")",
+        LinkHeadline(root.name,
+                     ": no inertia about the axis of its joint (" + FormatInertia(I_axis) + ")"),
         {{"moment_about_axis_kg_m2", I_axis},
          {"mass_kg", composite.mass},
          {"trace_kg_m2", I_Ro.trace()}},

@@ -157,13 +157,17 @@
     });
   });
 
+  // A finding as `massprops check` words it: "severity: HEADLINE [rule]", then its evidence and
+  // help; the full reasoning (check --explain's "why") in the headline's tooltip.
   function findingNode(f) {
-    return el('div', { class: 'finding ' + f.severity }, [
-      el('div', {}, [el('b', { text: f.severity + ' ' }), el('code', { text: f.rule }),
-                     f.fixed_by_repair ? ' (fix repairs this)' : '']),
-      el('div', { text: f.message }),
-      el('div', { class: 'where', text: where(f.file, f.line) })
-    ]);
+    var parts = [
+      el('div', { title: f.message }, [el('b', { text: f.severity + ': ' }), f.headline + ' ',
+                                       el('code', { text: '[' + f.rule + ']' }),
+                                       f.fixed_by_repair ? ' (fix repairs this)' : ''])];
+    if (f.evidence) parts.push(el('div', { class: 'where', text: 'evidence: ' + f.evidence }));
+    if (f.help) parts.push(el('div', { class: 'where', text: 'help: ' + f.help }));
+    parts.push(el('div', { class: 'where', text: where(f.file, f.line) }));
+    return el('div', { class: 'finding ' + f.severity }, parts);
   }
 
   function showOverview() {
@@ -171,7 +175,10 @@
     node.textContent = '';
     data.errors.forEach(function (e) {
       node.appendChild(el('div', { class: 'finding error' }, [
-        el('div', { text: e.message }), el('div', { class: 'where', text: where(e.file, e.line) })]));
+        el('div', { title: e.message }, [el('b', { text: 'error: ' }), e.headline + ' ',
+                                         el('code', { text: '[read-error]' })]),
+        e.headline === e.message ? '' : el('div', { class: 'where', text: 'why: ' + e.message }),
+        el('div', { class: 'where', text: where(e.file, e.line) })]));
     });
     data.models.forEach(function (m) {
       node.appendChild(el('h2', { text: (m.name || '(unnamed)') + ' (' + m.format + ')' }));
