@@ -79,6 +79,7 @@ TEST(FindingTextTest, HeadlineFallsBackToTheMessage) {
   EXPECT_EQ(HeadlineOf(f), "the whole sentence");
   f.headline = "short";
   EXPECT_EQ(HeadlineOf(f), "short");
+  EXPECT_EQ(HeadlineOf(Finding()), "");  // neither set: nothing to say
 }
 
 // Hand-counted: "link '" (6) + name + "'" (1) + after.

@@ -319,6 +319,7 @@ std::string LeadingClauses(std::string_view text) {
 
 std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
                                 std::string_view more) {
+  if (text.empty()) return "";
   std::string headline = LeadingClauses(text);
   if (!headline.empty()) return headline;
   const std::string plain = WithoutParentheses(text);
