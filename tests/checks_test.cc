@@ -95,6 +95,42 @@ TEST_P(RuleFixtureTest, FindingsHaveAShortHeadlineEvidenceAndHelp) {
   }
 }
 
+// `model` with every link renamed `prefix` + its old name (joints and the root follow).
+Model WithLinkNamesPrefixed(Model model, const std::string& prefix) {
+  for (Link& link : model.links) link.name = prefix + link.name;
+  for (Joint& joint : model.joints) {
+    if (model.FindLink(prefix + joint.parent) >= 0) joint.parent = prefix + joint.parent;
+    if (model.FindLink(prefix + joint.child) >= 0) joint.child = prefix + joint.child;
+  }
+  model.root_link = prefix + model.root_link;
+  return model;
+}
+
+// Issue 43: a headline is a whole sentence of at most 110 characters however long the link
+// names: with 40 more characters each (a generated name) the rule still finds the same links and
+// says so within the limit without "…"; with 200 more, it names none ("this link": file:line and
+// JSON's `link` name it).
+TEST_P(RuleFixtureTest, LongLinkNamesGiveWholeHeadlinesWithinTheLimit) {
+  const Model model = ReadFixture(GetParam());
+  const std::vector<Finding> plain = CheckModel(model);
+  for (const std::size_t extra : {40u, 200u}) {
+    const std::string prefix(extra, 'g');
+    const std::vector<Finding> found = CheckModel(WithLinkNamesPrefixed(model, prefix));
+    ASSERT_EQ(found.size(), plain.size()) << extra;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const Finding& f = found[i];
+      EXPECT_EQ(f.rule, plain[i].rule);
+      EXPECT_EQ(f.link, plain[i].link.empty() ? "" : prefix + plain[i].link);
+      EXPECT_LE(Chars(f.headline), kMaxHeadlineChars) << f.headline;
+      EXPECT_EQ(f.headline.find("\u2026"), std::string::npos) << f.headline;
+      if (extra == 200 && !f.link.empty()) {
+        EXPECT_EQ(f.headline.find(prefix), std::string::npos) << f.headline;
+        EXPECT_NE(f.headline.find("this link"), std::string::npos) << f.headline;
+      }
+    }
+  }
+}
+
 // The headline of units-suspect's fixture, worked out by hand from
 // testdata/check/units-suspect.urdf (a cylinder r 0.05 m, l 0.4 m; mass 2000; ixx = iyy =
 // 0.0279167, izz = 0.0025): k = sqrt(0.0583334 / 4000) = 0.00381882 m; the box 0.1 × 0.1 × 0.4 m

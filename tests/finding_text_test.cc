@@ -79,6 +79,7 @@ TEST(FindingTextTest, HeadlineFallsBackToTheMessage) {
   EXPECT_EQ(HeadlineOf(f), "the whole sentence");
   f.headline = "short";
   EXPECT_EQ(HeadlineOf(f), "short");
+  EXPECT_EQ(HeadlineOf(Finding()), "");  // neither set: nothing to say
 }
 
 // Hand-counted: "link '" (6) + name + "'" (1) + after.
@@ -124,8 +125,9 @@ TEST(FindingTextTest, LinkHeadlineSaysThisLinkWhenTheNameWouldNotFit) {
 }
 
 TEST(FindingTextTest, LinkHeadlineFirstFitKeepsTheNameWithAShorterSentence) {
-  const std::string longer = ": placeholder inertia copied onto 13 links, radius of gyration 4.3x "
-                             "the reach of its assembly";  // 93 characters
+  const std::string longer =
+      ": placeholder inertia copied onto 13 links, radius of gyration 4.3x "
+      "the reach of its assembly";  // 93 characters
   const std::string shorter = ": placeholder inertia on 13 links, 4.3x too wide for its assembly";
   ASSERT_EQ(CountChars(longer), 93u);
   ASSERT_EQ(CountChars(shorter), 65u);
@@ -141,8 +143,9 @@ TEST(FindingTextTest, LinkHeadlineFirstFitKeepsTheNameWithAShorterSentence) {
 TEST(FindingTextTest, LongestLeadThatFitsDropsTheMostSpecificDetailsFromTheEnd) {
   // As an unreadable STL is reported (assimp's reason here 66 characters long): the whole is
   // 84 + 2 + 66 = 152 characters; the lead up to the last ": " is 84.
-  const std::string lead = "link 'a': mesh cannot be used: collision at line 7: mesh file 'g.stl' "
-                           "cannot be read";
+  const std::string lead =
+      "link 'a': mesh cannot be used: collision at line 7: mesh file 'g.stl' "
+      "cannot be read";
   ASSERT_EQ(CountChars(lead), 84u);
   EXPECT_EQ(LongestLeadThatFits(lead + ": " + std::string(66, 'r')), lead);
   // Parenthetical remarks are left out first: "(mesh 'g.stl')" does not count.
@@ -158,10 +161,10 @@ TEST(FindingTextTest, FirstThatFitsTakesTheFullestSentenceThatFits) {
   const std::string twin(80, 't');
   // "link 'arm'" (10) + ": center of mass 2 cm off the mirror image of " (46) + "link '" (6) +
   // 80 + "'" (1) = 143 characters: too long; the second (59) fits.
-  EXPECT_EQ(FirstThatFits({"link 'arm': center of mass 2 cm off the mirror image of link '" + twin +
-                               "'",
-                           "link 'arm': center of mass 2 cm off its twin's mirror image"}),
-            "link 'arm': center of mass 2 cm off its twin's mirror image");
+  EXPECT_EQ(
+      FirstThatFits({"link 'arm': center of mass 2 cm off the mirror image of link '" + twin + "'",
+                     "link 'arm': center of mass 2 cm off its twin's mirror image"}),
+      "link 'arm': center of mass 2 cm off its twin's mirror image");
   EXPECT_EQ(FirstThatFits({"short", "shorter"}), "short");
   // None fits: the last, which its author keeps short.
   EXPECT_EQ(FirstThatFits({std::string(200, 'a'), std::string(120, 'b')}), std::string(120, 'b'));
@@ -181,11 +184,12 @@ TEST(FindingTextTest, HeadlineFromMessageKeepsWholeClausesNeverCutsOne) {
             first + "; " + second);
   // Parenthetical remarks left out keep the sentence whole: tinyxml2's error (as on the corpus's
   // malformed files), 51 characters without its 130-character remark (181 with it).
-  const std::string remark = " (Error=XML_ERROR ErrorID=11 (0xb) Line number=17: " +
-                             std::string(78, 'v') + ")";
+  const std::string remark =
+      " (Error=XML_ERROR ErrorID=11 (0xb) Line number=17: " + std::string(78, 'v') + ")";
   EXPECT_EQ(CountChars(remark), 130u);
-  EXPECT_EQ(HeadlineFromMessage("<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION" + remark, "F"),
-            "<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION");
+  EXPECT_EQ(
+      HeadlineFromMessage("<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION" + remark, "F"),
+      "<sdf>: malformed XML: XML_ERROR_PARSING_DECLARATION");
   // No clause fits: the lead up to the first ": " (what the rest details), and `more`.
   EXPECT_EQ(HeadlineFromMessage("<mesh>: " + std::string(200, 'p'), "F", "more follows"),
             "<mesh>: more follows");

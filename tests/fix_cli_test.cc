@@ -289,7 +289,16 @@ TEST_F(FixCliTest, ErrorsWithoutARepairGiveExitCodeOne) {
             "</robot>\n");
   const ToolRun run = RunTool("fix '" + file.string() + "'", dir_);
   EXPECT_EQ(run.code, 1);
-  EXPECT_NE(run.err.find("[mass-not-positive] (no repair)"), std::string::npos) << run.err;
+  // In `check`'s words: `file:line: error: HEADLINE [rule]`, the headline mass-not-positive's.
+  EXPECT_NE(run.err.find("neg.urdf:1: error: link 'a': mass -2 kg is negative; no body has it "
+                         "[mass-not-positive] (no repair)\n"),
+            std::string::npos)
+      << run.err;
+  const ToolRun check = RunTool("check '" + file.string() + "'", dir_);
+  EXPECT_NE(check.out.find("neg.urdf:1: error: link 'a': mass -2 kg is negative; no body has it "
+                           "[mass-not-positive]\n"),
+            std::string::npos)
+      << check.out;
 }
 
 TEST_F(FixCliTest, UnreadableInputAndBadOptionsGiveExitCodeTwo) {

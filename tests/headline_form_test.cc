@@ -89,8 +89,7 @@ std::string Fault(const std::string& headline) {
 // The (headline, rule) of each line `file:line[:col]: severity: HEADLINE [rule]` of the text
 // output (the xacro source note may follow the rule).
 std::vector<std::pair<std::string, std::string>> TextHeadlines() {
-  const std::regex line_form(
-      R"(^(\S.*?): (error|warning|note): (.*) \[([a-z0-9-]+)\]( \(.*\))?$)");
+  const std::regex line_form(R"(^(\S.*?): (error|warning|note): (.*) \[([a-z0-9-]+)\]( \(.*\))?$)");
   std::vector<std::pair<std::string, std::string>> headlines;
   std::istringstream lines(Outputs().text);
   for (std::string line; std::getline(lines, line);) {

@@ -118,11 +118,10 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
       MakeFinding(kDensityImplausibleRule, severity, model, link.name, MassLocation(link),
                   std::move(message), {{"mass", d.mass}, {"volume", d.volume}, {"density", rho}});
   const bool mesh_in_mm = millimetres >= kMinSolidDensity && millimetres <= kMaxSolidDensity;
-  f.headline = LinkHeadline(link.name, ": density " + FormatSignificant(rho) +
-                                           " kg/m³ over its closed mesh, lighter than foam (" +
-                                           (mesh_in_mm ? "mesh in mm without scale?"
-                                                       : "placeholder mass?") +
-                                           ")");
+  f.headline = LinkHeadline(
+      link.name, ": density " + FormatSignificant(rho) +
+                     " kg/m³ over its closed mesh, lighter than foam (" +
+                     (mesh_in_mm ? "mesh in mm without scale?" : "placeholder mass?") + ")");
   f.evidence = {{"mass_kg", d.mass}, {"volume_m3", d.volume}, {"density_kg_m3", rho}};
   f.help =
       "write the weighed mass, or massprops fix --material LINK=NAME (massprops explain "

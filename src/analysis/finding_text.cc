@@ -193,7 +193,8 @@ std::string EvidenceLabel(std::string_view name) {
   std::string label(name == "ratio" ? name : name.substr(0, name.size() - suffix));
   std::replace(label.begin(), label.end(), '_', ' ');
   // The center of mass is "COM" as robot engineers write it: "com x" → "COM x".
-  for (std::size_t at = label.find("com"); at != std::string::npos; at = label.find("com", at + 3)) {
+  for (std::size_t at = label.find("com"); at != std::string::npos;
+       at = label.find("com", at + 3)) {
     const bool starts = at == 0 || label[at - 1] == ' ';
     const bool ends = at + 3 == label.size() || label[at + 3] == ' ';
     if (starts && ends) label.replace(at, 3, "COM");
@@ -251,8 +252,7 @@ std::string LinkHeadline(std::string_view name, std::string_view after, std::str
   return NamedHeadline("link", name, after, before);
 }
 
-std::string LinkHeadlineFirstFit(std::string_view name,
-                                 std::initializer_list<std::string> afters) {
+std::string LinkHeadlineFirstFit(std::string_view name, std::initializer_list<std::string> afters) {
   std::string last;
   for (const std::string& after : afters) {
     std::string named = "link '";
@@ -263,8 +263,7 @@ std::string LinkHeadlineFirstFit(std::string_view name,
   return "this link" + last;
 }
 
-std::string ModelHeadline(std::string_view name, std::string_view after,
-                          std::string_view before) {
+std::string ModelHeadline(std::string_view name, std::string_view after, std::string_view before) {
   return NamedHeadline("model", name, after, before);
 }
 
@@ -319,6 +318,7 @@ std::string LeadingClauses(std::string_view text) {
 
 std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
                                 std::string_view more) {
+  if (text.empty()) return "";
   std::string headline = LeadingClauses(text);
   if (!headline.empty()) return headline;
   const std::string plain = WithoutParentheses(text);

@@ -108,7 +108,6 @@ const char* GithubCommand(Severity severity) {
   return "notice";
 }
 
-
 std::string Escape(std::string_view text, bool property) {
   std::string out;
   out.reserve(text.size());
@@ -367,10 +366,9 @@ std::string DetailLines(const std::vector<const Finding*>& group, const ReportOp
   const std::string lead = options.color ? std::string(kDim) + "  = " : "  = ";
   const std::string end = options.color ? std::string(kReset) + "\n" : "\n";
   std::string out;
-  const std::string evidence =
-      first.evidence.empty() ? ""
-      : group.size() > 1     ? GroupEvidence(group)
-                             : FormatEvidence(first.evidence);
+  const std::string evidence = first.evidence.empty() ? ""
+                               : group.size() > 1     ? GroupEvidence(group)
+                                                      : FormatEvidence(first.evidence);
   if (!evidence.empty()) {
     out += lead + CutToChars("evidence: " + ShortenLongWords(evidence), kMaxDetailChars - 4) + end;
   }

@@ -77,7 +77,7 @@ std::string FirstThatFits(std::initializer_list<std::string> sentences);
 /// cutting a word or a name: the text itself when it fits kMaxHeadlineChars; else its leading
 /// clauses up to a "; " that fit (each clause a sentence of its own); else the same of the text
 /// without its parenthetical remarks " (...)"; else its lead up to the first ": " (the element
-/// or the subject) followed by ": " and `more`; else `fallback`, a whole sentence.
+/// or the subject) followed by ": " and `more`; else `fallback`, a whole sentence. "" for "".
 std::string HeadlineFromMessage(std::string_view text, std::string_view fallback,
                                 std::string_view more = "the full message says more");
 

@@ -135,8 +135,8 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
 /// {"version", "files": [{"path", "format", "models", "findings": [{"rule", "severity", "model",
 /// "link", "file", "line", "column", "message", "headline", "evidence": {name: number}, "help",
 /// "values": {name: number}}], "errors": [{"file",
-/// "line", "column", "element", "message", "headline"}]}], "summary": {"files", "errors", "warnings", "notes",
-/// "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
+/// "line", "column", "element", "message", "headline"}]}], "summary": {"files", "errors",
+/// "warnings", "notes", "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
 /// "first_unresolved_mesh" (a string, or null when none), "mesh_resolution"}}. Each file also
 /// has "mesh_links", "mesh_links_unresolved", "mesh_resolution" ({"flag", "repository-package",
 /// "ancestor", "environment", "beside-file", "relative", "absolute", "unresolved"}: its distinct

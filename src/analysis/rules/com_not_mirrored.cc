@@ -223,9 +223,9 @@ double OffCenter(const Eigen::Vector3d& c, const std::optional<Eigen::AlignedBox
 // named when both names fit, else "its twin" (the help names it).
 std::string MirrorHeadline(const std::string& bad, const std::string& good, bool com_bad,
                            double com_miss) {
-  const std::string what = com_bad ? ": center of mass " + FormatLength(com_miss) +
-                                         " off the mirror image of "
-                                   : std::string(": products of inertia do not mirror those of ");
+  const std::string what =
+      com_bad ? ": center of mass " + FormatLength(com_miss) + " off the mirror image of "
+              : std::string(": products of inertia do not mirror those of ");
   const std::string twin = com_bad ? "its twin's" : "its twin";
   return FirstThatFits({"link '" + bad + "'" + what + "link '" + good + "' (copied unmirrored?)",
                         LinkHeadline(bad, what + twin + " (copied unmirrored?)")});
@@ -278,9 +278,9 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
            {{"com_off_mirror_image_m", m.com_miss},
             {"products_off_mirror_image_percent", 100 * m.products_miss},
             {"mirror_plane_offset_m", m.offset}},
-           m.com_bad ? "write " + Vec(expected) + " in the model frame: the mirror image of the COM of '" +
-                           good.name + "' across " + std::string(1, axis_name) + " = " +
-                           FormatLength(m.offset)
+           m.com_bad ? "write " + Vec(expected) +
+                           " in the model frame: the mirror image of the COM of '" + good.name +
+                           "' across " + std::string(1, axis_name) + " = " + FormatLength(m.offset)
                      : "write on '" + bad.name + "' the products of '" + good.name +
                            "', negated where the mirror plane flips them");
 }

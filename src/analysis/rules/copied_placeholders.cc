@@ -155,13 +155,12 @@ void ReportCopies(RuleContext& ctx, const std::vector<int>& copies, bool typed_i
               {"ratio", ratio},
               {"mass", in.mass},
               {"copies", static_cast<double>(copies.size())}},
-             LinkHeadlineFirstFit(link.name, {": placeholder inertia copied onto " +
-                                                  std::to_string(copies.size()) +
-                                                  " links, radius of gyration " +
-                                                  FormatRatio(ratio) + " the reach of its assembly",
-                                              ": placeholder inertia on " +
-                                                  std::to_string(copies.size()) + " links, " +
-                                                  FormatRatio(ratio) + " too wide for its assembly"}),
+             LinkHeadlineFirstFit(
+                 link.name, {": placeholder inertia copied onto " + std::to_string(copies.size()) +
+                                 " links, radius of gyration " + FormatRatio(ratio) +
+                                 " the reach of its assembly",
+                             ": placeholder inertia on " + std::to_string(copies.size()) +
+                                 " links, " + FormatRatio(ratio) + " too wide for its assembly"}),
              {{"radius_of_gyration_m", k},
               {"assembly_reach_m", a.reach},
               {"ratio", ratio},

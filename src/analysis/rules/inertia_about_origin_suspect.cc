@@ -50,30 +50,30 @@ bool CheckInertiaAboutOrigin(RuleContext& ctx, const JudgedLink& judged, const G
       !c.isZero(0) && IsValid(I_shifted, tol) && shifted_spread - bound <= tol * bound;
   if (!shifted_fits) return false;
   const Validity vs = Analyze(I_shifted);
-  ctx.Emit(kInertiaAboutOriginSuspect, link, InertiaLocation(link),
-           judged.who + ": the inertia needs more room than the " + geometry_kind +
-               " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
-               " kg·m² about the center o of its bounding box, r = " + Num(allowance * margin) +
-               " × half-diagonal = " + Num(std::sqrt(r2)) +
-               " m), but taken as the inertia about the link origin and shifted to the center "
-               "of mass " +
-               Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) + ", " +
-               Num(vs.moments(1)) + ", " + Num(vs.moments(2)) +
-               "): it was probably written about the link origin",
-           {{"spread", spread},
-            {"bound", bound},
-            {"shifted_spread", shifted_spread},
-            {"shifted_principal_min", vs.moments(0)},
-            {"shifted_principal_mid", vs.moments(1)},
-            {"shifted_principal_max", vs.moments(2)}},
-           LinkHeadline(link.name, ": inertia " + FormatRatio(spread / bound) +
-                                       " too spread for its " + geometry_kind +
-                                       "; fits as about the link origin"),
-           {{"polar_moment_kg_m2", spread},
-            {"max_for_its_size_kg_m2", bound},
-            {"polar_moment_if_about_origin_kg_m2", shifted_spread},
-            {"com_from_origin_m", c.norm()}},
-           "shift it to the center of mass: massprops fix --apply inertia-about-origin-suspect");
+  ctx.Emit(
+      kInertiaAboutOriginSuspect, link, InertiaLocation(link),
+      judged.who + ": the inertia needs more room than the " + geometry_kind +
+          " geometry gives (∫|x - o|² dm = " + Num(spread) + " > m·r² = " + Num(bound) +
+          " kg·m² about the center o of its bounding box, r = " + Num(allowance * margin) +
+          " × half-diagonal = " + Num(std::sqrt(r2)) +
+          " m), but taken as the inertia about the link origin and shifted to the center "
+          "of mass " +
+          Vec(c) + " it is valid and fits (principal moments " + Num(vs.moments(0)) + ", " +
+          Num(vs.moments(1)) + ", " + Num(vs.moments(2)) +
+          "): it was probably written about the link origin",
+      {{"spread", spread},
+       {"bound", bound},
+       {"shifted_spread", shifted_spread},
+       {"shifted_principal_min", vs.moments(0)},
+       {"shifted_principal_mid", vs.moments(1)},
+       {"shifted_principal_max", vs.moments(2)}},
+      LinkHeadline(link.name, ": inertia " + FormatRatio(spread / bound) + " too spread for its " +
+                                  geometry_kind + "; fits as about the link origin"),
+      {{"polar_moment_kg_m2", spread},
+       {"max_for_its_size_kg_m2", bound},
+       {"polar_moment_if_about_origin_kg_m2", shifted_spread},
+       {"com_from_origin_m", c.norm()}},
+      "shift it to the center of mass: massprops fix --apply inertia-about-origin-suspect");
   return true;
 }
 

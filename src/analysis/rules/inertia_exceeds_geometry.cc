@@ -96,8 +96,8 @@ bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged) {
             {"bound", bound},
             {"ratio", spread / bound},
             {"half_diagonal", std::sqrt(r2)}},
-           LinkHeadline(link.name,
-                        ": inertia " + FormatRatio(spread / bound) + " too large for its size (mass changed?)"),
+           LinkHeadline(link.name, ": inertia " + FormatRatio(spread / bound) +
+                                       " too large for its size (mass changed?)"),
            {{"polar_moment_kg_m2", spread},
             {"max_for_its_size_kg_m2", bound},
             {"ratio", spread / bound},

@@ -78,9 +78,8 @@ bool CheckInertiaValidity(RuleContext& ctx, int link_index, const std::string& w
         who + ": the inertia about the center of mass is not physically valid: " +
             DescribeViolation(v) + ctx.GroupNote(link_index),
         ValidityValues(v, tol),
-        LinkHeadline(link.name, ": impossible inertia (moments " +
-                                    FormatSignificant(v.moments(0)) + " + " +
-                                    FormatSignificant(v.moments(1)) + " < " +
+        LinkHeadline(link.name, ": impossible inertia (moments " + FormatSignificant(v.moments(0)) +
+                                    " + " + FormatSignificant(v.moments(1)) + " < " +
                                     FormatSignificant(v.moments(2)) + ")"),
         ViolationEvidence(v),
         "recompute it from CAD or geometry; massprops fix projects it to the nearest valid one");

@@ -39,28 +39,28 @@ void CheckProductsSignWhenInvalid(RuleContext& ctx, const Link& link, const std:
   I_negated.diagonal() = I_written.diagonal();
   if (!IsValid(I_negated, ctx.options.tolerance)) return;
   const Validity vn = Analyze(I_negated);
-  ctx.Emit(kProductsSignSuspect, link, InertiaLocation(link),
-           who +
-               ": the inertia is invalid as written but valid with the products of inertia "
-               "negated (ixy, ixz, iyz = " +
-               Num(in.ixy) + ", " + Num(in.ixz) + ", " + Num(in.iyz) +
-               "; negated, the principal moments are " + Num(vn.moments(0)) + ", " +
-               Num(vn.moments(1)) + ", " + Num(vn.moments(2)) +
-               "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
-           {{"ixy", in.ixy},
-            {"ixz", in.ixz},
-            {"iyz", in.iyz},
-            {"negated_principal_min", vn.moments(0)},
-            {"negated_principal_mid", vn.moments(1)},
-            {"negated_principal_max", vn.moments(2)}},
-           LinkHeadline(link.name,
-                        ": inertia valid only with ixy, ixz, iyz negated (sign convention?)"),
-           {{"ixy_kg_m2", in.ixy},
-            {"ixz_kg_m2", in.ixz},
-            {"iyz_kg_m2", in.iyz},
-            {"smallest_moment_if_negated_kg_m2", vn.moments(0)}},
-           "negate the products (URDF/SDF want -∫xy dm): massprops fix --apply "
-           "products-sign-suspect");
+  ctx.Emit(
+      kProductsSignSuspect, link, InertiaLocation(link),
+      who +
+          ": the inertia is invalid as written but valid with the products of inertia "
+          "negated (ixy, ixz, iyz = " +
+          Num(in.ixy) + ", " + Num(in.ixz) + ", " + Num(in.iyz) +
+          "; negated, the principal moments are " + Num(vn.moments(0)) + ", " + Num(vn.moments(1)) +
+          ", " + Num(vn.moments(2)) +
+          "): the exporter probably wrote +∫xy dm where URDF/SDF expect -∫xy dm",
+      {{"ixy", in.ixy},
+       {"ixz", in.ixz},
+       {"iyz", in.iyz},
+       {"negated_principal_min", vn.moments(0)},
+       {"negated_principal_mid", vn.moments(1)},
+       {"negated_principal_max", vn.moments(2)}},
+      LinkHeadline(link.name, ": inertia valid only with ixy, ixz, iyz negated (sign convention?)"),
+      {{"ixy_kg_m2", in.ixy},
+       {"ixz_kg_m2", in.ixz},
+       {"iyz_kg_m2", in.iyz},
+       {"smallest_moment_if_negated_kg_m2", vn.moments(0)}},
+      "negate the products (URDF/SDF want -∫xy dm): massprops fix --apply "
+      "products-sign-suspect");
 }
 
 void CheckProductsSignAgainstGeometry(RuleContext& ctx, const JudgedLink& judged) {

@@ -46,7 +46,8 @@ void DescribeReaderFinding(Finding& f) {
   const std::size_t read = f.headline.find(" read "), of = f.headline.find(" of link '");
   if (f.rule == kInertialUnreadable && read != std::string::npos && of != std::string::npos &&
       of > read) {
-    f.headline = LinkHeadline(f.link, ": cannot read " + f.headline.substr(read + 6, of - read - 6));
+    f.headline =
+        LinkHeadline(f.link, ": cannot read " + f.headline.substr(read + 6, of - read - 6));
   }
   // "<include> 'uri' cannot be resolved: where it was looked for": the why is under --explain.
   const std::size_t resolved = f.headline.find("cannot be resolved");
@@ -62,13 +63,12 @@ void DescribeReaderFinding(Finding& f) {
     }
   }
   // A whole sentence within the headline's length however long the names it quotes.
-  const char* fallback = f.rule == kUrdfNotLoadable
-                             ? "ROS's URDF parser will not load the file (--explain says why)"
-                         : f.rule == kInertialUnreadable
-                             ? "a number of an <inertial> cannot be read (--explain says which)"
-                         : f.rule == kIncludeUnresolved
-                             ? "an <include> cannot be resolved (--explain says which)"
-                             : "the reader's full message is under --explain";
+  const char* fallback =
+      f.rule == kUrdfNotLoadable ? "ROS's URDF parser will not load the file (--explain says why)"
+      : f.rule == kInertialUnreadable
+          ? "a number of an <inertial> cannot be read (--explain says which)"
+      : f.rule == kIncludeUnresolved ? "an <include> cannot be resolved (--explain says which)"
+                                     : "the reader's full message is under --explain";
   // "ROS's URDF parser will not load this file: WHAT: DETAIL": urdfdom's WHAT is a sentence.
   const std::string refuses = "ROS's URDF parser will not load this file: ";
   if (f.rule == kUrdfNotLoadable && f.headline.rfind(refuses, 0) == 0 &&

@@ -256,6 +256,12 @@ void RuleContext::Emit(const std::string& rule, const Link& link, const SourceLo
                        std::string help) {
   Finding* f = Emit(rule, link, location, std::move(message), std::move(values));
   if (f == nullptr) return;
+  // A headline "link 'NAME'..." written without LinkHeadline that came out too long: the same
+  // sentence as LinkHeadline writes it (without the guessed cause, or about "this link").
+  const std::string named = "link '" + link.name + "'";
+  if (CountChars(headline) > kMaxHeadlineChars && headline.rfind(named, 0) == 0) {
+    headline = LinkHeadline(link.name, std::string_view(headline).substr(named.size()));
+  }
   f->headline = std::move(headline);
   f->evidence = std::move(evidence);
   f->help = std::move(help);

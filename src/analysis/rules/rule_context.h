@@ -156,7 +156,8 @@ class RuleContext {
   Finding* Emit(const std::string& rule, const Link& link, const SourceLocation& location,
                 std::string message, std::vector<std::pair<std::string, double>> values);
   // Emit, and the finding's headline, evidence and help (checks.h; numbers written with
-  // finding_text.h).
+  // finding_text.h). A headline that starts "link 'NAME'" and is longer than kMaxHeadlineChars
+  // is rewritten as LinkHeadline(NAME, rest) writes it.
   void Emit(const std::string& rule, const Link& link, const SourceLocation& location,
             std::string message, std::vector<std::pair<std::string, double>> values,
             std::string headline, std::vector<std::pair<std::string, double>> evidence,

@@ -308,24 +308,22 @@ bool CheckUnitsAgainstKinematics(RuleContext& ctx, const JudgedLink& judged, dou
                                      : "its geometry's size is unknown (a mesh not read)")
           : judged.unjudged_because;
   const CauseWords words = LikelyCause(judged.I_written, ratio);
-  ctx.Emit(kUnitsSuspect, link, InertiaLocation(link),
-           judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " +
-               Num(ratio) + " times the " + Num(scale.span) + " m its kinematic tree gives it (" +
-               scale.evidence + "; " + because + "; expected at most " + Num(limit) +
-               "): " + Causes(judged.I_written, m, ratio, scale.span),
-           {{"radius_of_gyration", k},
-            {"kinematic_span", scale.span},
-            {"ratio", ratio},
-            {"mass", m},
-            {"trace", judged.I_written.trace()}},
-           LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) + " is " +
-                                       FormatRatio(ratio) + " the " + FormatLength(scale.span) +
-                                       " span of its joints (" + words.cause + ")"),
-           {{"radius_of_gyration_m", k},
-            {"joint_span_m", scale.span},
-            {"ratio", ratio},
-            {"mass_kg", m}},
-           words.help);
+  ctx.Emit(
+      kUnitsSuspect, link, InertiaLocation(link),
+      judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
+          " times the " + Num(scale.span) + " m its kinematic tree gives it (" + scale.evidence +
+          "; " + because + "; expected at most " + Num(limit) +
+          "): " + Causes(judged.I_written, m, ratio, scale.span),
+      {{"radius_of_gyration", k},
+       {"kinematic_span", scale.span},
+       {"ratio", ratio},
+       {"mass", m},
+       {"trace", judged.I_written.trace()}},
+      LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) + " is " +
+                                  FormatRatio(ratio) + " the " + FormatLength(scale.span) +
+                                  " span of its joints (" + words.cause + ")"),
+      {{"radius_of_gyration_m", k}, {"joint_span_m", scale.span}, {"ratio", ratio}, {"mass_kg", m}},
+      words.help);
   return true;
 }
 
@@ -377,25 +375,23 @@ bool CheckUnits(RuleContext& ctx, const JudgedLink& judged) {
   if (!(too_large || too_small)) return false;
   // A solid body filling its box has k ≈ 0.5·extent: judge the factor against that.
   const CauseWords words = LikelyCause(judged.I_written, ratio);
-  ctx.Emit(kUnitsSuspect, link, InertiaLocation(link),
-           judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " +
-               Num(ratio) + " times the half-diagonal " + Num(extent) + " m of its " +
-               judged.geometry_name + " geometry (expected " + "about 0.3 to 1): " +
-               Causes(judged.I_written, m, ratio, extent) + MeshScaleHint(*judged.bounds, ratio),
-           {{"radius_of_gyration", k},
-            {"geometry_half_diagonal", extent},
-            {"ratio", ratio},
-            {"mass", m},
-            {"trace", trace}},
-           LinkHeadline(link.name,
-                        ": " + InertiaFactorWords(ratio) + " for its size (" + words.cause +
-                            (MeshScaleHint(*judged.bounds, ratio).empty() ? "" : " or mesh in mm?") +
-                            ")"),
-           {{"radius_of_gyration_m", k},
-            {"half_diagonal_m", extent},
-            {"ratio", ratio},
-            {"mass_kg", m}},
-           words.help);
+  ctx.Emit(
+      kUnitsSuspect, link, InertiaLocation(link),
+      judged.who + ": radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " + Num(ratio) +
+          " times the half-diagonal " + Num(extent) + " m of its " + judged.geometry_name +
+          " geometry (expected " + "about 0.3 to 1): " +
+          Causes(judged.I_written, m, ratio, extent) + MeshScaleHint(*judged.bounds, ratio),
+      {{"radius_of_gyration", k},
+       {"geometry_half_diagonal", extent},
+       {"ratio", ratio},
+       {"mass", m},
+       {"trace", trace}},
+      LinkHeadline(link.name,
+                   ": " + InertiaFactorWords(ratio) + " for its size (" + words.cause +
+                       (MeshScaleHint(*judged.bounds, ratio).empty() ? "" : " or mesh in mm?") +
+                       ")"),
+      {{"radius_of_gyration_m", k}, {"half_diagonal_m", extent}, {"ratio", ratio}, {"mass_kg", m}},
+      words.help);
   return true;
 }
 
@@ -453,10 +449,9 @@ bool CheckMadeUpInertia(RuleContext& ctx, const JudgedLink& judged) {
             {"trace", own},
             {"group_share", share},
             {"other_links", others}},
-           LinkHeadline(link.name, ": typed-in inertia " +
-                                       FormatSignificant(judged.I_written(0, 0)) + " is " +
-                                       FormatSignificant(100 * share) +
-                                       "% of that of its welded group"),
+           LinkHeadline(link.name,
+                        ": typed-in inertia " + FormatSignificant(judged.I_written(0, 0)) + " is " +
+                            FormatSignificant(100 * share) + "% of that of its welded group"),
            {{"radius_of_gyration_m", k},
             {"mass_kg", m},
             {"trace_kg_m2", own},
