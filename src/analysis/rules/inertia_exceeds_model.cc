@@ -117,9 +117,6 @@ void CheckInertiaWithinModel(RuleContext& ctx) {
     const double m = props.mass, trace = props.I_SScm_F.trace();
     if (!(m > kDummyMass) || !std::isfinite(m) || !(trace > 0) || !std::isfinite(trace)) continue;
     if (!props.p_FoScm_F.allFinite() || AlreadyTooLarge(ctx, link)) continue;
-    // A link drawn by geometry of its own is judged by it (inertia-exceeds-geometry, with its
-    // allowance for simplified geometry); the model bounds the others.
-    if (Drawn(ctx, static_cast<int>(l))) continue;
     const Eigen::Vector3d c = poses.X_WL[l].p_AB + poses.X_WL[l].R_AB * props.p_FoScm_F;
     double reach = 0;
     for (const Eigen::Vector3d& p : corners[root]) reach = std::max(reach, (p - c).norm());
