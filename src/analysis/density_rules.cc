@@ -271,8 +271,9 @@ const std::vector<RuleInfo>& DensityRules() {
   static const std::vector<RuleInfo> kRules = {
       {kDensityImplausibleRule, Severity::kWarning, true,
        "A link's mass over the volume of its closed meshes is a density no solid part has "
-       "(below 100 kg/m³: only foams); markers (meshes that would hold at most 1 g at that "
-       "density, or 5% of their welded group) are not judged."},
+       "(below 100 kg/m³: only foams; above 1.1 times lead where the inertia is the mesh's own "
+       "uniform solid); markers (meshes that would hold at most 1 g at 100 kg/m³, or 5% of "
+       "their welded group) are not judged."},
       {kCadDefaultDensityRule, Severity::kWarning, true,
        "Every link with closed meshes (at least 2) has mass = volume × 1000 kg/m³ within 1%: the "
        "CAD export had no material (SolidWorks' default density); said once per model."},
