@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,9 +25,8 @@ namespace {
 
 const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/round3/";
 
-// Checks the fixture as `massprops check` does by default.
-std::vector<Finding> Check(const std::string& name) {
-  const std::string file = kDir + name + ".urdf";
+// Checks the file as `massprops check` does by default.
+std::vector<Finding> CheckFile(const std::string& file) {
   const ReadResult read = ReadModelFile(file);
   EXPECT_TRUE(read.ok()) << file;
   if (read.models.empty()) return {};
@@ -39,6 +41,9 @@ std::vector<Finding> Check(const std::string& name) {
   options.closed_mesh = MakeClosedMeshShapeFunction(resolve);
   return CheckModel(read.models[0], options);
 }
+
+// Checks the fixture as `massprops check` does by default.
+std::vector<Finding> Check(const std::string& name) { return CheckFile(kDir + name + ".urdf"); }
 
 std::vector<Finding> Select(const std::vector<Finding>& findings, const std::string& rule) {
   std::vector<Finding> out;
@@ -236,6 +241,34 @@ TEST(WarningsRound3Test, APartDenserThanLeadWhoseInertiaIsItsMeshsIsReported) {
   EXPECT_FALSE(Flags(findings, "servo_bracket")) << Dump(findings);
   EXPECT_FALSE(Flags(findings, "counterweight")) << Dump(findings);
   EXPECT_FALSE(Flags(findings, "motor")) << Dump(findings);
+  ExpectReadableHeadlines(dense);
+}
+
+// The same segment under a 70-character name: the headline is a shorter whole sentence within
+// 110 characters, the name whole, nothing cut.
+TEST(WarningsRound3Test, ADenserThanLeadHeadlineForALongNameIsAShorterSentence) {
+  std::ifstream in(kDir + "denser-than-lead.urdf");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string urdf = text.str();
+  const std::string name(70, 's');
+  for (std::size_t at = urdf.find("\"segment\""); at != std::string::npos;
+       at = urdf.find("\"segment\"", at + 1)) {
+    urdf.replace(at + 1, 7, name);
+  }
+  const std::string mesh = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh/box_ascii.stl";
+  for (std::size_t at = urdf.find("../../mesh/box_ascii.stl"); at != std::string::npos;
+       at = urdf.find("../../mesh/box_ascii.stl", at + 1)) {
+    urdf.replace(at, 24, mesh);
+  }
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "massprops_round3_long_name.urdf";
+  std::ofstream(file) << urdf;
+  const std::vector<Finding> dense = Select(CheckFile(file.string()), "density-implausible");
+  std::filesystem::remove(file);
+  ASSERT_EQ(dense.size(), 1u);
+  EXPECT_EQ(dense[0].link, name);
+  EXPECT_EQ(dense[0].headline, "link '" + name + "': denser than lead (14300 kg/m³)");
   ExpectReadableHeadlines(dense);
 }
 

@@ -91,7 +91,8 @@ Finding MakeFinding(const char* rule, Severity severity, const Model& model, std
 // lead counterweight's density by well under 10%).
 constexpr double kLeadDensity = 11340;
 constexpr double kDenseMargin = 1.1;
-constexpr double kSteelDensity = 7850;  // what the part would weigh in steel, for the evidence
+constexpr double kSteelDensity = 7850;
+constexpr std::size_t kMaxHeadlineChars = 110;  // a headline's longest (issue 43)  // what the part would weigh in steel, for the evidence
 // The written inertial is the closed meshes' own uniform solid at the written mass when every
 // principal moment is within kSolidMatch of the solid's trace and the center of mass within
 // kSolidMatch of the solid's radius of gyration from its centroid: what an exporter that
@@ -157,6 +158,10 @@ std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, S
                            {"com_offset", fit.com_m}});
   f.headline = "link '" + link.name + "': density " + FormatSignificant(rho) +
                " kg/m³, denser than lead, with its mesh's own inertia";
+  if (f.headline.size() > kMaxHeadlineChars) {  // a long name: a shorter sentence, never a cut one
+    f.headline = "link '" + link.name + "': denser than lead (" + FormatSignificant(rho) +
+                 " kg/m³)";
+  }
   f.evidence = {{"mass_kg", d.mass},
                 {"volume_m3", d.volume},
                 {"density_kg_m3", rho},
