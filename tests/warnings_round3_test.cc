@@ -76,8 +76,9 @@ std::string Dump(const std::vector<Finding>& findings) {
 }
 
 bool Flags(const std::vector<Finding>& findings, const std::string& link) {
-  return std::any_of(findings.begin(), findings.end(),
-                     [&](const Finding& f) { return f.link == link && f.severity != Severity::kNote; });
+  return std::any_of(findings.begin(), findings.end(), [&](const Finding& f) {
+    return f.link == link && f.severity != Severity::kNote;
+  });
 }
 
 // Every headline a whole sentence of at most 110 characters, without an ellipsis.

@@ -52,7 +52,7 @@ struct LinkDensity {
 // logo badge or an antenna stub on a robot's body: whatever it weighs, the body it is welded to
 // does not change). Its density means nothing. A small mass on a part of real size that moves on
 // its own (a 1 g placeholder on a 4 x 9 x 6 cm gripper finger, 37 kg/m³) is judged.
-constexpr double kDummyMass = 1e-3;   // kg
+constexpr double kDummyMass = 1e-3;    // kg
 constexpr double kMarkerShare = 0.05;  // 5%: about what mass identification achieves
 
 // "PLA 0.034 kg, ABS 0.028 kg, ..." for a volume (m³), over the common materials.
@@ -91,8 +91,7 @@ Finding MakeFinding(const char* rule, Severity severity, const Model& model, std
 // lead counterweight's density by well under 10%).
 constexpr double kLeadDensity = 11340;
 constexpr double kDenseMargin = 1.1;
-constexpr double kSteelDensity = 7850;
-constexpr std::size_t kMaxHeadlineChars = 110;  // a headline's longest (issue 43)  // what the part would weigh in steel, for the evidence
+constexpr double kSteelDensity = 7850;  // what the part would weigh in steel, for the evidence
 // The written inertial is the closed meshes' own uniform solid at the written mass when every
 // principal moment is within kSolidMatch of the solid's trace and the center of mass within
 // kSolidMatch of the solid's radius of gyration from its centroid: what an exporter that
@@ -140,8 +139,8 @@ std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, S
       std::string("its closed ") + (d.from_collision ? "collision" : "visual") + " mesh";
   std::string message =
       "link '" + link.name + "': mass " + Num(d.mass) + " kg over the volume " + Num(d.volume) +
-      " m³ of " + what + " is a density of " + Num(rho) + " kg/m³, more than " +
-      Num(kDenseMargin) + " times lead's 11340 kg/m³ (only tungsten alloys, 17000-19300, are " +
+      " m³ of " + what + " is a density of " + Num(rho) + " kg/m³, more than " + Num(kDenseMargin) +
+      " times lead's 11340 kg/m³ (only tungsten alloys, 17000-19300, are " +
       "denser among the metals parts are made of); and its inertia is that mesh's as a uniform " +
       "solid of this mass (principal moments within " + Num(100 * fit.moments) +
       "% of the trace, center of mass " + Num(fit.com_m) +
@@ -159,8 +158,8 @@ std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, S
   f.headline = "link '" + link.name + "': density " + FormatSignificant(rho) +
                " kg/m³, denser than lead, with its mesh's own inertia";
   if (f.headline.size() > kMaxHeadlineChars) {  // a long name: a shorter sentence, never a cut one
-    f.headline = "link '" + link.name + "': denser than lead (" + FormatSignificant(rho) +
-                 " kg/m³)";
+    f.headline =
+        "link '" + link.name + "': denser than lead (" + FormatSignificant(rho) + " kg/m³)";
   }
   f.evidence = {{"mass_kg", d.mass},
                 {"volume_m3", d.volume},
@@ -300,7 +299,8 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
     if (!(mass > 0) || !std::isfinite(mass)) continue;
     const std::optional<LinkShape> shape = options.closed_mesh(link);
     if (!shape || !(shape->volume > 0) || !std::isfinite(shape->volume)) continue;
-    densities.push_back({static_cast<int>(i), mass, shape->volume, shape->from_collision, 0, *shape});
+    densities.push_back(
+        {static_cast<int>(i), mass, shape->volume, shape->from_collision, 0, *shape});
   }
   if (!densities.empty()) {
     std::vector<double> group_mass(model.links.size(), 0);
