@@ -96,20 +96,27 @@ TEST(DensityRulesTest, CadDefaultDensityIsSilentWhenOneLinkHasAMaterialOrOnlyOne
   EXPECT_TRUE(Of(CheckModel(model), kCadDefaultDensityRule).empty());
 }
 
-TEST(DensityRulesTest, DensityImplausibleFiresBelowFoamsAndAboveOsmium) {
+TEST(DensityRulesTest, DensityImplausibleFiresBelowFoamsAndAboveLeadWhereTheMassIsTheMeshs) {
   MeshCache cache;
   const Model model = Read(kMassDir + "implausible.urdf");
   const std::vector<Finding> found =
       Of(CheckWithMeshes(model, {}, &cache), kDensityImplausibleRule);
-  // light only: heavy, denser than osmium, is a mass its mesh does not draw (docs/rules.md).
-  ASSERT_EQ(found.size(), 1u);
-  // light: 0.0012 kg / 0.006 m³ = 0.2 kg/m³ < 100; heavy: 150 / 0.006 = 25 000 > 22 590.
+  // light: 0.0012 kg / 0.006 m³ = 0.2 kg/m³ < 100; heavy: 150 / 0.006 = 25 000 > 1.1 x 11 340
+  // (lead), with the box's own inertia at 150 kg (150 (0.2² + 0.3²) / 12 = 1.625 about x): a
+  // uniform solid denser than any metal, reported since issue 43; ok: 16.2 / 0.006 = 2700.
+  ASSERT_EQ(found.size(), 2u);
   EXPECT_EQ(found[0].link, "light");
   EXPECT_NEAR(Value(found[0], "density"), 0.2, 2e-7);  // float STL vertices: ~1e-7 relative
   EXPECT_EQ(found[0].location.line, 9);                // its <mass>
   // What the volume says: PLA 1240 x 0.006 = 7.44 kg, steel 47.1 kg.
   EXPECT_NE(found[0].message.find("PLA 7.44 kg"), std::string::npos) << found[0].message;
   EXPECT_NE(found[0].message.find("steel 47.1 kg"), std::string::npos) << found[0].message;
+  EXPECT_EQ(found[1].link, "heavy");
+  EXPECT_NEAR(Value(found[1], "density"), 25000, 25000 * 2e-7);
+  EXPECT_EQ(found[1].location.line, 17);
+  // The written moments are the box's exactly and the center of mass its centroid.
+  EXPECT_NEAR(Value(found[1], "moment_difference"), 0, 1e-6);
+  EXPECT_NEAR(Value(found[1], "com_offset"), 0, 1e-7);
 }
 
 TEST(DensityRulesTest, AnOpenMeshGivesNoDensity) {

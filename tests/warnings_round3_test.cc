@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,9 +25,8 @@ namespace {
 
 const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/round3/";
 
-// Checks the fixture as `massprops check` does by default.
-std::vector<Finding> Check(const std::string& name) {
-  const std::string file = kDir + name + ".urdf";
+// Checks the file as `massprops check` does by default.
+std::vector<Finding> CheckFile(const std::string& file) {
   const ReadResult read = ReadModelFile(file);
   EXPECT_TRUE(read.ok()) << file;
   if (read.models.empty()) return {};
@@ -39,6 +41,9 @@ std::vector<Finding> Check(const std::string& name) {
   options.closed_mesh = MakeClosedMeshShapeFunction(resolve);
   return CheckModel(read.models[0], options);
 }
+
+// Checks the fixture as `massprops check` does by default.
+std::vector<Finding> Check(const std::string& name) { return CheckFile(kDir + name + ".urdf"); }
 
 std::vector<Finding> Select(const std::vector<Finding>& findings, const std::string& rule) {
   std::vector<Finding> out;
@@ -71,8 +76,9 @@ std::string Dump(const std::vector<Finding>& findings) {
 }
 
 bool Flags(const std::vector<Finding>& findings, const std::string& link) {
-  return std::any_of(findings.begin(), findings.end(),
-                     [&](const Finding& f) { return f.link == link && f.severity != Severity::kNote; });
+  return std::any_of(findings.begin(), findings.end(), [&](const Finding& f) {
+    return f.link == link && f.severity != Severity::kNote;
+  });
 }
 
 // Every headline a whole sentence of at most 110 characters, without an ellipsis.
@@ -173,6 +179,98 @@ TEST(WarningsRound3Test, AModelWithGeometryOfUnknownSizeDoesNotBoundItsLinks) {
   const std::vector<Finding> findings = Check("drone-unknown-mesh");
   EXPECT_TRUE(Select(findings, "inertia-exceeds-model").empty()) << Dump(findings);
   EXPECT_FALSE(Flags(findings, "base_link")) << Dump(findings);
+}
+
+// The drone with its base drawn by a 0.4 x 0.4 x 0.1 m plate of its own (before, only
+// geometry-less links were judged): k = sqrt(0.48 / 2) = 0.489898 m; the farthest point of the
+// model from its COM is a plate corner (0.2, 0.2, 0.05), R = sqrt(0.0825) = 0.287228 m (the motors
+// reach 0.2375 m); k / R = 1.70561 > 1.5. The plate's own allowance passes it (the sphere of
+// twice its half-diagonal: 0.24 <= 0.33; izz 3 times its axis bound 0.08, within 4).
+TEST(WarningsRound3Test, ADrawnDroneBaseBeyondTheWholeVehicleIsReported) {
+  const std::vector<Finding> findings = Check("drone-drawn-base");
+  const std::vector<Finding> model = Select(findings, "inertia-exceeds-model");
+  ASSERT_EQ(model.size(), 1u) << Dump(findings);
+  EXPECT_EQ(model[0].link, "base_link");
+  EXPECT_NEAR(ValueOf(model[0], "radius_of_gyration"), std::sqrt(0.24), 1e-12);
+  EXPECT_NEAR(ValueOf(model[0], "model_reach"), std::sqrt(0.0825), 1e-9);
+  EXPECT_NEAR(ValueOf(model[0], "ratio"), std::sqrt(0.24 / 0.0825), 1e-8);
+  EXPECT_NEAR(EvidenceOf(model[0], "model_reach_m"), 0.287228, 1e-6);
+  // One finding per defect: the plate's own rule did not report it.
+  EXPECT_TRUE(Select(findings, "inertia-exceeds-geometry").empty()) << Dump(findings);
+  ExpectReadableHeadlines(model);
+}
+
+// The same drone with the fourth motor a mesh that does not resolve: the model's extent is
+// unknown, the base is not judged by it.
+TEST(WarningsRound3Test, ADrawnDroneBaseInAModelOfUnknownExtentIsNotJudgedByIt) {
+  const std::vector<Finding> findings = Check("drone-drawn-base-unknown-mesh");
+  EXPECT_TRUE(Select(findings, "inertia-exceeds-model").empty()) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "base_link")) << Dump(findings);
+}
+
+// A long arm's base, k = sqrt(3 x 1.176 / 20) = 0.42 m: 1.79 times its own box's reach
+// (0.234521 m) but 0.275 of the whole model's, R = sqrt(1 + 0.0025 + 1.3225) = 1.52480 m (the
+// forearm's far corner): judged against the whole reach, quiet.
+TEST(WarningsRound3Test, ALongArmsBaseIsJudgedAgainstTheWholeReach) {
+  const std::vector<Finding> findings = Check("long-arm-base-ok");
+  EXPECT_TRUE(Select(findings, "inertia-exceeds-model").empty()) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "base")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "upper_arm")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "forearm")) << Dump(findings);
+}
+
+// segment: 0.2 kg over a closed 0.02 x 0.02 x 0.035 m box mesh (1.4e-5 m³) is 14285.7 kg/m³,
+// beyond 1.1 x lead (12474), and its written inertial is the box's own at 0.2 kg (centroid
+// (0.01, 0.01, 0.0175); 0.2 (0.02² + 0.035²) / 12 = 2.70833e-5 about x and y, 0.2 x 0.0008 / 12
+// = 1.33333e-5 about z): a uniform solid denser than lead. The look-alikes are quiet:
+// servo_bracket (89286 kg/m³, but its tensor is a 4 x 2 x 4 cm servo's, not the 1 x 1 x 1.4 cm
+// bracket's: a lumped motor), counterweight (lead, 11340 kg/m³) and motor (copper, 8960 kg/m³),
+// both with their boxes' own inertia.
+TEST(WarningsRound3Test, APartDenserThanLeadWhoseInertiaIsItsMeshsIsReported) {
+  const std::vector<Finding> findings = Check("denser-than-lead");
+  const std::vector<Finding> dense = Select(findings, "density-implausible");
+  ASSERT_EQ(dense.size(), 1u) << Dump(findings);
+  EXPECT_EQ(dense[0].link, "segment");
+  EXPECT_NEAR(ValueOf(dense[0], "volume"), 1.4e-5, 1.4e-5 * 1e-6);  // float STL vertices
+  EXPECT_NEAR(ValueOf(dense[0], "density"), 0.2 / 1.4e-5, 0.2 / 1.4e-5 * 1e-6);
+  // The written moments are the box's to their printed digits (6 significant: 1e-5 relative).
+  EXPECT_LT(ValueOf(dense[0], "moment_difference"), 1e-5);
+  EXPECT_LT(ValueOf(dense[0], "com_offset"), 1e-7);
+  // At steel's 7850 kg/m³ the segment would weigh 7850 x 1.4e-5 = 0.1099 kg.
+  EXPECT_NEAR(EvidenceOf(dense[0], "mass_if_steel_kg"), 0.1099, 1e-6);
+  EXPECT_NEAR(EvidenceOf(dense[0], "density_kg_m3"), 14285.714, 0.02);
+  EXPECT_FALSE(Flags(findings, "servo_bracket")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "counterweight")) << Dump(findings);
+  EXPECT_FALSE(Flags(findings, "motor")) << Dump(findings);
+  ExpectReadableHeadlines(dense);
+}
+
+// The same segment under a 70-character name: the headline is a shorter whole sentence within
+// 110 characters, the name whole, nothing cut.
+TEST(WarningsRound3Test, ADenserThanLeadHeadlineForALongNameIsAShorterSentence) {
+  std::ifstream in(kDir + "denser-than-lead.urdf");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string urdf = text.str();
+  const std::string name(70, 's');
+  for (std::size_t at = urdf.find("\"segment\""); at != std::string::npos;
+       at = urdf.find("\"segment\"", at + 1)) {
+    urdf.replace(at + 1, 7, name);
+  }
+  const std::string mesh = std::string(MASSPROPS_TESTDATA_DIR) + "/mesh/box_ascii.stl";
+  for (std::size_t at = urdf.find("../../mesh/box_ascii.stl"); at != std::string::npos;
+       at = urdf.find("../../mesh/box_ascii.stl", at + 1)) {
+    urdf.replace(at, 24, mesh);
+  }
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "massprops_round3_long_name.urdf";
+  std::ofstream(file) << urdf;
+  const std::vector<Finding> dense = Select(CheckFile(file.string()), "density-implausible");
+  std::filesystem::remove(file);
+  ASSERT_EQ(dense.size(), 1u);
+  EXPECT_EQ(dense[0].link, name);
+  EXPECT_EQ(dense[0].headline, "link '" + name + "': denser than lead (14300 kg/m³)");
+  ExpectReadableHeadlines(dense);
 }
 
 // The legs carry one part's numbers; the right COM is 0.025 m off the left's mirror image,

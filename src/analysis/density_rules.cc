@@ -1,5 +1,6 @@
 #include "massprops/analysis/density_rules.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -41,6 +42,7 @@ struct LinkDensity {
   double volume = 0;
   bool from_collision = false;
   double group_mass = 0;  // the mass of its welded group, itself included
+  LinkShape shape;        // the closed meshes' uniform solid (per unit mass)
   double density() const { return mass / volume; }
 };
 
@@ -50,7 +52,7 @@ struct LinkDensity {
 // logo badge or an antenna stub on a robot's body: whatever it weighs, the body it is welded to
 // does not change). Its density means nothing. A small mass on a part of real size that moves on
 // its own (a 1 g placeholder on a 4 x 9 x 6 cm gripper finger, 37 kg/m³) is judged.
-constexpr double kDummyMass = 1e-3;   // kg
+constexpr double kDummyMass = 1e-3;    // kg
 constexpr double kMarkerShare = 0.05;  // 5%: about what mass identification achieves
 
 // "PLA 0.034 kg, ABS 0.028 kg, ..." for a volume (m³), over the common materials.
@@ -83,15 +85,101 @@ Finding MakeFinding(const char* rule, Severity severity, const Model& model, std
   return f;
 }
 
+// Above lead (11 340 kg/m³, CRC Handbook), the densest metal parts are cast or machined from,
+// only tungsten alloys (17 000-19 300) and the precious metals are; a link's mesh reported denser
+// must be beyond lead by kDenseMargin (a tessellated mesh's chord error and a rounded mass move a
+// lead counterweight's density by well under 10%).
+constexpr double kLeadDensity = 11340;
+constexpr double kDenseMargin = 1.1;
+constexpr double kSteelDensity = 7850;  // what the part would weigh in steel, for the evidence
+// The written inertial is the closed meshes' own uniform solid at the written mass when every
+// principal moment is within kSolidMatch of the solid's trace and the center of mass within
+// kSolidMatch of the solid's radius of gyration from its centroid: what an exporter that
+// integrated the mesh writes (its numbers agree to the tessellation and the printed digits). A
+// motor lumped on a bracket moves them by its share of the body (the labelled robots' lumped
+// masses: 13% of the trace or more).
+constexpr double kSolidMatch = 0.05;
+
+// How far the written inertial is from the closed meshes' own uniform solid at the written mass.
+struct SolidMatch {
+  double moments = HUGE_VAL;  // largest |λ_i − μ_i| / tr(m·G) over the sorted principal moments
+  double com = HUGE_VAL;      // |c − centroid| / the solid's radius of gyration sqrt(tr(G)/2)
+  double com_m = HUGE_VAL;    // |c − centroid| (m)
+  bool Matches() const { return moments <= kSolidMatch && com <= kSolidMatch; }
+};
+
+SolidMatch MatchSolid(const Link& link, Model::Format format, const LinkDensity& d) {
+  SolidMatch fit;
+  const MassProperties props = LinkMassProperties(link, format);
+  const Eigen::Matrix3d solid = props.mass * d.shape.G_BBcm_B;
+  const double trace = solid.trace();
+  if (!(trace > 0) || !std::isfinite(trace) || !props.I_SScm_F.allFinite() ||
+      !props.p_FoScm_F.allFinite()) {
+    return fit;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> written(props.I_SScm_F,
+                                                               Eigen::EigenvaluesOnly);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> own(solid, Eigen::EigenvaluesOnly);
+  fit.moments = (written.eigenvalues() - own.eigenvalues()).cwiseAbs().maxCoeff() / trace;
+  fit.com_m = (props.p_FoScm_F - d.shape.p_BoBcm_B).norm();
+  fit.com = fit.com_m / std::sqrt(d.shape.G_BBcm_B.trace() / 2);
+  return fit;
+}
+
+// density-implausible, too dense: a link whose written inertial is its closed meshes' uniform
+// solid (the mass belongs to the drawn part) at a density beyond lead's. A mass lumped on a
+// bracket (a servo, a knee motor its mesh does not draw) has another tensor and is not judged.
+std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, Severity severity) {
+  const Link& link = model.links[d.index];
+  const double rho = d.density();
+  if (!(rho > kDenseMargin * kLeadDensity)) return std::nullopt;
+  const SolidMatch fit = MatchSolid(link, model.format, d);
+  if (!fit.Matches()) return std::nullopt;
+  const std::string what =
+      std::string("its closed ") + (d.from_collision ? "collision" : "visual") + " mesh";
+  std::string message =
+      "link '" + link.name + "': mass " + Num(d.mass) + " kg over the volume " + Num(d.volume) +
+      " m³ of " + what + " is a density of " + Num(rho) + " kg/m³, more than " + Num(kDenseMargin) +
+      " times lead's 11340 kg/m³ (only tungsten alloys, 17000-19300, are " +
+      "denser among the metals parts are made of); and its inertia is that mesh's as a uniform " +
+      "solid of this mass (principal moments within " + Num(100 * fit.moments) +
+      "% of the trace, center of mass " + Num(fit.com_m) +
+      " m from the mesh's centroid), so the mass belongs to the drawn part, not to a motor " +
+      "lumped on it (a mass typed for several parts, or in the wrong unit?); at common " +
+      "densities the mesh's volume says: " + MassesAt(d.volume) + " (massprops fix --material " +
+      link.name + "=NAME sets one, or --mass " + link.name + "=KG the weighed mass)";
+  Finding f = MakeFinding(kDensityImplausibleRule, severity, model, link.name, MassLocation(link),
+                          std::move(message),
+                          {{"mass", d.mass},
+                           {"volume", d.volume},
+                           {"density", rho},
+                           {"moment_difference", fit.moments},
+                           {"com_offset", fit.com_m}});
+  f.headline = "link '" + link.name + "': density " + FormatSignificant(rho) +
+               " kg/m³, denser than lead, with its mesh's own inertia";
+  if (f.headline.size() > kMaxHeadlineChars) {  // a long name: a shorter sentence, never a cut one
+    f.headline =
+        "link '" + link.name + "': denser than lead (" + FormatSignificant(rho) + " kg/m³)";
+  }
+  f.evidence = {{"mass_kg", d.mass},
+                {"volume_m3", d.volume},
+                {"density_kg_m3", rho},
+                {"mass_if_steel_kg", kSteelDensity * d.volume}};
+  f.help =
+      "write the weighed mass, or massprops fix --material LINK=NAME (massprops explain "
+      "density-implausible)";
+  return f;
+}
+
 // density-implausible on one link.
 std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Severity severity) {
   const Link& link = model.links[d.index];
   const double rho = d.density();
-  // Too light only. A density above osmium's is no defect of the file by itself: a URDF link's
-  // mass is that of its moving body, which often holds parts its mesh does not draw (a servo
-  // inside a bracket's mesh, a knee motor behind a simplified shell): on the labelled robots with
-  // their meshes, all 14 links denser than osmium were such lumped masses (docs/rules.md).
-  if (rho >= kMinSolidDensity) return std::nullopt;
+  // Too light here; too dense only where the mass is the mesh's own (CheckTooDense). A density
+  // above lead's is no defect of the file by itself: a URDF link's mass is that of its moving
+  // body, which often holds parts its mesh does not draw (a servo inside a bracket's mesh, a knee
+  // motor behind a simplified shell; docs/rules.md).
+  if (rho >= kMinSolidDensity) return CheckTooDense(model, d, severity);
   const double solid = d.volume * kMinSolidDensity;  // the lightest solid filling the geometry
   if (!(solid > kDummyMass) || !(solid > kMarkerShare * (d.group_mass - d.mass))) {
     return std::nullopt;  // a marker
@@ -189,8 +277,9 @@ const std::vector<RuleInfo>& DensityRules() {
   static const std::vector<RuleInfo> kRules = {
       {kDensityImplausibleRule, Severity::kWarning, true,
        "A link's mass over the volume of its closed meshes is a density no solid part has "
-       "(below 100 kg/m³: only foams); markers (meshes that would hold at most 1 g at that "
-       "density, or 5% of their welded group) are not judged."},
+       "(below 100 kg/m³: only foams; above 1.1 times lead where the inertia is the mesh's own "
+       "uniform solid); markers (meshes that would hold at most 1 g at 100 kg/m³, or 5% of "
+       "their welded group) are not judged."},
       {kCadDefaultDensityRule, Severity::kWarning, true,
        "Every link with closed meshes (at least 2) has mass = volume × 1000 kg/m³ within 1%: the "
        "CAD export had no material (SolidWorks' default density); said once per model."},
@@ -212,7 +301,8 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
     if (!(mass > 0) || !std::isfinite(mass)) continue;
     const std::optional<LinkShape> shape = options.closed_mesh(link);
     if (!shape || !(shape->volume > 0) || !std::isfinite(shape->volume)) continue;
-    densities.push_back({static_cast<int>(i), mass, shape->volume, shape->from_collision});
+    densities.push_back(
+        {static_cast<int>(i), mass, shape->volume, shape->from_collision, 0, *shape});
   }
   if (!densities.empty()) {
     std::vector<double> group_mass(model.links.size(), 0);

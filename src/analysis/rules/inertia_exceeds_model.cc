@@ -6,12 +6,13 @@
 // Why: every point of the link's body lies within the model, so within the distance R from its
 // center of mass c to the farthest point of the model's geometry; then
 // tr(I)/2 = ∫|x − c|² dm <= m·R², and its radius of gyration k = sqrt(tr(I)/(2m)) is at most R.
-// A link drawn by geometry of its own is judged by it (inertia-exceeds-geometry allows it twice
-// its half-diagonal); the others (no geometry, a placeholder, a 1 cm marker) were judged with
-// wide allowances (units-suspect's five times the kinematic span), but the whole model bounds
-// them: k beyond kModelRatio times R is reported (a drone base with k = 0.49 m on a vehicle whose
-// arms and motors all lie within 0.3 m of it; the model may be drawn smaller than the machine,
-// not by half again in every direction). Only where the model's extent is known: no geometry of
+// Every link is judged, where no other rule already finds its inertia too large: a link without
+// geometry (judged elsewhere by units-suspect's five times the kinematic span) and a link whose
+// own geometry spans most of the vehicle (judged by inertia-exceeds-geometry with twice its
+// half-diagonal for simplified geometry) are both bounded by the whole model: k beyond
+// kModelRatio times R is reported (a drone base with k = 0.49 m on a vehicle whose arms and
+// motors all lie within 0.3 m of it; the model may be drawn smaller than the machine, not by
+// half again in every direction). Only where the model's extent is known: no geometry of
 // unknown size, and every welded group with mass drawn by some geometry.
 
 #include <Eigen/Core>
@@ -117,9 +118,6 @@ void CheckInertiaWithinModel(RuleContext& ctx) {
     const double m = props.mass, trace = props.I_SScm_F.trace();
     if (!(m > kDummyMass) || !std::isfinite(m) || !(trace > 0) || !std::isfinite(trace)) continue;
     if (!props.p_FoScm_F.allFinite() || AlreadyTooLarge(ctx, link)) continue;
-    // A link drawn by geometry of its own is judged by it (inertia-exceeds-geometry, with its
-    // allowance for simplified geometry); the model bounds the others.
-    if (Drawn(ctx, static_cast<int>(l))) continue;
     const Eigen::Vector3d c = poses.X_WL[l].p_AB + poses.X_WL[l].R_AB * props.p_FoScm_F;
     double reach = 0;
     for (const Eigen::Vector3d& p : corners[root]) reach = std::max(reach, (p - c).norm());
