@@ -63,7 +63,9 @@ def junit_cases(path):
 
 def expected_failures(document, fail_on="error"):
     """What the failing testcases must be, from `--format json`: one per finding at or above
-    the fail level, (suite, "RULE: LINK", "massprops.MODEL", file, line, headline)."""
+    the fail level, (suite, "RULE: LINK", "massprops.MODEL", file, line, headline); without a
+    link the model names the case, and without a model the file's path names it and its file
+    name the class."""
     order = ["note", "warning", "error"]
     out = []
     for f in document["files"]:
@@ -71,7 +73,8 @@ def expected_failures(document, fail_on="error"):
             if order.index(finding["severity"]) < order.index(fail_on):
                 continue
             subject = finding["link"] or finding["model"] or f["path"]
-            out.append((f["path"], f"{finding['rule']}: {subject}", "massprops." + finding["model"],
+            classname = finding["model"] or os.path.basename(f["path"])
+            out.append((f["path"], f"{finding['rule']}: {subject}", "massprops." + classname,
                         finding["file"], finding["line"], finding["headline"]))
     return out
 
@@ -268,16 +271,18 @@ class FixtureTest(unittest.TestCase):
         self.assertEqual(json.loads(check(["--format", "gitlab", path])[1]), [])
 
     def test_fail_on_warning_makes_warnings_failing_testcases(self):
-        path = os.path.join(TESTDATA, WARNINGS_FIXTURE)
+        # The bundled example has an error, two warnings and a note.
+        path = os.path.join(os.path.dirname(TESTDATA), "examples", "two_link_arm.urdf")
         document = json.loads(check(["--format", "json", "--fail-on", "warning", path])[1])
-        severities = [x["severity"] for x in document["files"][0]["findings"]]
-        self.assertIn("warning", severities)  # the fixture has warnings to fail on
+        severities = sorted(x["severity"] for x in document["files"][0]["findings"])
+        self.assertEqual(severities, ["error", "note", "warning", "warning"])
         with tempfile.TemporaryDirectory() as work:
             junit = os.path.join(work, "warnings.xml")
             with open(junit, "w", encoding="utf-8") as f:
                 f.write(check(["--format", "junit", "--fail-on", "warning", path])[1])
             failing = [(s, n, cl, f, ln, m) for (s, n, cl, f, ln, k, m, _) in junit_cases(junit)
                        if k == "Failure"]
+        self.assertEqual(len(failing), 3)
         self.assertEqual(sorted(failing), sorted(expected_failures(document, "warning")))
 
 

@@ -9,7 +9,8 @@ namespace {
 nlohmann::json SideJson(const DiffSide& s) {
   if (!s.present) return nullptr;
   nlohmann::json inertia = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r) inertia.push_back({s.inertia(r, 0), s.inertia(r, 1), s.inertia(r, 2)});
+  for (int r = 0; r < 3; ++r)
+    inertia.push_back({s.inertia(r, 0), s.inertia(r, 1), s.inertia(r, 2)});
   return {{"mass", s.mass},
           {"com", {s.com[0], s.com[1], s.com[2]}},
           {"inertia", inertia},

@@ -23,19 +23,24 @@ using internal::ReportPlace;
 std::size_t Utf8Sequence(std::string_view text, std::size_t at, std::uint32_t* code_point) {
   const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
   const unsigned char lead = byte(at);
-  std::size_t length = 0;
-  std::uint32_t cp = 0, min = 0;
   if (lead < 0x80) {
     *code_point = lead;
     return 1;
-  } else if ((lead & 0xE0) == 0xC0) {
-    length = 2, cp = lead & 0x1Fu, min = 0x80;
+  }
+  // The sequence's length, the lead byte's payload bits, and the smallest code point that needs
+  // this many bytes.
+  std::size_t length = 4;
+  std::uint32_t cp = lead & 0x07u, min = 0x10000;
+  if ((lead & 0xE0) == 0xC0) {
+    length = 2;
+    cp = lead & 0x1Fu;
+    min = 0x80;
   } else if ((lead & 0xF0) == 0xE0) {
-    length = 3, cp = lead & 0x0Fu, min = 0x800;
-  } else if ((lead & 0xF8) == 0xF0) {
-    length = 4, cp = lead & 0x07u, min = 0x10000;
-  } else {
-    return 0;
+    length = 3;
+    cp = lead & 0x0Fu;
+    min = 0x800;
+  } else if ((lead & 0xF8) != 0xF0) {
+    return 0;  // a continuation byte, or 0xF8-0xFF
   }
   if (at + length > text.size()) return 0;
   for (std::size_t i = 1; i < length; ++i) {

@@ -497,11 +497,10 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
 
   std::vector<FileResult> results(files.size());
   massprops::cli::SetMeshJobs(args.jobs, JobCount(args.jobs, files));
-  RunInParallel(files.size(), JobCount(args.jobs, files),
-                [&](std::size_t i) {
-                  results[i] = CheckFile(files[i], settings[i]);
-                  results[i].fail_on = settings[i].fail_on;
-                });
+  RunInParallel(files.size(), JobCount(args.jobs, files), [&](std::size_t i) {
+    results[i] = CheckFile(files[i], settings[i]);
+    results[i].fail_on = settings[i].fail_on;
+  });
   if (xacro) massprops::cli::FinishXacroRun(&*xacro, &results.front());
 
   const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
