@@ -494,9 +494,8 @@ TEST(ChecksTest, AWeldedGroupIsJudgedAsOneRigidBodyToo) {
     group_findings += about_group ? 1 : 0;
     // The group's finding names its members (the root, 'arm', first: 'extra' is welded to it);
     // a link's own finding names none.
-    EXPECT_EQ(f->group,
-              about_group ? std::vector<std::string>{"arm", "extra"} : std::vector<std::string>{})
-        << f->message;
+    const std::vector<std::string> members = {"arm", "extra"};
+    EXPECT_EQ(f->group, about_group ? members : std::vector<std::string>()) << f->message;
   }
   EXPECT_EQ(group_findings, 1);
 }
