@@ -31,5 +31,5 @@ execute_process(COMMAND "${MASSPROPS_TOOL}" check --color never ${MASSPROPS_CHEC
 message("massprops: JUnit report: ${MASSPROPS_RESULT_FILE}")
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "massprops check exited ${status} (1: findings at the fail level; 2: a file "
-                      "could not be read or the check could not run)\n${junit_errors}")
+                      "could not be read or the check could not run) ${junit_errors}")
 endif()
