@@ -528,7 +528,13 @@ TEST(ChecksTest, AWeldedGroupIsJudgedAsOneRigidBodyToo) {
   ASSERT_EQ(selected.size(), 3u) << Dump(findings);
   int group_findings = 0;
   for (const Finding* f : selected) {
-    for (const auto& value : f->values) group_findings += value.first == "group_links" ? 1 : 0;
+    bool about_group = false;
+    for (const auto& value : f->values) about_group = about_group || value.first == "group_links";
+    group_findings += about_group ? 1 : 0;
+    // The group's finding names its members (the root, 'arm', first: 'extra' is welded to it);
+    // a link's own finding names none.
+    const std::vector<std::string> members = {"arm", "extra"};
+    EXPECT_EQ(f->group, about_group ? members : std::vector<std::string>()) << f->message;
   }
   EXPECT_EQ(group_findings, 1);
 }

@@ -1,5 +1,6 @@
 // Reporters on hostile text (reporters.h): invalid UTF-8 and huge names.
 #include <gtest/gtest.h>
+#include <tinyxml2.h>
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -47,6 +48,36 @@ TEST(ReportersHostileTest, SarifReplacesInvalidUtf8WithTheReplacementCharacter) 
   const auto& results = log["runs"][0]["results"];
   ASSERT_EQ(results.size(), 1u);
   EXPECT_EQ(results[0]["message"]["text"], "link 'l\xEF\xBF\xBDnk' has mass -1");
+}
+
+TEST(ReportersHostileTest, JunitAndGitlabReplaceInvalidUtf8WithTheReplacementCharacter) {
+  const std::string xml = RenderJunit(ResultsWithInvalidUtf8());
+  tinyxml2::XMLDocument doc;  // an XML parser rejects text that is not UTF-8
+  ASSERT_EQ(doc.Parse(xml.c_str(), xml.size()), tinyxml2::XML_SUCCESS) << xml;
+  const tinyxml2::XMLElement* suite = doc.FirstChildElement("testsuites")->FirstChildElement();
+  EXPECT_STREQ(suite->Attribute("name"), "bad\xEF\xBF\xBD.urdf");
+  EXPECT_STREQ(suite->FirstChildElement("testcase")->Attribute("name"),
+               "mass-not-positive: l\xEF\xBF\xBDnk");
+  const nlohmann::json items = nlohmann::json::parse(RenderGitlab(ResultsWithInvalidUtf8()));
+  ASSERT_EQ(items.size(), 1u);
+  EXPECT_EQ(items[0]["description"], "link 'l\xEF\xBF\xBDnk' has mass -1");
+  EXPECT_EQ(items[0]["location"]["path"], "bad\xEF\xBF\xBD.urdf");
+}
+
+TEST(ReportersHostileTest, JunitShortensAMegabyteLinkName) {
+  std::vector<FileResult> results = ResultsWithInvalidUtf8();
+  Finding& finding = results[0].findings[0];
+  finding.link = std::string(1 << 20, 'n');
+  finding.message = "link '" + finding.link + "' has mass -1";
+  const std::string xml = RenderJunit(results);
+  EXPECT_LT(xml.size(), 4000u);
+  tinyxml2::XMLDocument doc;
+  ASSERT_EQ(doc.Parse(xml.c_str(), xml.size()), tinyxml2::XML_SUCCESS);
+  const std::string name = doc.FirstChildElement("testsuites")
+                               ->FirstChildElement("testsuite")
+                               ->FirstChildElement("testcase")
+                               ->Attribute("name");
+  EXPECT_NE(name.find("[1048576 bytes]"), std::string::npos) << name;
 }
 
 TEST(ReportersHostileTest, LongWordsAreShortenedAndShortTextIsKept) {

@@ -38,6 +38,8 @@ packages+=(neovim)
 # workspace holding massprops (tools/colcon_test.sh): colcon-ros reads package.xml, colcon-cmake
 # builds, colcon-bash writes install/setup.bash.
 packages+=(lintian colcon python3-colcon-cmake python3-colcon-ros python3-colcon-bash)
+# `check --format junit` read as GitLab and Jenkins read it (tests/ci_formats_test.py).
+packages+=(python3-junitparser)
 fi
 missing=()
 for p in "${packages[@]}"; do

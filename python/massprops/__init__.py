@@ -55,7 +55,7 @@ __all__ = [
     "CheckOptions", "CompositeInertia", "DEFAULT_VALIDITY_TOLERANCE", "FieldChange", "Finding",
     "FixResult", "Geometry", "Inertial", "Joint", "Link", "Model", "PatchError", "Pose",
     "PrincipalSolver", "ReadError", "Repair", "RotationalInertia", "SourceLocation",
-    "SpatialInertia", "UnitInertia", "WeldedGroup", "check", "fix", "is_physically_valid",
+    "SpatialInertia", "UnitInertia", "WeldedGroup", "check", "diff", "fix", "is_physically_valid",
     "principal_moments", "read", "read_all", "repair_inertia", "report", "rules",
 ]
 
@@ -172,6 +172,25 @@ def report(path_or_text: PathOrText, *, joints: Optional[Mapping[str, float]] = 
         path_or_text, dict(joints or {}), frame, _strings(only, "only"), subtree,
         bool(geometry), _strings(package_paths, "package_paths"),
         _strings(model_paths, "model_paths"))
+
+
+def diff(a: Union[str, "os.PathLike[str]"], b: Union[str, "os.PathLike[str]"], *,
+         tolerance: float = 1e-6, target: Optional[str] = None,
+         model_paths: Sequence[str] = ()) -> dict:
+    """Compares the mass properties of two descriptions of one robot: `massprops diff A B
+    --format json` as Python data (equal to json.loads of its output, schema in docs/cli.md).
+
+    Returns {"a", "b", "tolerance", "differs", "entries": [{"kind" ("link", "group" or "total"),
+    "name", "a", "b", "differs", ...}]}. Each file's first model is compared. target: as
+    `--target` (None: the .massprops.toml found for the file, else generic). Raises ReadError
+    (a file that cannot be read or holds no model), ValueError (a negative tolerance, an
+    unknown target).
+
+    >>> result = massprops.diff("robot.urdf", "robot.xml")
+    >>> [e["name"] for e in result["entries"] if e["differs"]]
+    """
+    return _massprops._diff(os.fspath(a), os.fspath(b), float(tolerance), target,
+                            _strings(model_paths, "model_paths"))
 
 
 def _write_atomically(path: str, text: str, mode: Optional[int]) -> None:

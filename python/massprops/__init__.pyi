@@ -282,6 +282,7 @@ class Finding:
     evidence: Dict[str, float]
     help: str
     values: Dict[str, float]
+    group: List[str]
     repair: Optional[Repair]
     source: Optional[Dict[str, Any]]
     def to_dict(self) -> Dict[str, Any]: ...
@@ -314,6 +315,9 @@ def rules() -> List[Dict[str, Any]]: ...
 def report(path_or_text: PathOrText, *, joints: Optional[Mapping[str, float]] = None,
            frame: str = "", only: Sequence[str] = (), subtree: str = "", geometry: bool = False,
            package_paths: Sequence[str] = (), model_paths: Sequence[str] = ()) -> Dict[str, Any]: ...
+def diff(a: Union[str, os.PathLike[str]], b: Union[str, os.PathLike[str]], *,
+         tolerance: float = 1e-6, target: Optional[str] = None,
+         model_paths: Sequence[str] = ()) -> Dict[str, Any]: ...
 
 # ------------------- fixing: repairs and fixed files (fixing_bindings.cc; fix() in __init__.py)
 

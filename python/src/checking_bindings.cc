@@ -216,6 +216,10 @@ void BindFinding(py::module_& m) {
       .def_property_readonly(
           "values", [](const Finding& f) { return ValuesDict(f.values); },
           "The named measured values, a dict.")
+      .def_readonly("group", &Finding::group,
+                    "A finding about a welded group of links (judged as one rigid body): its "
+                    "members' names, the root (the finding's link) first; [] for a finding about "
+                    "one link or the model.")
       .def_readonly("repair", &Finding::repair, "Always None from check(); see fix().")
       .def_property_readonly(
           "source", [](const Finding& f) { return SourceDict(f.source); },
@@ -238,6 +242,7 @@ void BindFinding(py::module_& m) {
             d["evidence"] = ValuesDict(f.evidence);
             d["help"] = f.help;
             d["values"] = ValuesDict(f.values);
+            if (!f.group.empty()) d["group"] = f.group;
             if (f.source) d["source"] = SourceDict(f.source);
             return d;
           },

@@ -53,6 +53,16 @@ void CheckLink(RuleContext& ctx, int link_index) {
   rules::CheckComInsideGeometry(ctx, judged);
 }
 
+// The findings from index `first` on were made by rules that judge the welded group as one body
+// (their `who`): when it has more than one link, each carries its members' names.
+void NameGroupMembers(RuleContext& ctx, const WeldedGroup& group, std::size_t first) {
+  if (group.links.size() < 2) return;
+  std::vector<std::string> members;
+  members.reserve(group.links.size());
+  for (int i : group.links) members.push_back(ctx.model.links[i].name);
+  for (std::size_t i = first; i < ctx.findings.size(); ++i) ctx.findings[i].group = members;
+}
+
 // Every per-group rule on welded group `group`, in the order they are judged.
 void CheckGroup(RuleContext& ctx, const WeldedGroup& group) {
   const Model& model = ctx.model;
@@ -71,14 +81,19 @@ void CheckGroup(RuleContext& ctx, const WeldedGroup& group) {
                               ? "the welded group rooted at '" + root.name + "' (" +
                                     std::to_string(group.links.size()) + " links)"
                               : "link '" + root.name + "'";
+  std::size_t first = ctx.findings.size();
   const rules::MasslessVerdict massless =
       rules::CheckMasslessMovingGroup(ctx, group, who, all_massless);
+  NameGroupMembers(ctx, group, first);
   if (massless != rules::MasslessVerdict::kSingular) {
+    // Its findings are about single members, not the group.
     rules::CheckInertialMissing(ctx, group, massless == rules::MasslessVerdict::kMassOutboard);
   }
   if (!composite.I_SScm_R.allFinite() || !std::isfinite(composite.mass)) return;
+  first = ctx.findings.size();
   rules::CheckCompositeValidity(ctx, group, who, composite, contributing);
   rules::CheckInertiaAboutJointAxis(ctx, group, who, composite);
+  NameGroupMembers(ctx, group, first);
 }
 
 }  // namespace

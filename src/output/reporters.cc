@@ -206,6 +206,8 @@ std::optional<ReportFormat> ParseReportFormat(std::string_view text) {
   if (text == "json") return ReportFormat::kJson;
   if (text == "sarif") return ReportFormat::kSarif;
   if (text == "github") return ReportFormat::kGithub;
+  if (text == "junit") return ReportFormat::kJunit;
+  if (text == "gitlab") return ReportFormat::kGitlab;
   return std::nullopt;
 }
 
@@ -470,6 +472,7 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
                           {"evidence", EvidenceJson(finding)},
                           {"help", ShortenLongWords(finding.help)},
                           {"values", values}});
+      if (!finding.group.empty()) findings.back()["group"] = finding.group;
       if (finding.source && !finding.source->places.empty()) {
         const FindingSource& source = *finding.source;
         json entry = SourcePlaceJson(source.places.front());
@@ -614,6 +617,7 @@ json SarifFinding(const Finding& finding, const FileResult& result,
                          {"help", ShortenLongWords(finding.help)},
                          {"message", ShortenLongWords(finding.message)},
                          {"values", values}};
+  if (!finding.group.empty()) entry["properties"]["group"] = finding.group;
   if (finding.source && !finding.source->places.empty()) {
     entry["properties"]["source"] = {{"number", finding.source->number},
                                      {"how", finding.source->places.front().how},
@@ -701,6 +705,10 @@ std::string Render(ReportFormat format, const std::vector<FileResult>& results,
       return RenderSarif(results, options);
     case ReportFormat::kGithub:
       return RenderGithub(results, options);
+    case ReportFormat::kJunit:
+      return RenderJunit(results, options);
+    case ReportFormat::kGitlab:
+      return RenderGitlab(results, options);
   }
   return {};
 }

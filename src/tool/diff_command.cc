@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +14,7 @@
 #include "massprops/analysis/model_diff.h"
 #include "massprops/analysis/target_profile.h"
 #include "massprops/io/model_reader.h"
+#include "massprops/output/diff_report.h"
 #include "massprops/output/reporters.h"
 #include "target_cli.h"
 
@@ -67,44 +67,6 @@ std::string Describe(const DiffEntry& e, double tolerance, bool all) {
 std::string Title(const DiffEntry& e) {
   if (e.kind == "total") return "whole robot (in the frame of link '" + e.name + "')";
   return (e.kind == "group" ? "welded group '" : "link '") + e.name + "'";
-}
-
-nlohmann::json SideJson(const DiffSide& s) {
-  if (!s.present) return nullptr;
-  nlohmann::json inertia = nlohmann::json::array();
-  for (int r = 0; r < 3; ++r)
-    inertia.push_back({s.inertia(r, 0), s.inertia(r, 1), s.inertia(r, 2)});
-  return {{"mass", s.mass},
-          {"com", {s.com[0], s.com[1], s.com[2]}},
-          {"inertia", inertia},
-          {"file", s.location.file},
-          {"line", s.location.line}};
-}
-
-void WriteJson(const ModelDiff& diff, const Model& a, const Model& b) {
-  nlohmann::json entries = nlohmann::json::array();
-  for (const DiffEntry& e : diff.entries) {
-    nlohmann::json j = {{"kind", e.kind},
-                        {"name", e.name},
-                        {"a", SideJson(e.a)},
-                        {"b", SideJson(e.b)},
-                        {"differs", e.differs}};
-    if (e.a.present && e.b.present) {
-      j["mass_difference"] = e.mass_difference;
-      j["com_difference"] = e.com_difference;
-      j["inertia_difference"] = e.inertia_difference;
-    } else {
-      j["missing"] = e.missing_how;
-    }
-    entries.push_back(std::move(j));
-  }
-  const nlohmann::json out = {
-      {"a", {{"file", a.file}, {"format", ToString(a.format)}, {"model", a.name}}},
-      {"b", {{"file", b.file}, {"format", ToString(b.format)}, {"model", b.name}}},
-      {"tolerance", diff.tolerance},
-      {"differs", diff.differs},
-      {"entries", std::move(entries)}};
-  std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
 }
 
 void WriteText(const ModelDiff& diff, const Model& a, const Model& b) {
@@ -160,7 +122,7 @@ int RunDiff(const DiffArgs& args) {
   }
   const ModelDiff diff = DiffModels(models[0], models[1], args.tolerance);
   if (args.format == "json") {
-    WriteJson(diff, models[0], models[1]);
+    std::cout << RenderDiffJson(diff, models[0], models[1]);
   } else if (args.format == "github") {
     WriteGithub(diff);
   } else {

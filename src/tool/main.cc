@@ -445,8 +445,10 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
 
   std::vector<FileResult> results(files.size());
   massprops::cli::SetMeshJobs(args.jobs, JobCount(args.jobs, files));
-  RunInParallel(files.size(), JobCount(args.jobs, files),
-                [&](std::size_t i) { results[i] = CheckFile(files[i], settings[i]); });
+  RunInParallel(files.size(), JobCount(args.jobs, files), [&](std::size_t i) {
+    results[i] = CheckFile(files[i], settings[i]);
+    results[i].fail_on = settings[i].fail_on;
+  });
   if (xacro) massprops::cli::FinishXacroRun(&*xacro, &results.front());
 
   const massprops::ReportFormat format = *massprops::ParseReportFormat(args.format);
@@ -490,7 +492,7 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
                     "<robot>, <sdf> or <mujoco> root)");
   if (wanted.Wants({"--format"})) {
     check->add_option("--format", args->format, "Output format")
-        ->check(CLI::IsMember({"text", "json", "sarif", "github"}))
+        ->check(CLI::IsMember({"text", "json", "sarif", "github", "junit", "gitlab"}))
         ->capture_default_str();
   }
   if (wanted.Wants({"--color"})) {

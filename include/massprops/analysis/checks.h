@@ -30,6 +30,9 @@ struct Finding {
   Severity severity = Severity::kError;
   std::string model;        ///< The model's name.
   std::string link;         ///< The link (for a welded-group finding: the group's root link).
+  /// A finding about a welded group of more than one link: its members' names (the root first,
+  /// then file order); empty for a finding about one link or the whole model.
+  std::vector<std::string> group;
   SourceLocation location;  ///< Where to point the user (usually the <inertial> or <inertia>).
   /// The full reasoning, one sentence that quotes the offending numbers (as before issue 32;
   /// `check --explain` prints it, JSON keeps it as "message").

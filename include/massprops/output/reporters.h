@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Reporters: render the results of `massprops check` (per file: its models, its findings and the
-/// errors that kept it from being read) as text, JSON, SARIF 2.1.0 or GitHub workflow commands.
+/// errors that kept it from being read) as text, JSON, SARIF 2.1.0, GitHub workflow commands,
+/// JUnit XML or a GitLab Code Quality report.
 /// Reporters only render; the tool decides exit codes.
 
 #include <optional>
@@ -40,6 +41,9 @@ struct FileResult {
   /// Each distinct mesh URI of the file's links (per file holding it), in file order, with how
   /// it resolved, when `check` read meshes (not with --no-geometry).
   std::vector<MeshUriResolution> mesh_uris;
+  /// The file's fail level (--fail-on, or its configuration's fail-on): JUnit makes the findings
+  /// at or above it failing testcases.
+  Severity fail_on = Severity::kError;
 };
 
 /// Counts over a list of results. `errors`, `warnings` and `notes` count findings by severity;
@@ -58,9 +62,9 @@ struct ReportSummary {
   std::vector<int> mesh_resolution = std::vector<int>(8, 0);
 };
 
-enum class ReportFormat { kText, kJson, kSarif, kGithub };
+enum class ReportFormat { kText, kJson, kSarif, kGithub, kJunit, kGitlab };
 
-/// Parses "text", "json", "sarif", "github"; nullopt otherwise.
+/// Parses "text", "json", "sarif", "github", "junit", "gitlab"; nullopt otherwise.
 std::optional<ReportFormat> ParseReportFormat(std::string_view text);
 
 /// How to render.
@@ -134,9 +138,10 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
 /// The JSON document described in docs/cli.md:
 /// {"version", "files": [{"path", "format", "models", "findings": [{"rule", "severity", "model",
 /// "link", "file", "line", "column", "message", "headline", "evidence": {name: number}, "help",
-/// "values": {name: number}}], "errors": [{"file",
-/// "line", "column", "element", "message", "headline"}]}], "summary": {"files", "errors",
-/// "warnings", "notes", "read_errors", "skipped_files", "mesh_links", "mesh_links_unresolved",
+/// "values": {name: number}, and for a finding about a welded group "group": [member link names,
+/// the root first]}], "errors": [{"file", "line", "column", "element", "message", "headline"}]}],
+/// "summary": {"files", "errors", "warnings", "notes", "read_errors", "skipped_files",
+/// "mesh_links", "mesh_links_unresolved",
 /// "first_unresolved_mesh" (a string, or null when none), "mesh_resolution"}}. Each file also
 /// has "mesh_links", "mesh_links_unresolved", "mesh_resolution" ({"flag", "repository-package",
 /// "ancestor", "environment", "beside-file", "relative", "absolute", "unresolved"}: its distinct
@@ -150,7 +155,8 @@ std::string RenderJson(const std::vector<FileResult>& results, const ReportOptio
 /// each rule's fullDescription (the first paragraph of its long form) and help (the long form:
 /// RuleLongForm in finding_text.h) when docs/rules.md has one;
 /// each finding and ReadError is a result with ruleId, ruleIndex, level, message (a finding's
-/// headline; its "properties" hold "evidence", "help" and the full "message") and a physical
+/// headline; its "properties" hold "evidence", "help", the full "message" and, for a finding
+/// about a welded group, "group": its members' names) and a physical
 /// location (artifact URI relative to the working directory when the path is relative, a
 /// file:// URI when absolute; region only when the line is known). When meshes were read, the
 /// run's "properties" hold "mesh_links", "mesh_links_unresolved", "first_unresolved_mesh" and
@@ -162,6 +168,26 @@ std::string RenderSarif(const std::vector<FileResult>& results, const ReportOpti
 /// new line and `help: HELP` (warning for warnings, notice for notes),
 /// escaped per the workflow-command rules (EscapeGithubData / EscapeGithubProperty).
 std::string RenderGithub(const std::vector<FileResult>& results, const ReportOptions& options = {});
+
+/// JUnit XML as colcon test-result, GitLab and Jenkins read it (docs/cli.md, "junit"): a
+/// <testsuites> holding one <testsuite> per file (name: the path); in it one <testcase> per
+/// finding at or above the file's fail_on, named "RULE: LINK" (classname "massprops.MODEL", file
+/// and line attributes), failing with message = the headline and as text the file:line, the
+/// evidence, the help and a welded group's members; one per ReadError, with an <error> element;
+/// and when the file has neither, one passing testcase "massprops check". A finding below the
+/// fail level is a passing testcase of the same name whose <system-out> holds that text (it is
+/// seen, and fails nothing). Names and texts are XML-escaped; characters XML 1.0 cannot hold are
+/// written as U+FFFD.
+std::string RenderJunit(const std::vector<FileResult>& results, const ReportOptions& options = {});
+
+/// GitLab's Code Quality report (docs/cli.md, "gitlab"): a JSON array with one item per finding
+/// and ReadError: {"description" (the headline), "check_name" (the rule id), "fingerprint",
+/// "severity" (error: "major", warning: "minor", note: "info"; a ReadError: "critical"),
+/// "location": {"path", "lines": {"begin"}}}. The fingerprint is the SHA-256 (hex) of the rule,
+/// the file, the model, the link (a ReadError: its element) and the occurrence index among the
+/// run's items that share those four: it does not change when lines move, and is unique within
+/// the run. A line that is unknown is written as 1 (GitLab requires one).
+std::string RenderGitlab(const std::vector<FileResult>& results, const ReportOptions& options = {});
 
 /// Dispatches to the Render* function of `format`.
 std::string Render(ReportFormat format, const std::vector<FileResult>& results,
