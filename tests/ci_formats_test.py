@@ -21,6 +21,9 @@ import unittest
 
 import junitparser
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shared_data  # noqa: E402  (tests/shared_data.py: the one policy for ../shared)
+
 TOOL, TESTDATA, CORPUS = (os.path.abspath(a) for a in sys.argv[1:4])
 del sys.argv[1:4]
 SHARED = os.path.dirname(CORPUS)
@@ -106,6 +109,11 @@ class CorpusTest(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
+        why = shared_data.missing(SHARED, CORPUS_NAME)
+        if why and shared_data.required(SHARED):
+            raise AssertionError(why)
+        if why:
+            raise unittest.SkipTest(why)
         cls.work = tempfile.mkdtemp(prefix="massprops-ci-formats-")
         _, text = check(["--format", "json", CORPUS_NAME], cwd=SHARED)
         cls.json = json.loads(text)
@@ -154,6 +162,8 @@ class CorpusTest(unittest.TestCase):
         for item in self.gitlab:
             self.assertIsInstance(item["description"], str)
             self.assertTrue(item["description"])
+            self.assertLessEqual(len(item["description"]), 110)  # a headline (issue 43)
+            self.assertNotIn("\u2026", item["description"])
             self.assertIsInstance(item["check_name"], str)
             self.assertIn(item["severity"], ("info", "minor", "major", "critical", "blocker"))
             self.assertRegex(item["fingerprint"], "^[0-9a-f]{64}$")
@@ -164,13 +174,15 @@ class CorpusTest(unittest.TestCase):
     def test_gitlab_items_say_the_json_findings(self):
         expected = []
         for f in self.json["files"]:
-            expected += [("read-error", "critical", e["file"]) for e in f["errors"]]
+            # A read error's description is its JSON headline (whole, within 110 characters).
+            expected += [("read-error", "critical", e["file"], e["headline"]) for e in f["errors"]]
             expected += [(x["rule"], GITLAB_SEVERITY[x["severity"]], x["file"], x["headline"],
                           max(x["line"], 1)) for x in f["findings"]]
         got = []
         for item, want in zip(self.gitlab, expected):
             if want[0] == "read-error":
-                got.append((item["check_name"], item["severity"], item["location"]["path"]))
+                got.append((item["check_name"], item["severity"], item["location"]["path"],
+                            item["description"]))
             else:
                 got.append((item["check_name"], item["severity"], item["location"]["path"],
                             item["description"], item["location"]["lines"]["begin"]))

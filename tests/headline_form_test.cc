@@ -27,10 +27,6 @@ using massprops::test_support::CorpusDir;
 using massprops::test_support::ManifestRow;
 using massprops::test_support::ReadCorpusManifest;
 
-constexpr const char* kNoCorpus =
-    "../shared/corpus not found: the corpus tests are skipped; docs/development.md says where the "
-    "corpus comes from";
-
 std::string Quote(const std::string& text) {
   std::string out = "'";
   for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -74,8 +70,6 @@ const CorpusOutputs& Outputs() {
   return outputs;
 }
 
-bool CorpusPresent() { return !ReadCorpusManifest().empty(); }
-
 // What is wrong with a headline: "" when it is whole and short enough.
 std::string Fault(const std::string& headline) {
   if (headline.empty()) return "empty";
@@ -100,7 +94,7 @@ std::vector<std::pair<std::string, std::string>> TextHeadlines() {
 }
 
 TEST(HeadlineFormTest, TextHeadlinesOfTheCorpusAreWholeAndWithin110Characters) {
-  if (!CorpusPresent()) GTEST_SKIP() << kNoCorpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   std::size_t read_errors = 0;
   const auto headlines = TextHeadlines();
   for (const auto& [headline, rule] : headlines) {
@@ -114,7 +108,7 @@ TEST(HeadlineFormTest, TextHeadlinesOfTheCorpusAreWholeAndWithin110Characters) {
 }
 
 TEST(HeadlineFormTest, JsonHeadlinesOfFindingsAndReadErrorsAreWholeAndWithin110Characters) {
-  if (!CorpusPresent()) GTEST_SKIP() << kNoCorpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   const nlohmann::json doc = nlohmann::json::parse(Outputs().json);
   std::size_t findings = 0, errors = 0;
   for (const auto& file : doc.at("files")) {
@@ -134,7 +128,7 @@ TEST(HeadlineFormTest, JsonHeadlinesOfFindingsAndReadErrorsAreWholeAndWithin110C
 }
 
 TEST(HeadlineFormTest, SarifMessagesOfTheCorpusAreWholeAndWithin110Characters) {
-  if (!CorpusPresent()) GTEST_SKIP() << kNoCorpus;
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/MANIFEST.tsv");
   const nlohmann::json log = nlohmann::json::parse(Outputs().sarif);
   std::size_t results = 0;
   for (const auto& result : log.at("runs").at(0).at("results")) {

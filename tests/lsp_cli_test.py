@@ -363,6 +363,8 @@ def test_a_welded_group_finding_lists_its_members_as_related_information():
                 [line_of(WELDED, '<link name="arm"/>'), line_of(WELDED, '<link name="tip"/>')]
             assert all(r["location"]["uri"] == uri for r in related), related
             assert sorted(r["message"].split("'")[1] for r in related) == ["arm", "tip"], related
+            # The same members as check's JSON `group` (the finding's data, not re-derived).
+            assert [r["message"].split("'")[1] for r in related] == group[0]["group"], related
             assert client.shutdown_and_exit() == 0
         finally:
             client.kill()

@@ -81,9 +81,9 @@ std::string RenderGitlab(const std::vector<FileResult>& results, const ReportOpt
     for (const ReadError& error : result.errors) {
       const ReportPlace place{ReportedFile(error.location, result), error.location.line};
       const std::string path = GitlabPath(place.file);
-      const std::string what =
-          error.element.empty() ? error.message : error.element + ": " + error.message;
-      items.push_back(Item(what, kReadErrorRule,
+      // The headline, whole and within kMaxHeadlineChars, as in every format (the full text is
+      // in the other formats' `why`).
+      items.push_back(Item(ReadErrorHeadline(error), kReadErrorRule,
                            fingerprints.Next(kReadErrorRule, path, "", error.element), "critical",
                            place));
     }

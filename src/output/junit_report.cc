@@ -178,9 +178,11 @@ std::string Testsuite(const FileResult& result, SuiteCounts* totals) {
     cases += TestcaseOpen(std::string(kReadErrorRule) + ": " +
                               (error.element.empty() ? result.path : error.element),
                           file_class, place) +
-             ">\n      <error" + Attribute("message", ShortenLongWords(what)) +
+             ">\n      <error" + Attribute("message", ShortenLongWords(ReadErrorHeadline(error))) +
              Attribute("type", kReadErrorRule) + ">" +
-             XmlEscape(ShortenLongWords(FileLine(place) + ": error: " + what + "\n"), false) +
+             XmlEscape(ShortenLongWords(FileLine(place) + ": error: " + ReadErrorHeadline(error) +
+                                        "\nwhy: " + what + "\n"),
+                       false) +
              "</error>\n    </testcase>\n";
     ++counts.tests, ++counts.errors;
   }

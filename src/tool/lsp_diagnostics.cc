@@ -9,7 +9,6 @@
 #include "lsp_protocol.h"
 #include "lsp_server.h"
 #include "massprops/analysis/finding_text.h"
-#include "massprops/analysis/welded_groups.h"
 
 namespace massprops::cli::lsp {
 namespace {
@@ -28,18 +27,6 @@ int LspSeverity(Severity severity) {
       return 3;
   }
   return 3;
-}
-
-// Whether a finding judges its link's welded group as one body (checks.cc's CheckGroup): the
-// group rules, and an impossible composite inertia (its values count the group's links).
-bool IsGroupFinding(const Finding& finding) {
-  const std::string& rule = finding.rule;
-  if (rule == "massless-moving-body" || rule == "massless-link-with-mass-outboard" ||
-      rule == "inertial-missing" || rule == "zero-inertia-about-joint-axis") {
-    return true;
-  }
-  return std::any_of(finding.values.begin(), finding.values.end(),
-                     [](const auto& value) { return value.first == "group_links"; });
 }
 
 // The folder of the executable ("" when unknown).
@@ -106,23 +93,23 @@ json Location(const std::string& file, int line, const std::string& text_if_open
 // <link> of each); empty when the finding is about one link.
 json GroupMembers(const Finding& finding, const Analysis& analysis, const Document& document) {
   json related = json::array();
-  if (!IsGroupFinding(finding) || analysis.xacro) return related;
+  // The finding names its welded group's members (Finding::group, set by the checks); the server
+  // only finds each member's <link> line.
+  if (finding.group.empty() || analysis.xacro) return related;
   for (const Model& model : analysis.read.models) {
     if (model.name != finding.model) continue;
-    for (const WeldedGroup& group : FindWeldedGroups(model)) {
-      if (group.links.size() < 2 || model.links[group.links.front()].name != finding.link) continue;
-      for (int index : group.links) {
-        const Link& link = model.links[index];
-        const bool here = link.location.file.empty() || link.location.file == document.path;
-        json location = here ? json{{"uri", document.uri},
-                                    {"range", LineRange(document.text, link.location.line)}}
-                             : Location(link.location.file, link.location.line, "");
-        related.push_back(
-            {{"location", location},
-             {"message", ShortenLongWords("welded group member '" + link.name + "'")}});
-      }
-      return related;
+    for (const std::string& name : finding.group) {
+      const auto link = std::find_if(model.links.begin(), model.links.end(),
+                                     [&](const Link& l) { return l.name == name; });
+      if (link == model.links.end()) continue;
+      const bool here = link->location.file.empty() || link->location.file == document.path;
+      json location = here ? json{{"uri", document.uri},
+                                  {"range", LineRange(document.text, link->location.line)}}
+                           : Location(link->location.file, link->location.line, "");
+      related.push_back({{"location", location},
+                         {"message", ShortenLongWords("welded group member '" + name + "'")}});
     }
+    return related;
   }
   return related;
 }
