@@ -351,8 +351,8 @@ TEST(CliTest, WithoutAFileTheBundledExampleIsCheckedAndNamed) {
   EXPECT_EQ(path.substr(path.size() - std::string("/examples/two_link_arm.urdf").size()),
             "/examples/two_link_arm.urdf");
   EXPECT_EQ(report["files"][0].at("models"), json::array({"two_link_arm"}));
-  // The three defects documented in the example (hand-derived there): izz = 0.009 >
-  // ixx + iyy = 0.00854667 on the forearm; kg*mm^2 on the upper arm (radius of gyration
+  // The three defects documented in the example (hand-derived there): ixx = 0.0046 >
+  // iyy + izz = 0.00448667 on the forearm; kg*mm^2 on the upper arm (radius of gyration
   // sqrt(tr(I) / 2m) = sqrt(23750 / 3) = 89.0 m for a 0.30 m link); no <inertial> on the camera.
   EXPECT_TRUE(HasFinding(report, "inertia-not-physical", "forearm")) << run.out;
   EXPECT_TRUE(HasFinding(report, "units-suspect", "upper_arm")) << run.out;
@@ -572,7 +572,7 @@ TEST(CliTest, CsvReportListsTheTargetBodiesAsRowsWithTheTargetColumns) {
 // `report --format csv --target mujoco` on the example arm: MuJoCo's bodies (static or moving,
 // principal moments as its eigen-solver gives them) and its refusal as a row of kind
 // target_refusal naming the body and quoting MuJoCo (README.md: the forearm's principal moments
-// 0.00427333, 0.00427333, 0.009 fail A + B >= C).
+// 0.000213333, 0.00427333, 0.0046 fail A + B >= C).
 TEST(CliTest, CsvReportGivesMujocosRefusalAsARow) {
   const RunResult run = RunTool("report --format csv --target mujoco " +
                                 Quote(std::string(MASSPROPS_EXAMPLES_DIR) + "/two_link_arm.urdf"));

@@ -76,12 +76,12 @@ def line_of(text, needle, after=0):
 
 
 def valid_forearm(text):
-    """The example with the forearm's izz replaced by the solid box's (0.8 kg, 4 x 4 x 25 cm):
-    izz = m(b^2 + c^2)/12 with b = c = 0.04 m (the rigid-body table)."""
-    izz = 0.8 * (0.04 ** 2 + 0.04 ** 2) / 12
+    """The example with the forearm's ixx replaced by the solid box's (0.8 kg, 4 x 4 x 25 cm):
+    ixx = m(b^2 + c^2)/12 with b = 0.04, c = 0.25 m (the rigid-body table)."""
+    ixx = 0.8 * (0.04 ** 2 + 0.25 ** 2) / 12
     start = text.index('<link name="forearm">')
-    at = text.index('izz="0.009"', start)
-    return text[:at] + 'izz="%.9g"' % izz + text[at + len('izz="0.009"'):]
+    at = text.index('ixx="0.0046"', start)
+    return text[:at] + 'ixx="%.9g"' % ixx + text[at + len('ixx="0.0046"'):]
 
 
 def test_open_example_publishes_the_findings_check_reports():

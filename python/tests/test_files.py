@@ -87,19 +87,20 @@ def test_check_the_example_finds_its_three_documented_defects(examples):
     assert any(link == "upper_arm" for link, _ in by_link)
     bad = by_link[("forearm", "inertia-not-physical")]
     assert bad.severity == "error" and bad.line > 0 and bad.file.endswith("two_link_arm.urdf")
-    assert "0.009" in bad.message
-    assert bad.values["principal_max"] == pytest.approx(0.009, rel=1e-9)
+    assert "0.0046" in bad.message
+    assert bad.values["principal_max"] == pytest.approx(0.0046, rel=1e-9)
     assert str(bad).startswith(f"{bad.file}:{bad.line}")
     assert "inertia-not-physical" in repr(bad)
 
 
 def test_findings_have_a_headline_evidence_and_help(examples):
-    # Issue 32: a finding's parts. The example's forearm has principal moments 0.00427333,
-    # 0.00427333, 0.009 (docs/rules.md): 0.00427 + 0.00427 < 0.009, the triangle inequality fails.
+    # Issue 32: a finding's parts. The example's forearm has principal moments 0.000213333,
+    # 0.00427333, 0.0046 (its comment): 0.000213 + 0.00427 < 0.0046, the triangle inequality fails.
     findings = massprops.check(examples / "two_link_arm.urdf")
     bad = next(f for f in findings if (f.link, f.rule) == ("forearm", "inertia-not-physical"))
-    assert bad.headline == "link 'forearm': impossible inertia (moments 0.00427 + 0.00427 < 0.009)"
-    assert bad.evidence["moment_3_kg_m2"] == pytest.approx(0.009, rel=1e-9)
+    assert bad.headline == \
+        "link 'forearm': impossible inertia (moments 0.000213 + 0.00427 < 0.0046)"
+    assert bad.evidence["moment_3_kg_m2"] == pytest.approx(0.0046, rel=1e-9)
     assert "massprops fix" in bad.help
     assert "0.00427333" in bad.message  # the full reasoning is kept
     assert bad.to_dict()["headline"] == bad.headline

@@ -44,6 +44,17 @@ std::vector<std::pair<std::string, double>> EvidenceOf(const Finding& f) {
   return evidence;
 }
 
+// The sentence without its trailing relative clause (", whose ..." or ", which ...": detail that
+// the sentence is whole without) when the whole message is too long for a headline.
+std::string WithoutRelativeClause(const std::string& text) {
+  if (CountChars(text) <= kMaxHeadlineChars) return text;
+  for (const char* clause : {", whose ", ", which "}) {
+    const std::size_t at = text.find(clause);
+    if (at != std::string::npos) return text.substr(0, at);
+  }
+  return text;
+}
+
 }  // namespace
 
 void DescribeTargetFinding(Finding& f) {
@@ -72,7 +83,8 @@ void DescribeTargetFinding(Finding& f) {
     f.help = "write the part's mass and inertia (massprops fix projects an invalid inertia)";
   } else if (f.rule == "mujoco-not-predicted") {
     f.headline = HeadlineFromMessage(
-        f.message, "MuJoCo's decision cannot be fully predicted (--explain says why)",
+        WithoutRelativeClause(f.message),
+        "MuJoCo's decision cannot be fully predicted (--explain says why)",
         "--explain says more");
     f.help = "load the model in MuJoCo to know (massprops explain mujoco-not-predicted)";
   } else if (f.rule == "drake-rejects-invalid-inertia") {
