@@ -2,6 +2,7 @@
 out by hand from the files (each test says how), and bad input."""
 import os
 import pathlib
+import re
 import shutil
 import stat
 
@@ -184,6 +185,15 @@ def test_fix_dry_run_writes_nothing_and_repairs_only_errors_by_default(tmp_path,
     # camera_link's missing inertial (inertial-missing) are warnings, guesses: not applied.
     assert "forearm" in changed_links
     assert "upper_arm" not in changed_links and "camera_link" not in changed_links
+    # The nearest valid inertia to the forearm's (ixx 0.0046 > iyy + izz = 0.00448667, excess
+    # 0.000113333): the Euclidean projection onto the half-space ixx <= iyy + izz moves along its
+    # normal (1, -1, -1), a third of the excess from ixx and a third to each of the others
+    # (hand-derived): 0.00456222, 0.00431111, 0.000251111.
+    forearm = result.text[result.text.index('<link name="forearm">'):]
+    written = re.search(r'ixx="([^"]+)".*iyy="([^"]+)".*izz="([^"]+)"', forearm)
+    excess = 0.0046 - (0.00427333 + 0.000213333)
+    assert [float(v) for v in written.groups()] == pytest.approx(
+        [0.0046 - excess / 3, 0.00427333 + excess / 3, 0.000213333 + excess / 3], rel=1e-5)
     forearm = next(c for c in result.changes if c.link == "forearm")
     assert forearm.rule == "inertia-not-physical" and forearm.method == "project"
     assert forearm.changes and all(ch.element == "inertia" for ch in forearm.changes)
