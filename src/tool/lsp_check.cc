@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "lsp_server.h"
+#include "safe_write.h"
 #include "massprops/analysis/config.h"
 
 namespace massprops::cli::lsp {
@@ -71,15 +72,9 @@ std::string WriteBeside(const std::string& path, const std::string& text, std::s
     *error = "cannot write the unsaved buffer beside " + path + ": " + std::strerror(errno);
     return {};
   }
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    written += static_cast<std::size_t>(n);
-  }
+  const bool complete = WriteAll(fd, text);
   close(fd);
-  if (written != text.size()) {
+  if (!complete) {
     std::remove(name.c_str());
     *error = "cannot write the unsaved buffer beside " + path;
     return {};

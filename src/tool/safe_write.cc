@@ -14,11 +14,7 @@
 #include <vector>
 
 namespace massprops::cli {
-namespace {
 
-std::string Reason() { return std::strerror(errno); }
-
-// Writes all of `data` to `fd`; false (errno set) on failure.
 bool WriteAll(int fd, const std::string& data) {
   std::size_t written = 0;
   while (written < data.size()) {
@@ -27,10 +23,15 @@ bool WriteAll(int fd, const std::string& data) {
       if (errno == EINTR) continue;
       return false;
     }
+    if (n == 0) return false;  // nothing written and no error: give up rather than spin
     written += static_cast<std::size_t>(n);
   }
   return true;
 }
+
+namespace {
+
+std::string Reason() { return std::strerror(errno); }
 
 mode_t CreationMode() {
   const mode_t mask = ::umask(0);

@@ -23,6 +23,10 @@ namespace massprops::cli {
 std::optional<std::string> WriteFileSafely(const std::string& path, const std::string& data,
                                            std::vector<std::string>* notes);
 
+/// Writes all of `data` to the open descriptor `fd` (again after EINTR and short writes); false
+/// (errno set) on failure.
+bool WriteAll(int fd, const std::string& data);
+
 /// Flushes standard output (std::cout and stdout) and returns `code`, or 2 with a message on
 /// standard error when anything written to standard output was lost (a full disk, a closed or
 /// unwritable standard output): a report that did not arrive is not a success.

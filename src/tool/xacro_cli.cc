@@ -215,17 +215,11 @@ std::optional<XacroRun> StartXacroRun(const XacroOptions& options, const std::st
     return std::nullopt;
   }
   const std::string& text = run.expansion.text;
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    written += static_cast<std::size_t>(n);
-  }
+  const bool complete = WriteAll(fd, text);
   close(fd);
   run.checked_file = pattern;
   run.temporary = true;
-  if (written != text.size()) {
+  if (!complete) {
     std::remove(pattern.c_str());
     *error = "cannot write the expansion to a temporary file";
     return std::nullopt;
