@@ -13,7 +13,10 @@
 // instead, inertia-about-origin-suspect is said (inertia_about_origin_suspect.cc). The hull bound:
 // for each axis a through c, a body inside the hull of points P has I_a <= m · max_{p in P}
 // |(p − c) × a|² (the squared distance to an axis is convex, so its maximum over the hull is at a
-// vertex): far tighter than the sphere for a detailed CAD mesh.
+// vertex): far tighter than the sphere for a detailed CAD mesh. Over primitives as placed, the
+// same per-axis bound, and the second moment along a direction u: Σ = ½·tr(I)·1 − I is
+// ∫(x − c)(x − c)ᵀ dm, so uᵀΣu = ∫(u·(x − c))² dm <= m · max over the primitives of
+// (u·(x − c))²: tight for a flat part (a wheel), where the moments are loose.
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -21,8 +24,10 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "analysis/rules/rules.h"
+#include "massprops/analysis/finding_text.h"
 
 namespace massprops {
 namespace rules {
@@ -49,6 +54,12 @@ constexpr double kTurnedAxisSlack = 2;
 // A tensor whose largest principal moment is within this factor of its smallest is the same in
 // every orientation (to the rounding of typed-in numbers): turning the part cannot explain it.
 constexpr double kAnisotropic = 1.1;
+// The second moment along a direction, ∫(u·(x − c))² dm, is flagged beyond this factor of
+// m · (farthest point of the primitives from c along u)²: the primitives' allowance for a body
+// that reaches twice farther (as kPrimitiveAxisSlack). It is judged for isotropic tensors only
+// (all principal moments within kAnisotropic: the same number typed on every axis), the
+// signature of a placeholder; docs/labels.md gives the measurement that keeps it there.
+constexpr double kPrimitiveSpreadSlack = kGeometryMargin * kGeometryMargin;
 
 }  // namespace
 
@@ -188,19 +199,82 @@ bool AddPrimitiveCorners(const Geometry& g, std::vector<Eigen::Vector3d>* corner
   return true;
 }
 
-// The points whose hull holds a link whose geometry is all primitives (its collision alone when
-// the collision is its envelope and its visual is of unknown size): nullopt when some of it is a
-// mesh or of unknown size.
-std::optional<LinkGeometryPoints> PrimitivePoints(const JudgedLink& judged) {
-  const bool collision_only = judged.collision_envelope && judged.bounds->partial;
+// The primitives that are a link's envelope (its collision alone when the collision is its
+// envelope and its visual is of unknown size), and the points whose hull holds them: nullopt
+// when some of them is a mesh or of unknown size.
+struct EnvelopePrimitives {
+  std::vector<const Geometry*> shapes;
   LinkGeometryPoints points;
+};
+
+std::optional<EnvelopePrimitives> FindEnvelopePrimitives(const JudgedLink& judged) {
+  const bool collision_only = judged.collision_envelope && judged.bounds->partial;
+  EnvelopePrimitives found;
   for (const Geometry& g : judged.link->geometries) {
     if (collision_only && !g.is_collision) continue;
-    if (!AddPrimitiveCorners(g, &points.corners_B)) return std::nullopt;
+    if (!AddPrimitiveCorners(g, &found.points.corners_B)) return std::nullopt;
+    found.shapes.push_back(&g);
   }
-  if (points.corners_B.empty()) return std::nullopt;
-  points.count = points.corners_B.size();
-  return points;
+  if (found.shapes.empty()) return std::nullopt;
+  found.points.count = found.points.corners_B.size();
+  return found;
+}
+
+// Half the width of a primitive (AddPrimitiveCorners accepted it) along the unit direction v of
+// its own frame: its support function, max over its points x of v·(x − its center). Exact for
+// each shape: a cylinder reaches L/2 along its axis and r across it, not to its box's corners.
+double HalfWidthAlong(const Geometry& g, const Eigen::Vector3d& v) {
+  switch (g.type) {
+    case Geometry::Type::kBox:
+      return 0.5 * v.cwiseAbs().dot(g.size);
+    case Geometry::Type::kCylinder:
+      return g.radius * std::hypot(v.x(), v.y()) + 0.5 * g.length * std::abs(v.z());
+    case Geometry::Type::kCapsule:
+      return g.radius * v.norm() + 0.5 * g.length * std::abs(v.z());
+    case Geometry::Type::kSphere:
+      return g.radius * v.norm();
+    case Geometry::Type::kEllipsoid:
+      return v.cwiseProduct(g.radii).norm();
+    default:
+      return 0;
+  }
+}
+
+// The direction u along which the inertia spreads the mass farthest beyond what the primitives
+// allow: ∫(u·(x − c))² dm = uᵀΣu, Σ = ½·tr(I)·1 − I, at most m · max over the primitives of
+// (u·(x − c))². Over the principal axes of I (those of Σ) and each primitive's axes as placed.
+struct WorstSpread {
+  double ratio = 0, second_moment = 0, bound = 0, width = 0;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
+};
+
+std::optional<WorstSpread> FindWorstSpread(const std::vector<const Geometry*>& shapes, double m,
+                                           const Eigen::Vector3d& c, const Eigen::Matrix3d& I) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(I);
+  if (eig.info() != Eigen::Success) return std::nullopt;
+  std::vector<Eigen::Vector3d> directions;
+  for (int i = 0; i < 3; ++i) directions.emplace_back(eig.eigenvectors().col(i).normalized());
+  for (const Geometry* g : shapes) {
+    for (int i = 0; i < 3; ++i) directions.emplace_back(g->X_BG.R_AB.col(i).normalized());
+  }
+  WorstSpread worst;
+  for (const Eigen::Vector3d& u : directions) {
+    double reach = 0, low = HUGE_VAL, high = -HUGE_VAL;
+    for (const Geometry* g : shapes) {
+      const double middle = u.dot(g->X_BG.p_AB - c);
+      const double half = HalfWidthAlong(*g, g->X_BG.R_AB.transpose() * u);
+      reach = std::max(reach, std::abs(middle) + half);
+      low = std::min(low, middle - half);
+      high = std::max(high, middle + half);
+    }
+    const double second_moment = 0.5 * I.trace() - u.dot(I * u);
+    const double bound = m * reach * reach;
+    if (!(bound > 0)) continue;
+    if (second_moment / bound > worst.ratio) {
+      worst = {second_moment / bound, second_moment, bound, high - low, u};
+    }
+  }
+  return worst;
 }
 
 // A welded part whose inertia is less than kMadeUpInertiaShare of its welded group's central
@@ -253,31 +327,45 @@ void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged) {
            "recompute the inertia for this mass (from CAD, or massprops fix --from-geometry)");
 }
 
-void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
-  if (judged.bounds->marker || (judged.bounds->partial && !judged.collision_envelope)) return;
-  // A stub around one joint of a body that reaches to the next (a motor's cylinder on a link
-  // whose child joint is 10 cm away) is not the body's envelope.
-  if (!ctx.JointsWithin(judged.index, *judged.bounds)) return;
-  if (!WeighsInItsGroup(ctx, judged)) return;
-  const std::optional<LinkGeometryPoints> points = PrimitivePoints(judged);
-  if (!points) return;
+namespace {
+
+void EmitSpread(RuleContext& ctx, const JudgedLink& judged, const std::string& geometry,
+                const WorstSpread& worst) {
   const Link& link = *judged.link;
-  const double m = link.inertial->mass;
-  const Eigen::Vector3d& c = judged.props.p_FoScm_F;
-  const std::optional<WorstAxis> found = FindWorstAxis(*points, m, c, judged.props.I_SScm_F);
-  if (!found) return;
-  const WorstAxis& worst = *found;
-  // An isotropic tensor (a typed-in 1, 1, 1) is the same in every orientation: not a turned one.
-  const Validity moments = Analyze(judged.props.I_SScm_F);
-  const bool anisotropic = moments.moments(2) > kAnisotropic * moments.moments(0);
-  const bool turned = anisotropic && judged.props.I_SScm_F.trace() <= worst.frame_bounds;
-  const double allowed = turned ? kTurnedAxisSlack : kPrimitiveAxisSlack;
-  if (!(worst.ratio > allowed)) return;
-  const std::string geometry =
-      judged.collision_envelope && judged.bounds->partial ? "collision" : judged.geometry_name;
+  ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
+           judged.who + ": along the direction " + Vec(worst.axis) +
+               " the inertia spreads the mass by ∫(u·(x - c))² dm = tr(I)/2 - uᵀIu = " +
+               Num(worst.second_moment) + " kg·m² about the center of mass " +
+               Vec(judged.props.p_FoScm_F) + ", but the " + geometry +
+               " primitives as placed are " + Num(worst.width) +
+               " m wide along it, so a body inside them has at most m · (farthest point from "
+               "the center of mass along it)² = " +
+               Num(worst.bound) + " kg·m² (ratio " + Num(worst.ratio) + ", allowed " +
+               Num(kPrimitiveSpreadSlack) +
+               " for simplified geometry: a typed-in placeholder, such as the same moment on "
+               "every axis of a wheel or caster)",
+           {{"second_moment", worst.second_moment},
+            {"width_bound", worst.bound},
+            {"ratio", worst.ratio}},
+           LinkHeadline(link.name, ": inertia " + FormatRatio(worst.ratio) +
+                                       " too spread along its " + FormatLength(worst.width) +
+                                       " width (typed-in placeholder?)"),
+           {{"second_moment_kg_m2", worst.second_moment},
+            {"max_for_its_width_kg_m2", worst.bound},
+            {"ratio", worst.ratio},
+            {"width_m", worst.width},
+            {"axis_x", worst.axis.x()},
+            {"axis_y", worst.axis.y()},
+            {"axis_z", worst.axis.z()}},
+           "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
+}
+
+void EmitAxisMoment(RuleContext& ctx, const JudgedLink& judged, const std::string& geometry,
+                    const WorstAxis& worst, bool turned, double allowed) {
+  const Link& link = *judged.link;
   ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
            judged.who + ": about the axis " + Vec(worst.axis) + " through the center of mass " +
-               Vec(c) + " the moment of inertia is " + Num(worst.moment) +
+               Vec(judged.props.p_FoScm_F) + " the moment of inertia is " + Num(worst.moment) +
                " kg·m², but a body inside the " + geometry +
                " primitives as placed (their origins' rotations applied) has at most m · "
                "(farthest corner from that axis)² = " +
@@ -299,6 +387,62 @@ void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
            turned ? "rotate the inertia as the geometry is placed (R·I·Rᵀ), or massprops fix "
                     "--from-geometry"
                   : "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
+}
+
+// Whether the link belongs to the world: its welded group does not move and holds a URDF root
+// link named "world" (fixed to the world by Gazebo's and PyBullet's convention, a massless base),
+// an SDF link fixed to the world, or an MJCF worldbody's part. Its inertia never enters the
+// dynamics (static scenery: a door's frame), so a placeholder there changes nothing.
+bool PartOfTheWorld(const RuleContext& ctx, const JudgedLink& judged) {
+  const WeldedGroup& group = ctx.GroupOf(judged.index);
+  if (group.is_moving) return false;
+  if (ctx.model.format == Model::Format::kMjcf) return true;
+  if (ctx.model.format == Model::Format::kUrdf && group.root_link == "world") return true;
+  return std::any_of(group.links.begin(), group.links.end(),
+                     [&](int i) { return ctx.welded_to_world[i]; });
+}
+
+}  // namespace
+
+// Two bounds over the primitives as placed, one finding: the moment about an axis (a tensor
+// written for the part before it was turned) and the second moment along a direction (an
+// inertia spread wider than a flat part: a placeholder on a wheel); the one exceeded by more
+// (its ratio over its allowance) is reported.
+void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged) {
+  if (judged.bounds->marker || (judged.bounds->partial && !judged.collision_envelope)) return;
+  // A stub around one joint of a body that reaches to the next (a motor's cylinder on a link
+  // whose child joint is 10 cm away) is not the body's envelope.
+  if (!ctx.JointsWithin(judged.index, *judged.bounds)) return;
+  if (!WeighsInItsGroup(ctx, judged)) return;
+  const std::optional<EnvelopePrimitives> primitives = FindEnvelopePrimitives(judged);
+  if (!primitives) return;
+  const double m = judged.link->inertial->mass;
+  const Eigen::Vector3d& c = judged.props.p_FoScm_F;
+  const Eigen::Matrix3d& I = judged.props.I_SScm_F;
+  const std::optional<WorstAxis> axis = FindWorstAxis(primitives->points, m, c, I);
+  const std::optional<WorstSpread> spread = FindWorstSpread(primitives->shapes, m, c, I);
+  if (!axis || !spread) return;
+  // An isotropic tensor (a typed-in 1, 1, 1) is the same in every orientation: not a turned one.
+  const Validity moments = Analyze(I);
+  const bool anisotropic = moments.moments(2) > kAnisotropic * moments.moments(0);
+  const bool turned = anisotropic && I.trace() <= axis->frame_bounds;
+  const double allowed = turned ? kTurnedAxisSlack : kPrimitiveAxisSlack;
+  const double axis_excess = axis->ratio / allowed;
+  // Beyond the allowance by more than the tolerance (a 5 cm box with the moment typed for a
+  // body reaching 5 cm is exactly 4 times, not beyond it); isotropic tensors only, and not on
+  // static scenery.
+  const double spread_excess =
+      anisotropic || PartOfTheWorld(ctx, judged)
+          ? 0
+          : spread->ratio / (kPrimitiveSpreadSlack * (1 + ctx.options.tolerance));
+  if (!(axis_excess > 1) && !(spread_excess > 1)) return;
+  const std::string geometry =
+      judged.collision_envelope && judged.bounds->partial ? "collision" : judged.geometry_name;
+  if (spread_excess > axis_excess) {
+    EmitSpread(ctx, judged, geometry, *spread);
+  } else {
+    EmitAxisMoment(ctx, judged, geometry, *axis, turned, allowed);
+  }
 }
 
 }  // namespace rules

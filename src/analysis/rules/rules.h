@@ -66,8 +66,8 @@ bool CheckMadeUpInertia(RuleContext& ctx, const JudgedLink& judged);
 // returns whether either was flagged.
 bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged);
 // inertia-exceeds-geometry by the convex hull of the link's meshes, or, for a link whose geometry
-// is all primitives, axis by axis by the corners of the primitives as placed
-// (CheckInertiaFitsPrimitives).
+// is all primitives, axis by axis by the corners of the primitives as placed and direction by
+// direction by their widths (CheckInertiaFitsPrimitives).
 void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged);
 void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged);
 // com-outside-geometry.
