@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "finding_test_support.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/io/model_reader.h"
@@ -20,42 +21,12 @@ const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/unseen/";
 
 // Checks the fixture as `massprops check` does by default: the meshes' boxes and vertices read.
 std::vector<Finding> Check(const std::string& name) {
-  const std::string file = kDir + name + ".urdf";
-  const ReadResult read = ReadModelFile(file);
-  EXPECT_TRUE(read.ok()) << file;
-  if (read.models.empty()) return {};
-  static MeshCache cache;
-  MeshResolveOptions resolve;
-  resolve.model_file = file;
-  resolve.use_environment = false;
-  resolve.cache = &cache;
-  CheckOptions options;
-  options.box = MakeLinkBoxFunction(resolve);
-  options.points = MakeLinkPointsFunction(resolve);
-  return CheckModel(read.models[0], options);
+  return test_support::CheckAsTheTool(kDir + name + ".urdf", /*closed_meshes=*/false);
 }
 
-std::vector<Finding> Select(const std::vector<Finding>& findings, const std::string& rule) {
-  std::vector<Finding> out;
-  for (const Finding& f : findings) {
-    if (f.rule == rule) out.push_back(f);
-  }
-  return out;
-}
-
-double ValueOf(const Finding& f, const std::string& name) {
-  for (const auto& [key, value] : f.values) {
-    if (key == name) return value;
-  }
-  ADD_FAILURE() << "no value " << name << " in " << f.message;
-  return NAN;
-}
-
-std::string Dump(const std::vector<Finding>& findings) {
-  std::string text;
-  for (const Finding& f : findings) text += "  [" + f.rule + "] " + f.message + "\n";
-  return text;
-}
+using test_support::Dump;
+using test_support::Select;
+using test_support::ValueOf;
 
 // Box 0.1 x 0.2 x 0.3 m, 1 kg, COM at its center: ixx <= m (0.1² + 0.15²) = 0.0325 kg·m² (the
 // farthest vertex from the x axis). ixx = 0.0375 is 15/13 of it; the bounding-sphere test

@@ -12,6 +12,7 @@
 
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/density_rules.h"
+#include "finding_test_support.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/mesh/mesh_loader.h"
@@ -24,44 +25,14 @@ const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/round2/";
 // Checks the fixture as `massprops check` does by default (the meshes' boxes, vertices and closed
 // volumes read).
 std::vector<Finding> Check(const std::string& name, bool mirrored = true) {
-  const std::string file = kDir + name + ".urdf";
-  const ReadResult read = ReadModelFile(file);
-  EXPECT_TRUE(read.ok()) << file;
-  if (read.models.empty()) return {};
-  static MeshCache cache;
-  MeshResolveOptions resolve;
-  resolve.model_file = file;
-  resolve.use_environment = false;
-  resolve.cache = &cache;
   CheckOptions options;
-  options.box = MakeLinkBoxFunction(resolve);
-  options.points = MakeLinkPointsFunction(resolve);
-  options.closed_mesh = MakeClosedMeshShapeFunction(resolve);
   if (!mirrored) options.overrides["com-not-mirrored"] = std::nullopt;  // turned off
-  return CheckModel(read.models[0], options);
+  return test_support::CheckAsTheTool(kDir + name + ".urdf", true, options);
 }
 
-std::vector<Finding> Select(const std::vector<Finding>& findings, const std::string& rule) {
-  std::vector<Finding> out;
-  for (const Finding& f : findings) {
-    if (f.rule == rule) out.push_back(f);
-  }
-  return out;
-}
-
-double ValueOf(const Finding& f, const std::string& name) {
-  for (const auto& [key, value] : f.values) {
-    if (key == name) return value;
-  }
-  ADD_FAILURE() << "no value " << name << " in " << f.message;
-  return NAN;
-}
-
-std::string Dump(const std::vector<Finding>& findings) {
-  std::string text;
-  for (const Finding& f : findings) text += "  [" + f.rule + "] " + f.message + "\n";
-  return text;
-}
+using test_support::Dump;
+using test_support::Select;
+using test_support::ValueOf;
 
 // The span of joints at one point is no evidence: the chain around the link (the pelvis origin
 // 0.111803 m inboard, the knee 0.4 m outboard, the thigh's box 0.401559 m) is. A unit slip on the

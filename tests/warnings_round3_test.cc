@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "finding_test_support.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/io/model_reader.h"
@@ -25,55 +26,17 @@ namespace {
 
 const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/check/round3/";
 
-// Checks the file as `massprops check` does by default.
+using test_support::Dump;
+using test_support::EvidenceOf;
+using test_support::Select;
+using test_support::ValueOf;
+
 std::vector<Finding> CheckFile(const std::string& file) {
-  const ReadResult read = ReadModelFile(file);
-  EXPECT_TRUE(read.ok()) << file;
-  if (read.models.empty()) return {};
-  static MeshCache cache;
-  MeshResolveOptions resolve;
-  resolve.model_file = file;
-  resolve.use_environment = false;
-  resolve.cache = &cache;
-  CheckOptions options;
-  options.box = MakeLinkBoxFunction(resolve);
-  options.points = MakeLinkPointsFunction(resolve);
-  options.closed_mesh = MakeClosedMeshShapeFunction(resolve);
-  return CheckModel(read.models[0], options);
+  return test_support::CheckAsTheTool(file);
 }
 
 // Checks the fixture as `massprops check` does by default.
 std::vector<Finding> Check(const std::string& name) { return CheckFile(kDir + name + ".urdf"); }
-
-std::vector<Finding> Select(const std::vector<Finding>& findings, const std::string& rule) {
-  std::vector<Finding> out;
-  for (const Finding& f : findings) {
-    if (f.rule == rule) out.push_back(f);
-  }
-  return out;
-}
-
-double ValueOf(const Finding& f, const std::string& name) {
-  for (const auto& [key, value] : f.values) {
-    if (key == name) return value;
-  }
-  ADD_FAILURE() << "no value " << name << " in " << f.message;
-  return NAN;
-}
-
-double EvidenceOf(const Finding& f, const std::string& name) {
-  for (const auto& [key, value] : f.evidence) {
-    if (key == name) return value;
-  }
-  ADD_FAILURE() << "no evidence " << name << " in " << f.headline;
-  return NAN;
-}
-
-std::string Dump(const std::vector<Finding>& findings) {
-  std::string text;
-  for (const Finding& f : findings) text += "  [" + f.rule + "] " + f.message + "\n";
-  return text;
-}
 
 bool Flags(const std::vector<Finding>& findings, const std::string& link) {
   return std::any_of(findings.begin(), findings.end(), [&](const Finding& f) {
