@@ -91,10 +91,26 @@ PY
   fi
 fi
 log=$(mktemp)
-trap 'rm -f "$log"' EXIT
+# Each source as written, without a precompiled header (cmake/precompiled_headers.cmake): clang
+# cannot read gcc's, and each source must include what it uses. A copy of the database without
+# the header's options when the build has one.
+db_dir=$(mktemp -d)
+trap 'rm -rf "$log" "$db_dir"' EXIT
+python3 - "$build/compile_commands.json" "$db_dir/compile_commands.json" <<'PY'
+import json, re, shlex, sys
+entries = json.load(open(sys.argv[1]))
+pch = re.compile(r" -Winvalid-pch| -include(-pch)? +\S*cmake_pch\.hxx(\.pch|\.gch)?"
+                 r"| -Xclang +-include(-pch)? +-Xclang +\S*cmake_pch\.hxx(\.pch|\.gch)?")
+for entry in entries:
+    if "command" in entry:
+        entry["command"] = pch.sub("", entry["command"])
+    else:
+        entry["arguments"] = shlex.split(pch.sub("", shlex.join(entry["arguments"])))
+json.dump(entries, open(sys.argv[2], "w"), indent=1)
+PY
 start=$SECONDS
 printf '%s\n' "${sources[@]}" |
-  xargs -P "$jobs" -n 4 "$clang_tidy" -p "$build" --quiet >"$log" 2>&1
+  xargs -P "$jobs" -n 4 "$clang_tidy" -p "$db_dir" --quiet >"$log" 2>&1
 tidy_status=$?
 # clang-tidy prints each warning of a header once per source that includes it.
 grep -E '(warning|error):' "$log" | sort -u

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Quick start, command 1: set up, build, and check a model (the bundled example when none is given).
+# Only what the tool needs is installed and built (tools/setup.sh, MASSPROPS_SETUP_TOOL_ONLY): the
+# `massprops` executable and its mesh module; tools/test.sh installs and builds everything.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$here/tools/setup.sh" -DMASSPROPS_BUILD_TESTS=OFF -DMASSPROPS_BUILD_BENCH=OFF
+MASSPROPS_SETUP_TOOL_ONLY=1 "$here/tools/setup.sh" -DMASSPROPS_BUILD_TESTS=OFF \
+  -DMASSPROPS_BUILD_BENCH=OFF
 exec "${BUILD_DIR:-$here/build}/massprops" check "$@"

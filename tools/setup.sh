@@ -2,15 +2,20 @@
 # Installs the Debian packages massprops needs (only those missing; apt-get needs root),
 # then configures and builds into build/ (or $BUILD_DIR), through ccache when it is installed
 # (MASSPROPS_NO_CCACHE=1: not). Extra arguments go to cmake.
+# MASSPROPS_SETUP_TOOL_ONLY=1 (tools/run.sh): only the packages the `massprops` tool's build needs,
+# and only the tool is built (with its mesh module): not the library's .so, the Python module, the
+# man page, the tests or the benchmarks (docs/development.md, "Time to the first finding").
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$here/build}
 
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
-          nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev
-          pybind11-dev python3-dev python3-numpy libjs-three)
+          nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libjs-three)
 # The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
 packages+=(libyaml-cpp-dev)
+if [[ -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]]; then
+# The Python module (python/).
+packages+=(pybind11-dev python3-dev python3-numpy)
 # The Debian package (tools/package.sh): the man page is written by help2man, cpack's Depends:
 # by dpkg-shlibdeps (dpkg-dev).
 packages+=(help2man dpkg-dev)
@@ -18,8 +23,9 @@ packages+=(help2man dpkg-dev)
 # the same sources with the same flags; the first compiles, the others hit the cache
 # (docs/development.md, "CI time").
 packages+=(ccache)
+fi
 # MASSPROPS_SETUP_BUILD_ONLY=1 (tools/package.sh, action.yml): only what the build needs.
-if [[ -z ${MASSPROPS_SETUP_BUILD_ONLY:-} ]]; then
+if [[ -z ${MASSPROPS_SETUP_BUILD_ONLY:-} && -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]]; then
 packages+=(libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev python3-pytest)
 # The MuJoCo differential test (tests/target_profile_mujoco_test.cc): libmujoco 2.2.2.
 packages+=(libmujoco-dev)
@@ -40,6 +46,9 @@ packages+=(neovim)
 packages+=(lintian colcon python3-colcon-cmake python3-colcon-ros python3-colcon-bash)
 # `check --format junit` read as GitLab and Jenkins read it (tests/ci_formats_test.py).
 packages+=(python3-junitparser)
+# urdfdom's check_urdf, timed beside `massprops check` on the same files by
+# tools/growth_check.py --curve (docs/benchmarks.md, section 11).
+packages+=(liburdfdom-tools)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -63,4 +72,6 @@ if command -v ccache >/dev/null && [[ -z ${MASSPROPS_NO_CCACHE:-} ]]; then
 fi
 cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} "${launcher[@]}" "$@" \
   >/dev/null
-cmake --build "$build_dir" -j "$(nproc)"
+targets=()
+[[ -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]] || targets=(--target massprops-cli)
+cmake --build "$build_dir" -j "$(nproc)" "${targets[@]}"

@@ -18,7 +18,12 @@ jobs=$(nproc)
 # same flags: through ccache (tools/setup.sh installs it), the first compiles them and the others
 # hit. A cache of the checkout's own unless CCACHE_DIR names one (docs/development.md, "CI time").
 export CCACHE_DIR=${CCACHE_DIR:-$here/build-ccache}
-BUILD_DIR="$here/build" "$here/tools/setup.sh" -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_TESTS=ON
+# The benchmarks named too: tools/run.sh configures the same build/ without them. No precompiled
+# header for the library and the tool in the Release trees (MASSPROPS_PCH, its path differs in each
+# tree): the .deb's and colcon's compile commands equal build/'s, and they hit.
+release_args=(-DMASSPROPS_WERROR=ON -DMASSPROPS_PCH=OFF)
+BUILD_DIR="$here/build" "$here/tools/setup.sh" "${release_args[@]}" -DMASSPROPS_BUILD_TESTS=ON \
+  -DMASSPROPS_BUILD_BENCH=ON
 
 # One clang-14 tree for both sanitizer passes: the tests under ASan + UBSan, and the libFuzzer
 # targets (MASSPROPS_FUZZ=ON instruments everything for coverage too; only the fuzz targets link
@@ -59,8 +64,8 @@ shared_skips() {
 
 # As users install it (docs/install.md): the .deb built, judged by lintian and run from its files
 # only, with the GitHub Action's script on it; a ROS 2 workspace built by colcon.
-bash "$here/tools/package_test.sh" -DMASSPROPS_WERROR=ON
-bash "$here/tools/colcon_test.sh" -DMASSPROPS_WERROR=ON
+bash "$here/tools/package_test.sh" "${release_args[@]}"
+bash "$here/tools/colcon_test.sh" "${release_args[@]}"
 
 if [[ -n ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   shared_skips
