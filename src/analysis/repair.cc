@@ -13,6 +13,8 @@
 
 #include "analysis/repair_judge.h"
 #include "massprops/analysis/checks.h"
+#include "massprops/analysis/finding_text.h"
+#include "massprops/analysis/fix_text.h"
 #include "massprops/analysis/welded_groups.h"
 #include "massprops/core/format_number.h"
 #include "massprops/core/principal_axes.h"
@@ -479,7 +481,18 @@ class Planner {
           "; the causes that fit these numbers: a placeholder inertia, a mass edited without its "
           "inertia, values raised on purpose to stabilise a simulation, or a unit slip — not "
           "repaired; compare the link's mass and inertia with its CAD model";
-      refused.push_back({"units-suspect", link.name, link.location.line, why});
+      RefusedRepair refusal{"units-suspect", link.name, link.location.line, why, "", {}, {}};
+      refusal.reason = extent > 0 && plausible.size() > 1
+                           ? "more than one unit factor fits its size"
+                       : extent > 0 ? "no unit factor makes its inertia fit its size"
+                                    : "it has no geometry to tell which unit factor fits";
+      refusal.evidence.push_back("radius of gyration " + FormatLength(k) + " on a " +
+                                 FormatMass(w.mass) + " body" +
+                                 (extent > 0 ? ", half diagonal " + FormatLength(extent) : ""));
+      refusal.evidence.push_back(
+          "a placeholder, a mass edited without its inertia, values raised for a simulator's "
+          "stability, or a unit slip: the numbers alone do not tell which");
+      refused.push_back(std::move(refusal));
       return;
     }
     w.mass *= chosen->mass_factor;
@@ -552,13 +565,17 @@ class Planner {
     // and a projection would hide it behind a valid-looking tensor of the same nonsense size.
     const double k = w.mass > 0 ? std::sqrt(std::abs(repaired.trace()) / (2 * w.mass)) : 0;
     if (w.mass > 0 && k < kMinRadiusOfGyration) {
-      refused.push_back(
-          {"inertia-not-physical", link.name, link.location.line,
-           "inertia of trace " + Short(I.trace()) + " kg·m² on a " + Short(w.mass) +
-               " kg body: radius of gyration " + Short(k) +
-               " m; a units or placeholder mistake, not a rounding error — not repaired; "
-               "give the link the inertia of its body (its CAD model, or `fix --from-geometry "
-               "LINK`)"});
+      RefusedRepair refusal{"inertia-not-physical", link.name, link.location.line, "", "", {}, {}};
+      refusal.why = "inertia of trace " + Short(I.trace()) + " kg·m² on a " + Short(w.mass) +
+                    " kg body: radius of gyration " + Short(k) +
+                    " m; a units or placeholder mistake, not a rounding error — not repaired";
+      refusal.reason = "its inertia is far too small for its mass to be a rounding error";
+      refusal.evidence.push_back("inertia trace " + FormatInertia(I.trace()) + " on a " +
+                                 FormatMass(w.mass) + " body: radius of gyration " +
+                                 FormatLength(k) + " (below 0.1 mm)");
+      refusal.evidence.push_back(
+          "a units or placeholder mistake, not a rounding error: a projection would hide it");
+      refused.push_back(std::move(refusal));
       return;
     }
     SetMatrix(repaired, &w);
@@ -743,10 +760,10 @@ std::string DescribeRepair(const Repair& repair) {
   std::string text = "link '" + repair.link + "' [" + repair.rule + " → " + repair.method + "]";
   if (repair.inserts_inertial) {
     const Inertial& a = repair.after;
-    text += ": new <inertial>: mass " + Num(a.mass) + ", center of mass (" + Num(a.X_BBi.p_AB.x()) +
-            ", " + Num(a.X_BBi.p_AB.y()) + ", " + Num(a.X_BBi.p_AB.z()) + "), ixx " + Num(a.ixx) +
-            ", ixy " + Num(a.ixy) + ", ixz " + Num(a.ixz) + ", iyy " + Num(a.iyy) + ", iyz " +
-            Num(a.iyz) + ", izz " + Num(a.izz);
+    text += ": new <inertial>\n  mass " + Num(a.mass) + ", center of mass (" +
+            Num(a.X_BBi.p_AB.x()) + ", " + Num(a.X_BBi.p_AB.y()) + ", " + Num(a.X_BBi.p_AB.z()) +
+            ")\n  inertia ixx " + Num(a.ixx) + ", iyy " + Num(a.iyy) + ", izz " + Num(a.izz) +
+            "\n  inertia ixy " + Num(a.ixy) + ", ixz " + Num(a.ixz) + ", iyz " + Num(a.iyz);
   }
   for (const FieldChange& c : repair.changes) {
     auto join = [](const std::vector<double>& v) {
@@ -758,7 +775,8 @@ std::string DescribeRepair(const Repair& repair) {
     if (c.line > 0) text += " (line " + std::to_string(c.line) + ")";
     text += ": " + join(c.old_values) + " → " + join(c.new_values);
   }
-  text += "\n  why: " + repair.why;
+  const std::vector<std::string> why = WrapWords(repair.why, kMaxDetailChars - 7);
+  for (std::size_t i = 0; i < why.size(); ++i) text += (i ? "\n       " : "\n  why: ") + why[i];
   text += "\n  relative change: " + Percent(repair.relative_change);
   return text;
 }

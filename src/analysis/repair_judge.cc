@@ -6,6 +6,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "massprops/analysis/finding_text.h"
+#include "massprops/analysis/fix_text.h"
 
 namespace massprops::internal {
 namespace {
@@ -43,6 +49,74 @@ void RoundChanged(const std::optional<Inertial>& before, int digits, Inertial* a
   round(b.iyz, &after->iyz);
 }
 
+// What the repair's method writes, as the subject of a sentence: "its nearest valid inertia".
+std::string MethodSubject(const std::string& method) {
+  const std::string last =
+      method.substr(method.rfind('+') == std::string::npos ? 0 : method.rfind('+') + 1);
+  if (last == "project") return "its nearest valid inertia";
+  if (last == "balance") return "its balanced inertia";
+  if (last == "rescale-units") return "its inertia in the unit that fits";
+  if (last == "negate-products") return "its inertia with products negated";
+  if (last == "shift-to-com") return "its inertia shifted to its COM";
+  if (last == "from-geometry-density") return "the mass from its geometry";
+  if (last == "from-geometry") return "its geometry's inertia";
+  return "the repair (" + method + ")";
+}
+
+// "mesh", "box", "cylinder", ... or "geometry": what the link's geometry is, in one word.
+std::string GeometryWord(const Link& link) {
+  std::string word;
+  for (const Geometry& g : link.geometries) {
+    static const char* const kWords[] = {"box",       "cylinder", "sphere",  "capsule",
+                                         "ellipsoid", "mesh",     "geometry"};
+    const std::string w = kWords[static_cast<int>(g.type)];
+    if (!word.empty() && word != w) return "geometry";
+    word = w;
+  }
+  return word.empty() ? "size" : word;
+}
+
+// The refusal of `repair` for the problems found: its reason at a glance, the numbers that
+// decided as whole lines, the long form in `why`.
+RefusedRepair DescribeRefusal(const Model& model, const Repair& repair,
+                              const std::vector<std::pair<bool, Finding>>& found) {
+  RefusedRepair refusal{repair.rule, repair.link, repair.link_line, "", "", {}, repair};
+  refusal.why = "the repair (" + repair.method + ") does not pass the checks: ";
+  for (std::size_t j = 0; j < found.size(); ++j) {
+    const auto& [leaves, f] = found[j];
+    refusal.why += (j ? "; " : "") + std::string(leaves ? "it leaves " : "it creates ") + f.rule +
+                   (f.link.empty() || leaves ? "" : " on link '" + f.link + "'") + ": " + f.message;
+  }
+  refusal.why += " — not repaired";
+  const int index = model.FindLink(repair.link);
+  const std::string shape = index < 0 ? "size" : GeometryWord(model.links[index]);
+  const auto& [leaves, first] = found.front();
+  const std::string subject = MethodSubject(repair.method);
+  if (leaves) {
+    refusal.reason = subject + " still has " + first.rule;
+  } else if (first.link == repair.link &&
+             (first.rule.find("geometry") != std::string::npos || first.rule == "units-suspect" ||
+              first.rule == "density-implausible")) {
+    refusal.reason = subject + " does not fit its " + shape + " either";
+  } else {
+    refusal.reason = subject + " would draw " + first.rule;
+  }
+  if (repair.before) {
+    refusal.evidence.push_back("principal moments " +
+                               FormatTriple(PrincipalMomentsOf(*repair.before)) + " kg·m², " +
+                               (repair.method == "project" ? "the nearest valid ones " : "after ") +
+                               FormatTriple(PrincipalMomentsOf(repair.after)));
+  }
+  for (const auto& [left, f] : found) {
+    const std::string lead =
+        (left ? "still " : "then ") + f.rule +
+        (f.link.empty() || f.link == repair.link ? "" : " on '" + f.link + "'") + ": ";
+    const std::string values = FormatWholeEvidence(f.values, 86 - CountChars(lead));
+    refusal.evidence.push_back(values.empty() ? HeadlineOf(f) : lead + values);
+  }
+  return refusal;
+}
+
 }  // namespace
 
 // Drops the repairs that have problems, one at a time (each drop changes what the others are
@@ -53,14 +127,9 @@ void DropFailingRepairs(const RepairJudge& judge, std::vector<Repair>* repairs,
     changed = false;
     for (std::size_t i = 0; i < repairs->size(); ++i) {
       const Repair& repair = (*repairs)[i];
-      const std::vector<std::string> found = judge.Problems(repair, *repairs);
+      const std::vector<std::pair<bool, Finding>> found = judge.ProblemFindings(repair, *repairs);
       if (found.empty()) continue;
-      if (refused) {
-        std::string why = "the repair (" + repair.method + ") does not pass the checks: ";
-        for (std::size_t j = 0; j < found.size(); ++j) why += (j ? "; " : "") + found[j];
-        why += " — not repaired; look at this link's mass, center of mass and inertia by hand";
-        refused->push_back({repair.rule, repair.link, repair.link_line, why});
-      }
+      if (refused) refused->push_back(DescribeRefusal(judge.model(), repair, found));
       repairs->erase(repairs->begin() + static_cast<std::ptrdiff_t>(i));
       changed = true;
       break;

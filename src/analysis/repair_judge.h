@@ -40,22 +40,34 @@ class RepairJudge {
   // What is wrong with `repair` when `all` (which holds it) are applied: a finding it answers
   // is left (judged with all of them applied: a welded group's finding may need every link of
   // the group repaired), or it creates a finding the model did not have (judged with it alone).
-  std::vector<std::string> Problems(const Repair& repair, const std::vector<Repair>& all) const {
-    std::vector<std::string> found;
+  // The same as findings: (true: it leaves it, false: it creates it, finding).
+  std::vector<std::pair<bool, Finding>> ProblemFindings(const Repair& repair,
+                                                        const std::vector<Repair>& all) const {
+    std::vector<std::pair<bool, Finding>> found;
     for (const Finding& f : CheckModel(ApplyRepairs(model_, all), check_options_)) {
       if (f.link == repair.link &&
           std::find(repair.answers.begin(), repair.answers.end(), f.rule) != repair.answers.end()) {
-        found.push_back("it leaves " + f.rule + ": " + f.message);
+        found.emplace_back(true, f);
       }
     }
     for (const Finding& f : CheckModel(ApplyRepairs(model_, {repair}), check_options_)) {
-      if (!before_.count({f.link, f.rule})) {
-        found.push_back("it creates " + f.rule +
-                        (f.link.empty() ? "" : " on link '" + f.link + "'") + ": " + f.message);
-      }
+      if (!before_.count({f.link, f.rule})) found.emplace_back(false, f);
     }
     return found;
   }
+
+  std::vector<std::string> Problems(const Repair& repair, const std::vector<Repair>& all) const {
+    std::vector<std::string> found;
+    for (const auto& [leaves, f] : ProblemFindings(repair, all)) {
+      found.push_back(leaves ? "it leaves " + f.rule + ": " + f.message
+                             : "it creates " + f.rule +
+                                   (f.link.empty() ? "" : " on link '" + f.link + "'") + ": " +
+                                   f.message);
+    }
+    return found;
+  }
+
+  const Model& model() const { return model_; }
 
   const CheckOptions& check_options() const { return check_options_; }
 

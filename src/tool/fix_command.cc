@@ -26,13 +26,17 @@
 #include <vector>
 
 #include "commands.h"
+#include "fix_options.h"
 #include "geometry_cli.h"
 #include "massprops/analysis/checks.h"
+#include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/fix_effect.h"
+#include "massprops/analysis/fix_text.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/mass_repair.h"
 #include "massprops/analysis/materials.h"
 #include "massprops/analysis/repair.h"
+#include "massprops/analysis/repair_routes.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/mesh/mesh_loader.h"
 #include "massprops/output/fix_report.h"
@@ -52,36 +56,6 @@ constexpr int kExitOk = 0;
 constexpr int kExitErrorsRemain = 1;
 constexpr int kExitError = 2;
 
-struct FixArgs {
-  std::string file;
-  bool dry_run = false;
-  bool diff = false;
-  std::string output;
-  bool in_place = false;
-  std::string backup;
-  std::string repair = "project";
-  bool fix_units = false;
-  std::vector<std::string> apply;
-  double density = kDefaultDensity;
-  // --density RHO (a bare number: the density above) or LINK=RHO (repeatable), as written.
-  std::vector<std::string> density_args;
-  std::optional<double> total_mass;        // --total-mass KG
-  std::vector<std::string> mass_args;      // --mass LINK=KG
-  std::vector<std::string> material_args;  // --material LINK=NAME
-  std::string format = "text";             // --format text|json
-  MassRepairOptions mass;                  // filled from the four above by ParseMassOptions
-  bool from_geometry = false;
-  std::vector<std::string> from_geometry_links;
-  double tolerance = 1e-6;
-  std::vector<std::string> model_paths;
-  bool geometry = false;
-  bool no_geometry = false;  // --no-geometry: not even the meshes' bounding boxes
-  std::vector<std::string> package_paths;
-  std::string target;  // --target ("" = generic)
-  bool include_files = false;
-  XacroOptions xacro;  // a xacro package: the sources are repaired (xacro_fix.h)
-};
-
 // The file each repaired link is defined in: the top-level file, or (SDF) the file of an
 // included model.
 std::string FileOfLink(const std::vector<Model>& models, const std::string& link_name, int line) {
@@ -91,123 +65,6 @@ std::string FileOfLink(const std::vector<Model>& models, const std::string& link
     }
   }
   return "";
-}
-
-// A positive finite number written whole in `text` (no trailing characters), or nullopt.
-std::optional<double> ParsePositive(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double x = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !(x > 0) || !std::isfinite(x)) return std::nullopt;
-  return x;
-}
-
-// Splits "LINK=VALUE" at its last '='; false when there is none or a side is empty.
-bool SplitAssignment(const std::string& text, std::string* link, std::string* value) {
-  const std::size_t eq = text.rfind('=');
-  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) return false;
-  *link = text.substr(0, eq);
-  *value = text.substr(eq + 1);
-  return true;
-}
-
-// Reads --density (RHO or LINK=RHO), --mass LINK=KG, --material LINK=NAME and --total-mass into
-// args->density and args->mass; prints the reason and returns false when one is malformed.
-bool ParseMassOptions(FixArgs* args) {
-  int bare = 0;
-  for (const std::string& text : args->density_args) {
-    std::string link, value;
-    if (text.find('=') == std::string::npos) {
-      const std::optional<double> rho = ParsePositive(text);
-      if (!rho || ++bare > 1) {
-        std::cerr << "massprops: error: --density must be a positive number of kg/m³ (given once) "
-                     "or LINK=KG_PER_M3, got '"
-                  << text << "'\n";
-        return false;
-      }
-      args->density = *rho;
-      continue;
-    }
-    const std::optional<double> rho =
-        SplitAssignment(text, &link, &value) ? ParsePositive(value) : std::nullopt;
-    if (!rho) {
-      std::cerr << "massprops: error: --density LINK=KG_PER_M3: '" << text
-                << "' does not name a link and a positive density\n";
-      return false;
-    }
-    args->mass.link_densities.push_back({link, *rho, ""});
-  }
-  for (const std::string& text : args->material_args) {
-    std::string link, name;
-    const Material* material = SplitAssignment(text, &link, &name) ? FindMaterial(name) : nullptr;
-    if (material == nullptr) {
-      std::cerr << "massprops: error: --material LINK=NAME: '" << text
-                << "' does not name a link and one of the materials " << MaterialNames() << "\n";
-      return false;
-    }
-    args->mass.link_densities.push_back({link, material->density, material->label});
-  }
-  for (const std::string& text : args->mass_args) {
-    std::string link, value;
-    const std::optional<double> kg =
-        SplitAssignment(text, &link, &value) ? ParsePositive(value) : std::nullopt;
-    if (!kg) {
-      std::cerr << "massprops: error: --mass LINK=KG: '" << text
-                << "' does not name a link and a positive mass\n";
-      return false;
-    }
-    args->mass.link_masses.emplace_back(link, *kg);
-  }
-  if (args->total_mass) {
-    if (!(*args->total_mass > 0) || !std::isfinite(*args->total_mass)) {
-      std::cerr << "massprops: error: --total-mass must be a positive number of kg\n";
-      return false;
-    }
-    args->mass.total_mass = args->total_mass;
-  }
-  if (!args->mass.link_densities.empty() && args->no_geometry) {
-    std::cerr << "massprops: error: --density LINK=... and --material read the link's meshes: "
-                 "they cannot be combined with --no-geometry\n";
-    return false;
-  }
-  if (args->format == "json" && (args->diff || (!args->dry_run && !args->in_place &&
-                                                (args->output.empty() || args->output == "-")))) {
-    std::cerr << "massprops: error: --format json prints on standard output: use it with "
-                 "--dry-run, -o OUT or --in-place, and without --diff\n";
-    return false;
-  }
-  return true;
-}
-
-// Rejects contradictory or out-of-range options before anything is read; prints the reason and
-// returns false when the command line is wrong.
-bool CheckFixArgs(const FixArgs& args) {
-  if (args.in_place && !args.output.empty()) {
-    std::cerr << "massprops: error: --in-place and -o cannot be combined\n";
-    return false;
-  }
-  if (!args.backup.empty() && !args.in_place) {
-    std::cerr << "massprops: error: --backup needs --in-place\n";
-    return false;
-  }
-  if (args.dry_run && (args.in_place || !args.output.empty() || args.diff)) {
-    std::cerr << "massprops: error: --dry-run cannot be combined with --diff, -o or --in-place\n";
-    return false;
-  }
-  if (args.in_place && args.file == "-") {
-    std::cerr << "massprops: error: --in-place needs a file, not standard input\n";
-    return false;
-  }
-  if (!(args.tolerance >= 0) || !std::isfinite(args.tolerance)) {
-    std::cerr << "massprops: error: --tolerance must be a finite number at least 0, got "
-              << args.tolerance << "\n";
-    return false;
-  }
-  if (!(args.density > 0) || !std::isfinite(args.density)) {
-    std::cerr << "massprops: error: --density must be a positive number of kg/m³\n";
-    return false;
-  }
-  return true;
 }
 
 // The file being repaired: its text, the name messages give it, and what the reader made of it.
@@ -245,6 +102,9 @@ struct FixSetup {
   MujocoCompilerOptions mujoco;
   MeshCache mesh_cache;  // each mesh file is read once
   MeshResolveOptions resolve;
+  // The meshes' shapes for the ways forward of a link fix leaves (repair_routes.h): read only
+  // for such a link (unless --no-geometry).
+  LinkShapeFunction route_shape;
 };
 
 // Whether every --apply RULE names a heuristic repair (or "all"); prints the choices when not.
@@ -297,6 +157,7 @@ bool ConfigureFix(const FixArgs& args, const std::string& text, FixSetup* setup)
     // The mass repairs asked for by name read the closed meshes (--density LINK=, --material),
     // and so do the density rules that judge the result; a bare fix does not read them.
     if (args.mass.any()) setup->check.closed_mesh = MakeClosedMeshShapeFunction(setup->resolve);
+    setup->route_shape = options.shape ? options.shape : MakeLinkShapeFunction(setup->resolve);
   }
   return true;
 }
@@ -308,13 +169,48 @@ struct RepairPlan {
   std::vector<std::string> known_links;
   // Heuristic repairs that were not asked for, per rule: listed so that nothing is silent.
   std::map<std::string, std::vector<Repair>> not_asked;
+  // The ways forward of each link fix leaves with a finding, or (--dry-run) repairs.
+  std::map<std::string, std::vector<RepairRoute>> routes;
+  // The severity of each finding (link, rule) the repairs were planned from.
+  std::map<std::pair<std::string, std::string>, Severity> severity;
 };
+
+// The ways forward (repair_routes.h) of the links of `model` that fix leaves with an error or a
+// refused repair, and with `all` (--dry-run) of those it repairs or could repair too.
+void AddRoutes(const Model& model, const std::vector<Finding>& findings, const FixSetup& setup,
+               const std::vector<Repair>& planned, std::size_t first_refused, bool all,
+               RepairPlan* plan) {
+  RepairOptions options = setup.repair;
+  options.shape = setup.route_shape;
+  std::set<std::string> links;
+  for (std::size_t i = first_refused; i < plan->refused.size(); ++i) {
+    links.insert(plan->refused[i].link);
+  }
+  for (const Finding& f : findings) {
+    plan->severity[{f.link, f.rule}] = f.severity;
+    if (f.severity == Severity::kError && !f.link.empty()) links.insert(f.link);
+  }
+  if (all) {
+    for (const Repair& r : planned) links.insert(r.link);
+    for (const auto& [rule, list] : plan->not_asked) {
+      for (const Repair& r : list) links.insert(r.link);
+    }
+  }
+  for (const std::string& link : links) {
+    if (model.FindLink(link) < 0 || plan->routes.count(link)) continue;
+    const auto written = std::find_if(planned.begin(), planned.end(),
+                                      [&](const Repair& r) { return r.link == link; });
+    if (!all && written != planned.end()) continue;
+    plan->routes[link] = FindRepairRoutes(model, findings, link, options,
+                                          written == planned.end() ? nullptr : &*written);
+  }
+}
 
 // Plans the repairs of every model: the mass repairs asked for by name (mass_repair.h), then on
 // the model they give those asked for (and the target's), and the heuristic ones that were not
 // asked for. Returns false (with the reason printed) when a mass option cannot be carried out.
 bool PlanFix(const ReadResult& read, const FixSetup& setup, const MassRepairOptions& mass,
-             RepairPlan* result) {
+             bool dry_run, RepairPlan* result) {
   RepairPlan& plan = *result;
   if (mass.any() && read.models.size() != 1) {
     std::cerr << "massprops: error: --total-mass, --mass, --density LINK=... and --material work "
@@ -338,6 +234,7 @@ bool PlanFix(const ReadResult& read, const FixSetup& setup, const MassRepairOpti
     }
     const Model& model = mass.any() ? with_mass : file_model;
     const std::vector<Finding> findings = CheckModel(model, setup.check);
+    const std::size_t first_refused = plan.refused.size();
     std::vector<Repair> planned = PlanRepairs(model, findings, setup.repair, &plan.refused);
     if (setup.target != Target::kGeneric) {  // what the simulator needs on top (target_profile.h)
       planned = PlanTargetRepairs(model, setup.target, setup.mujoco, planned);
@@ -351,6 +248,7 @@ bool PlanFix(const ReadResult& read, const FixSetup& setup, const MassRepairOpti
                                                [&](const Repair& p) { return p.link == r.link; });
       if (!planned_already) plan.not_asked[r.rule].push_back(std::move(r));
     }
+    AddRoutes(model, findings, setup, planned, first_refused, dry_run, &plan);
   }
   return true;
 }
@@ -426,9 +324,10 @@ bool FixIncludedFiles(const FixArgs& args, const FixInput& input, const FixSetup
     if (!args.include_files) {
       for (const Repair& r : file_repairs) {
         ++fixes->skipped;
-        std::cerr << file << ":" << r.link_line << ": link '" << r.link << "' (" << r.rule
-                  << ") is defined in this included model, not in " << input.name
-                  << ": not repaired; fix that file, or run with --include-files\n";
+        std::cerr << file << ":" << r.link_line << ": "
+                  << LinkHeadline(r.link, ": not repaired: it is defined in an included model")
+                  << " [" << r.rule << "]\n  = help: fix that file, or massprops fix "
+                  << "--include-files FILE repairs it there\n";
       }
       continue;
     }
@@ -472,7 +371,7 @@ bool ExplainFromGeometryLinks(const FixArgs& args, const FixInput& input, const 
 // clean.
 int ListRemainingErrors(const ReadResult& final_read, bool includes_written,
                         const IncludedFixes& included, const FixSetup& setup,
-                        const std::string& text) {
+                        const std::string& text, const RepairPlan& plan) {
   auto rewritten = [&](const std::string& file) {
     return std::any_of(included.outputs.begin(), included.outputs.end(),
                        [&](const auto& output) { return output.first == file; });
@@ -491,7 +390,17 @@ int ListRemainingErrors(const ReadResult& final_read, bool includes_written,
       remaining.push_back(f);
     }
   }
-  for (const Finding& f : remaining) std::cerr << FindingHeadlineLine(f) << " (no repair)\n";
+  for (const Finding& f : remaining) {
+    std::cerr << FindingHeadlineLine(f) << " (no repair)\n";
+    // The ways forward, unless its refused repair said them already.
+    const bool refused = std::any_of(plan.refused.begin(), plan.refused.end(),
+                                     [&](const RefusedRepair& r) { return r.link == f.link; });
+    const auto routes = plan.routes.find(f.link);
+    if (refused || routes == plan.routes.end()) continue;
+    for (const std::string& line : RouteHelpLines(routes->second, f.link, f.location.file)) {
+      std::cerr << line << "\n";
+    }
+  }
   return static_cast<int>(remaining.size());
 }
 
@@ -515,11 +424,17 @@ void PrintDryRun(const std::string& name, const RepairPlan& plan, const PatchRes
       }
     }
     std::cout << name << ":" << line << ": " << DescribeRepair(r) << "\n";
+    const auto routes = plan.routes.find(r.link);
+    if (routes != plan.routes.end()) std::cout << RenderRouteChoices(routes->second, r.link, name);
   }
   for (const auto& [rule, list] : plan.not_asked) {
     for (const Repair& r : list) {
-      std::cout << name << ":" << r.link_line << ": not applied (a guess; --apply " << rule
-                << " applies it): " << DescribeRepair(r) << "\n";
+      std::cout << name << ":" << r.link_line << ": not applied (a guess): " << DescribeRepair(r)
+                << "\n  = help: --apply " << rule << " applies it\n";
+      const auto routes = plan.routes.find(r.link);
+      if (routes != plan.routes.end()) {
+        std::cout << RenderRouteChoices(routes->second, r.link, name);
+      }
     }
   }
   if (!changed) std::cout << name << ": no change needed\n";
@@ -634,14 +549,18 @@ void PrintFixSummary(const FixArgs& args, const std::string& name, const RepairP
   }
   if (remaining_errors > 0) std::cerr << "; " << remaining_errors << " error(s) have no repair";
   if (!plan.refused.empty()) std::cerr << "; " << plan.refused.size() << " repair(s) refused";
-  if (!plan.not_asked.empty() && !args.dry_run) {
-    std::cerr << "; heuristic repairs not applied (see --dry-run):";
-    for (const auto& [rule, list] : plan.not_asked) {
-      std::cerr << " " << rule << " ×" << list.size();
-    }
-    std::cerr << " (--apply RULE,... applies them)";
-  }
   std::cerr << "\n";
+  if (!plan.not_asked.empty() && !args.dry_run) {
+    std::string list = "heuristic repairs not applied (guesses; --dry-run shows them):";
+    for (const auto& [rule, repairs] : plan.not_asked) {
+      list += " " + rule + " ×" + std::to_string(repairs.size());
+    }
+    const std::vector<std::string> lines = WrapWords(list, kMaxDetailChars - 10);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      std::cerr << (i ? "    " : "  = note: ") << lines[i] << "\n";
+    }
+    std::cerr << "  = help: massprops fix --apply RULE,... FILE applies them\n";
+  }
 }
 
 // Writes the repaired files (or prints the --dry-run plan) and lists the errors left; returns the
@@ -651,12 +570,15 @@ int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
               const IncludedFixes& included) {
   const bool changed = patched.text != input.text;
   for (const RefusedRepair& r : plan.refused) {
-    std::cerr << input.name << ":" << r.link_line << ": link '" << r.link << "' [" << r.rule
-              << "]: " << r.why << "\n";
+    const auto severity = plan.severity.find({r.link, r.rule});
+    const auto routes = plan.routes.find(r.link);
+    std::cerr << RenderFixMessage(RefusedRepairMessage(
+        r, severity == plan.severity.end() ? Severity::kError : severity->second, input.name,
+        routes == plan.routes.end() ? std::vector<RepairRoute>{} : routes->second));
   }
   int remaining_errors = 0;
   if (args.dry_run || included.outputs.empty()) {
-    remaining_errors = ListRemainingErrors(reread, false, included, setup, input.text);
+    remaining_errors = ListRemainingErrors(reread, false, included, setup, input.text, plan);
   }
   const bool json = args.format == "json";
   if (args.dry_run && !json) {
@@ -668,7 +590,7 @@ int FinishFix(const FixArgs& args, const FixInput& input, const FixSetup& setup,
     if (!included.outputs.empty()) {
       remaining_errors =
           ListRemainingErrors(ReadModelString(patched.text, input.name, input.read_options), true,
-                              included, setup, input.text);
+                              included, setup, input.text, plan);
     }
     for (const std::string& note : notes) std::cerr << "massprops: note: " << note << "\n";
   }
@@ -707,7 +629,7 @@ int RunFix(const FixArgs& given) {
   PrintReaderFindings(input.read, setup.check);
 
   RepairPlan plan;
-  if (!PlanFix(input.read, setup, args.mass, &plan)) return kExitError;
+  if (!PlanFix(input.read, setup, args.mass, args.dry_run, &plan)) return kExitError;
   const std::map<std::string, std::vector<Repair>> included_repairs =
       TakeIncludedRepairs(input, &plan.repairs);
   IncludedFixes included;

@@ -126,6 +126,15 @@ struct RefusedRepair {
   /// What is wrong with the repair and what a human should look at, e.g. "inertia 1e-20 kg·m² on
   /// a 2.2 kg body: radius of gyration 1e-10 m; ... not repaired".
   std::string why;
+  /// The same at a glance, for a headline after "link 'NAME': not repaired: " (fix_text.h): "its
+  /// nearest valid inertia does not fit its box either".
+  std::string reason;
+  /// The numbers that decided, each a whole line of at most kMaxDetailChars − 14 characters
+  /// (finding_text.h), in a robot engineer's words.
+  std::vector<std::string> evidence;
+  /// The repair that was refused (its `after` is what it would have written), when one was
+  /// computed; absent when no candidate was found.
+  std::optional<Repair> repair;
 };
 
 /// The inertia of the link's primitive geometry (box, cylinder, sphere, capsule, ellipsoid):
