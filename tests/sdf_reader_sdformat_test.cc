@@ -7,8 +7,10 @@
 // each joint's parent and child links and axis (unit vector in the child link frame, to 1e-12).
 // Links with <inertial auto="true"> (SDF 1.11) are compared by pose only: libsdformat 12 predates
 // SDF 1.11 and gives them its default inertial (1 kg, diag(1, 1, 1)); their computed values are
-// tested against hand derivations in sdf_reader_test.cc. Files that libsdformat rejects (its
-// errors, or SDF versions it does not know) are listed. docs/sdf.md quotes the counts printed.
+// tested against hand derivations in sdf_reader_test.cc. Each mesh's <submesh> name and <center>
+// flag equal sdf::Mesh::Submesh() and CenterSubmesh() (collisions and visuals in file order). Files
+// that libsdformat rejects (its errors, or SDF versions it does not know) are listed. docs/sdf.md
+// quotes the counts printed.
 
 #include <gtest/gtest.h>
 
@@ -17,16 +19,21 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sdf/Collision.hh>
+#include <sdf/Geometry.hh>
 #include <sdf/Joint.hh>
 #include <sdf/JointAxis.hh>
 #include <sdf/Link.hh>
+#include <sdf/Mesh.hh>
 #include <sdf/Model.hh>
 #include <sdf/ParserConfig.hh>
 #include <sdf/Root.hh>
+#include <sdf/Visual.hh>
 #include <sdf/World.hh>
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "corpus_manifest.h"
@@ -57,11 +64,29 @@ Pose ToPose(const ignition::math::Pose3d& X) {
   return out;
 }
 
+// A mesh geometry's SDF <submesh> as libsdformat reads it; `mesh` false for other shapes.
+struct RefSubmesh {
+  bool mesh = false;
+  std::string name;
+  bool center = false;
+};
+
 struct RefLink {
   Pose X_MB;   // Link frame in the top model frame.
   Pose X_MBi;  // Inertial frame in the top model frame.
   double mass = 0, ixx = 0, iyy = 0, izz = 0, ixy = 0, ixz = 0, iyz = 0;
+  std::vector<RefSubmesh> collisions, visuals;  // in file order
 };
+
+RefSubmesh SubmeshOf(const sdf::Geometry* geometry) {
+  RefSubmesh r;
+  const sdf::Mesh* mesh = geometry != nullptr ? geometry->MeshShape() : nullptr;
+  if (mesh == nullptr) return r;
+  r.mesh = true;
+  r.name = mesh->Submesh();
+  r.center = mesh->CenterSubmesh();
+  return r;
+}
 struct RefJoint {
   std::string parent, child;
   Eigen::Vector3d axis_C = Eigen::Vector3d::Zero();
@@ -90,6 +115,12 @@ void Collect(const sdf::Model& model, const Pose& X_TM, const std::string& prefi
     r.ixy = inertial.MassMatrix().Ixy();
     r.ixz = inertial.MassMatrix().Ixz();
     r.iyz = inertial.MassMatrix().Iyz();
+    for (uint64_t c = 0; c < link->CollisionCount(); ++c) {
+      r.collisions.push_back(SubmeshOf(link->CollisionByIndex(c)->Geom()));
+    }
+    for (uint64_t v = 0; v < link->VisualCount(); ++v) {
+      r.visuals.push_back(SubmeshOf(link->VisualByIndex(v)->Geom()));
+    }
     out->links[prefix + link->Name()] = r;
   }
   for (uint64_t i = 0; i < model.JointCount(); ++i) {
@@ -128,7 +159,30 @@ void ExpectPoseNear(const Pose& a, const Pose& b, double tol, const std::string&
 struct Counts {
   int files = 0, agreeing = 0, links = 0, inertials = 0, auto_inertials = 0, joints = 0;
   int world_joint_files = 0;
+  int meshes = 0, submeshes = 0;  // mesh geometries compared, those with a <submesh> name
 };
+
+// The link's collisions and visuals, each in file order, against libsdformat's: the same count,
+// the same shapes a mesh, and each mesh's submesh name and center flag.
+void CompareSubmeshes(const Link& link, const RefLink& r, Counts* counts) {
+  for (const bool collision : {true, false}) {
+    const std::vector<RefSubmesh>& ref = collision ? r.collisions : r.visuals;
+    std::vector<const Geometry*> ours;
+    for (const Geometry& g : link.geometries) {
+      if (g.is_collision == collision) ours.push_back(&g);
+    }
+    EXPECT_EQ(ours.size(), ref.size()) << link.name << (collision ? " collisions" : " visuals");
+    for (std::size_t i = 0; i < ours.size() && i < ref.size(); ++i) {
+      const bool mesh = ours[i]->type == Geometry::Type::kMesh;
+      EXPECT_EQ(mesh, ref[i].mesh) << link.name << " geometry " << i;
+      if (!mesh || !ref[i].mesh) continue;
+      EXPECT_EQ(ours[i]->submesh, ref[i].name) << link.name << " geometry " << i;
+      EXPECT_EQ(ours[i]->center_submesh, ref[i].center) << link.name << " geometry " << i;
+      ++counts->meshes;
+      if (!ref[i].name.empty()) ++counts->submeshes;
+    }
+  }
+}
 
 // Loads `path` with libsdformat; when it loads without errors, reads it with massprops and compares
 // (gtest expectations). Returns libsdformat's first error, or "" when the file was compared.
@@ -182,6 +236,7 @@ std::string CompareWithLibsdformat(const std::string& path, const SdfReadOptions
       if (it == ref.links.end()) continue;
       const RefLink& r = it->second;
       ExpectPoseNear(frames[m].X_MB[i], r.X_MB, 1e-12, "link " + link.name);
+      CompareSubmeshes(link, r, counts);
       ++counts->links;
       if (auto_links.count(link.name)) {
         ++counts->auto_inertials;
@@ -241,7 +296,8 @@ TEST(SdfReaderSdformatTest, EveryCorpusFileLibsdformatLoadsReadsTheSamePosesAndI
   }
   std::cout << "compared with libsdformat 12: " << counts.files << " files (" << counts.agreeing
             << " agreeing), " << counts.links << " links, " << counts.inertials << " inertials (+"
-            << counts.auto_inertials << " auto, pose only), " << counts.joints << " joints; "
+            << counts.auto_inertials << " auto, pose only), " << counts.joints << " joints, "
+            << counts.meshes << " meshes (" << counts.submeshes << " with a <submesh>); "
             << counts.world_joint_files
             << " files with SDF 1.10 world joints not compared (libsdformat 12 predates them); "
             << "libsdformat rejected " << rejected.size() << " files:\n";
@@ -265,13 +321,52 @@ TEST(SdfReaderSdformatTest, TestFixturesReadTheSameAsLibsdformat) {
   Counts counts;
   for (const char* name :
        {"frames_1_8.sdf", "placement_world_1_8.sdf", "axis_1.4.sdf", "axis_1.5.sdf", "axis_1.6.sdf",
-        "models/massprops_box/box.sdf", "merge_include.sdf"}) {
+        "models/massprops_box/box.sdf", "merge_include.sdf", "submesh.sdf"}) {
     SCOPED_TRACE(name);
     const std::string error = CompareWithLibsdformat(dir + "/" + name, options, config, &counts);
     EXPECT_EQ(error, "");
   }
-  EXPECT_EQ(counts.files, 7);
-  EXPECT_EQ(counts.agreeing, 7);
+  EXPECT_EQ(counts.files, 8);
+  EXPECT_EQ(counts.agreeing, 8);
+  // submesh.sdf: 7 meshes, 6 of them with a <submesh> (names and flags in its comment).
+  EXPECT_EQ(counts.submeshes, 6);
+}
+
+// Every shared file that writes <submesh> (`grep -rl '<submesh' ../shared/corpus` and the labelled
+// sets' data.tar.xz) reads the same names and flags as libsdformat: the corpus's
+// sdformat/test/sdf/shapes.sdf (a collision 'my_submesh' centred, a visual 'another_submesh' not),
+// set 3's zephyr (4 submeshes of wing.dae, all centred: Wing twice, Propeller, Flap_Left,
+// Flap_Right) and set 5's mbzirc_usv (5 visuals of USV.dae: USV as placed, Motor_L, Prop_L,
+// Motor_R, Prop_R centred; its collisions with <submesh> are commented out). The labelled files
+// are taken out of their archives (only the .sdf) into a temporary folder.
+TEST(SdfReaderSdformatTest, SharedFilesWithSubmeshesReadTheSameAsLibsdformat) {
+  MASSPROPS_SKIP_WITHOUT_SHARED("corpus/sdformat/test/sdf/shapes.sdf");
+  sdf::ParserConfig config;
+  SdfReadOptions options;
+  options.use_environment = false;
+  const std::string labelled = test_support::SharedDir() + "/labelled";
+  const std::string temporary = ::testing::TempDir() + "/submesh_labelled";
+  struct Case {
+    std::string path;
+    int submeshes;
+  };
+  std::vector<Case> cases = {{kCorpus + "/sdformat/test/sdf/shapes.sdf", 2}};
+  for (const auto& [set, file, submeshes] :
+       {std::tuple{"set3", "19_zephyr.sdf", 5}, std::tuple{"set5", "18_mbzirc_usv.sdf", 5}}) {
+    const std::string archive = labelled + "/" + set + "/data.tar.xz";
+    const std::string folder = temporary + "/" + set;
+    const std::string command =
+        "mkdir -p '" + folder + "' && tar -xJf '" + archive + "' -C '" + folder + "' files/" + file;
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    cases.push_back({folder + "/files/" + file, submeshes});
+  }
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.path);
+    Counts counts;
+    EXPECT_EQ(CompareWithLibsdformat(c.path, options, config, &counts), "");
+    EXPECT_EQ(counts.agreeing, 1);
+    EXPECT_EQ(counts.submeshes, c.submeshes);
+  }
 }
 
 }  // namespace

@@ -205,6 +205,8 @@ class Geometry:
     radii: Vector3
     uri: str
     scale: Vector3
+    submesh: str
+    center_submesh: bool
     X_BG: Pose
     is_collision: bool
     location: SourceLocation

@@ -128,6 +128,10 @@ void BindGeometry(py::module_& m) {
       .def_readonly("radii", &Geometry::radii, "ellipsoid: semi-axes.")
       .def_readonly("uri", &Geometry::uri, "mesh: the filename/uri as written.")
       .def_readonly("scale", &Geometry::scale, "mesh: the scale.")
+      .def_readonly("submesh", &Geometry::submesh,
+                    "mesh: the SDF <submesh> name, the one part of the file used ('': all).")
+      .def_readonly("center_submesh", &Geometry::center_submesh,
+                    "mesh: the SDF <submesh><center> flag (that part recentred).")
       .def_readonly("X_BG", &Geometry::X_BG, "Pose of the geometry in the link frame.")
       .def_readonly("is_collision", &Geometry::is_collision, "False for <visual>.")
       .def_readonly("location", &Geometry::location, "The <collision>/<visual> element.")

@@ -48,8 +48,8 @@ std::optional<GeometryMassProperties> ClosedMeshOf(const Geometry& geometry,
   std::string error;
   const std::optional<std::string> path = options.cache->Resolve(geometry.uri, where, &error);
   if (!path || !geometry.scale.allFinite()) return std::nullopt;
-  const std::optional<MeshMassProperties> mesh =
-      options.cache->MassProperties(*path, geometry.scale, options.inertia, &error);
+  const std::optional<MeshMassProperties> mesh = options.cache->MassProperties(
+      *path, geometry.scale, options.inertia, &error, SubmeshOf(geometry));
   if (!mesh) return std::nullopt;
   GeometryMassProperties result;
   result.volume = mesh->volume;
@@ -144,10 +144,10 @@ LinkPointsFunction MakeLinkPointsFunction(const MeshResolveOptions& resolve) {
       std::shared_ptr<const MeshPoints> points;
       if (props && !props->mesh_path.empty()) {
         if (resolve.cache != nullptr) {
-          points = resolve.cache->Points(props->mesh_path, &error);
+          points = resolve.cache->Points(props->mesh_path, &error, SubmeshOf(geometry));
         } else {
           TriangleMesh loaded;
-          if (LoadMeshFile(props->mesh_path, &loaded, &error)) {
+          if (LoadMeshSubmesh(props->mesh_path, SubmeshOf(geometry), &loaded, &error)) {
             auto all = std::make_shared<MeshPoints>();
             all->positions = std::move(loaded.vertices);
             all->loader_vertices = static_cast<std::int64_t>(all->positions.size());
@@ -235,17 +235,26 @@ LinkShapeFunction MakeClosedMeshShapeFunction(const MeshResolveOptions& resolve)
 void PrefetchModelMeshes(const Model& model, const MeshResolveOptions& resolve, int threads) {
   if (resolve.cache == nullptr || threads < 2) return;
   const MeshResolveOptions closed = ClosedMeshOptions(resolve);
-  // Each distinct (file, scale), in model order.
-  std::vector<std::pair<std::string, Eigen::Vector3d>> work;
-  std::set<std::tuple<std::string, double, double, double>> seen;
+  // Each distinct (file, part, scale), in model order.
+  struct Work {
+    std::string path;
+    MeshSubmesh submesh;
+    Eigen::Vector3d scale;
+  };
+  std::vector<Work> work;
+  std::set<std::tuple<std::string, std::string, bool, double, double, double>> seen;
   std::set<std::string> files;
   for (const Link& link : model.links) {
     for (const Geometry& geometry : link.geometries) {
       if (geometry.type != Geometry::Type::kMesh || !geometry.scale.allFinite()) continue;
       const std::optional<std::string> path = ResolveGeometryMeshUri(geometry, resolve, nullptr);
       const Eigen::Vector3d& s = geometry.scale;
-      if (!path || !seen.insert({*path, s.x(), s.y(), s.z()}).second) continue;
-      work.emplace_back(*path, s);
+      if (!path ||
+          !seen.insert({*path, geometry.submesh, geometry.center_submesh, s.x(), s.y(), s.z()})
+               .second) {
+        continue;
+      }
+      work.push_back({*path, SubmeshOf(geometry), s});
       files.insert(*path);
     }
   }
@@ -254,8 +263,9 @@ void PrefetchModelMeshes(const Model& model, const MeshResolveOptions& resolve, 
   auto worker = [&] {
     for (std::size_t i = next++; i < work.size(); i = next++) {
       std::string error;
-      resolve.cache->Bounds(work[i].first, &error);
-      resolve.cache->MassProperties(work[i].first, work[i].second, closed.inertia, &error);
+      resolve.cache->Bounds(work[i].path, &error, work[i].submesh);
+      resolve.cache->MassProperties(work[i].path, work[i].scale, closed.inertia, &error,
+                                    work[i].submesh);
     }
   };
   std::vector<std::thread> pool;

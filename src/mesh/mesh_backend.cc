@@ -16,7 +16,7 @@ namespace massprops::internal {
 
 #ifdef MASSPROPS_MESH_BACKEND_STATIC
 
-const MeshBackend* GetMeshBackend(std::string* /*error*/) { return massprops_mesh_backend_v1(); }
+const MeshBackend* GetMeshBackend(std::string* /*error*/) { return massprops_mesh_backend_v2(); }
 
 #else
 
@@ -111,7 +111,7 @@ void* ModuleSymbol(const char* name, std::string* error) {
 }
 
 const MeshBackend* GetMeshBackend(std::string* error) {
-  return ModuleEntry<MeshBackend>("massprops_mesh_backend_v1", error);
+  return ModuleEntry<MeshBackend>("massprops_mesh_backend_v2", error);
 }
 
 #endif

@@ -19,12 +19,25 @@
 
 namespace massprops::internal {
 
-/// What the mesh libraries do for massprops. Version 1; a changed layout gets a new entry name.
+/// One part of a mesh file as loaded: the vertices and triangles that one mesh of one node of the
+/// scene graph adds, contiguous in the TriangleMesh. `name` is the name gz-common gives that
+/// submesh (SDF <submesh><name>): the node's name, or for a DAE node without a name that of its
+/// nearest named ancestor below the scene's root; empty when there is none.
+struct MeshPartRange {
+  std::string name;
+  std::size_t first_vertex = 0, vertex_count = 0;
+  std::size_t first_triangle = 0, triangle_count = 0;
+};
+
+/// What the mesh libraries do for massprops. Version 2 (the parts); a changed layout gets a new
+/// entry name.
 struct MeshBackend {
   /// Reads the mesh file at `path` with assimp (triangulated, identical vertices joined, every
-  /// node's transform applied, mirrored nodes re-wound). Returns false and sets *error (which
-  /// names the file) when assimp cannot read it or it holds no triangle. Never throws.
-  bool (*load_mesh)(const char* path, TriangleMesh* mesh, std::string* error);
+  /// node's transform applied, mirrored nodes re-wound); *parts (when not null) gets its parts,
+  /// in the order of the mesh. Returns false and sets *error (which names the file) when assimp
+  /// cannot read it or it holds no triangle. Never throws.
+  bool (*load_mesh)(const char* path, TriangleMesh* mesh, std::vector<MeshPartRange>* parts,
+                    std::string* error);
   /// qhull ("Qt") on `count` points (x, y, z consecutive): the hull's triangles as indices into
   /// the points, and each triangle's outward normal. Returns qhull's exit code (0 on success);
   /// *messages gets qhull's messages. Never throws.
@@ -65,4 +78,4 @@ const T* ModuleEntry(const char* name, std::string* error) {
 }  // namespace massprops::internal
 
 /// The entry point of libmassprops_meshlibs.so (C linkage: found with dlsym).
-extern "C" const massprops::internal::MeshBackend* massprops_mesh_backend_v1();
+extern "C" const massprops::internal::MeshBackend* massprops_mesh_backend_v2();

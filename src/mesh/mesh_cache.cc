@@ -12,6 +12,7 @@
 #include "mesh/mesh_coincidence.h"
 #include "mesh/mesh_store.h"
 #include "mesh/stl_direct.h"
+#include "mesh/submesh.h"
 
 namespace massprops {
 
@@ -109,9 +110,12 @@ MeshMassProperties CalcRemembering(AnalysisMemo* memo, const TriangleMesh& mesh,
 
 }  // namespace
 
-// What is known of one mesh file; guarded by its own mutex (different files in parallel).
+// What is known of one mesh file, or of one part of it (an SDF <submesh>: then its mesh is taken
+// from the whole file's state); guarded by its own mutex (different files in parallel).
 struct MeshCache::FileState {
   std::mutex mutex;
+  MeshSubmesh submesh;  // the part; an empty name: the whole file
+  bool IsPart() const { return !submesh.name.empty(); }
   // The persistent cache: looked up once; `stored` holds what is known (from it or this run).
   bool looked_up = false;
   bool stat_ok = false;
@@ -121,6 +125,7 @@ struct MeshCache::FileState {
   // This run.
   bool loaded = false;  // LoadMeshFile's mesh known (or tried)
   std::shared_ptr<const TriangleMesh> mesh;
+  std::vector<internal::MeshPartRange> parts;  // the whole file's, when assimp read it
   std::string load_error;
   bool direct_tried = false;  // the direct STL reader tried
   // An STL read directly (DirectStl): its triangles; LoadMeshFile's mesh is made from it on
@@ -160,10 +165,15 @@ void MeshCache::Flush() {
   if (wrote) store_->Trim();
 }
 
-MeshCache::FileState& MeshCache::StateOf(const std::string& path) {
+MeshCache::FileState& MeshCache::StateOf(const std::string& path, const MeshSubmesh& submesh) {
+  // A part's state under the path and its key, which no path holds (a NUL).
+  const std::string part = internal::SubmeshKey(submesh);
   std::lock_guard<std::mutex> lock(mutex_);
-  std::unique_ptr<FileState>& state = files_[path];
-  if (!state) state = std::make_unique<FileState>();
+  std::unique_ptr<FileState>& state = files_[part.empty() ? path : path + '\0' + part];
+  if (!state) {
+    state = std::make_unique<FileState>();
+    state->submesh = submesh;
+  }
   return *state;
 }
 
@@ -176,6 +186,7 @@ void MeshCache::LookUp(FileState& state, const std::string& path) {
     store = store_;
   }
   if (!store) return;
+  state.key.part = internal::SubmeshKey(state.submesh);
   state.stat_ok = internal::MeshStore::Stat(path, &state.key);
   if (!state.stat_ok) return;
   // The content hash, when the path, size and time are not known, is read in pieces: a file
@@ -191,6 +202,22 @@ void MeshCache::LookUp(FileState& state, const std::string& path) {
 
 std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, const std::string& path,
                                                           std::string* error) {
+  if (!state.loaded && state.IsPart()) {  // from the whole file's mesh, read once for all parts
+    state.loaded = true;
+    FileState& whole = StateOf(path, {});
+    std::shared_ptr<const TriangleMesh> all;
+    std::vector<internal::MeshPartRange> parts;
+    {
+      std::lock_guard<std::mutex> lock(whole.mutex);
+      all = LoadLocked(whole, path, &state.load_error);
+      parts = whole.parts;
+    }
+    auto mesh = std::make_shared<TriangleMesh>();
+    if (all &&
+        internal::SelectSubmesh(*all, parts, state.submesh, path, mesh.get(), &state.load_error)) {
+      state.mesh = std::move(mesh);
+    }
+  }
   if (!state.loaded) {
     ReadDirectLocked(state, path);
     if (state.direct && state.direct->joined) {  // a binary STL: LoadMeshFile's mesh, from it
@@ -201,7 +228,9 @@ std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, cons
   if (!state.loaded) {
     state.loaded = true;
     auto mesh = std::make_shared<TriangleMesh>();
-    if (LoadMeshFile(path, mesh.get(), &state.load_error)) state.mesh = std::move(mesh);
+    if (internal::LoadMeshFileParts(path, mesh.get(), &state.parts, &state.load_error)) {
+      state.mesh = std::move(mesh);
+    }
     std::lock_guard<std::mutex> lock(mutex_);
     ++files_loaded_;
   }
@@ -215,7 +244,7 @@ std::shared_ptr<const TriangleMesh> MeshCache::LoadLocked(FileState& state, cons
 void MeshCache::ReadDirectLocked(FileState& state, const std::string& path) {
   if (state.direct_tried) return;
   state.direct_tried = true;
-  if (!IsStlPath(path)) return;
+  if (!IsStlPath(path) || state.IsPart()) return;
   auto stl = std::make_shared<internal::DirectStl>();
   // With the cache, the content hash of the bytes read: the file need not be read again to save
   // its entry, and the entry is saved under the hash of exactly the bytes its numbers come from
@@ -239,8 +268,9 @@ void MeshCache::ReadDirectLocked(FileState& state, const std::string& path) {
   ++files_loaded_;
 }
 
-std::shared_ptr<const TriangleMesh> MeshCache::Load(const std::string& path, std::string* error) {
-  FileState& state = StateOf(path);
+std::shared_ptr<const TriangleMesh> MeshCache::Load(const std::string& path, std::string* error,
+                                                    const MeshSubmesh& submesh) {
+  FileState& state = StateOf(path, submesh);
   std::lock_guard<std::mutex> lock(state.mutex);
   return LoadLocked(state, path, error);
 }
@@ -248,8 +278,9 @@ std::shared_ptr<const TriangleMesh> MeshCache::Load(const std::string& path, std
 std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& path,
                                                             const Eigen::Vector3d& scale,
                                                             const MeshInertiaOptions& options,
-                                                            std::string* error) {
-  FileState& state = StateOf(path);
+                                                            std::string* error,
+                                                            const MeshSubmesh& submesh) {
+  FileState& state = StateOf(path, submesh);
   std::lock_guard<std::mutex> lock(state.mutex);
   const internal::MassKey key = KeyOf(scale, options);
   auto known = [&]() -> const MeshMassProperties* {
@@ -332,8 +363,9 @@ std::optional<MeshMassProperties> MeshCache::MassProperties(const std::string& p
   return std::nullopt;
 }
 
-std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, std::string* error) {
-  FileState& state = StateOf(path);
+std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, std::string* error,
+                                                     const MeshSubmesh& submesh) {
+  FileState& state = StateOf(path, submesh);
   std::lock_guard<std::mutex> lock(state.mutex);
   LookUp(state, path);
   if (!state.bounded && !state.stored.box) {
@@ -347,10 +379,10 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
     }
     const TriangleMesh* mesh = state.mesh ? state.mesh.get() : nullptr;
     if (mesh == nullptr && state.direct) mesh = &state.direct->mesh;
-    if (mesh == nullptr && !state.loaded && !HasDirectBox(path)) {
+    if (mesh == nullptr && !state.loaded && (!HasDirectBox(path) || state.IsPart())) {
       // A DAE, glTF or other file only assimp reads: its box from LoadMeshFile's mesh, which is
       // kept for the numbers asked next (the rules ask them of nearly every mesh), so the file is
-      // imported once. LoadMeshBounds would import it and drop the mesh.
+      // imported once. LoadMeshBounds would import it and drop the mesh. A part: its mesh.
       mesh = LoadLocked(state, path, nullptr).get();  // state.mesh keeps it
     }
     if (mesh != nullptr) {  // read already: its box, no second read
@@ -373,8 +405,9 @@ std::optional<Eigen::AlignedBox3d> MeshCache::Bounds(const std::string& path, st
   return state.stored.box;
 }
 
-std::shared_ptr<const MeshPoints> MeshCache::Points(const std::string& path, std::string* error) {
-  FileState& state = StateOf(path);
+std::shared_ptr<const MeshPoints> MeshCache::Points(const std::string& path, std::string* error,
+                                                    const MeshSubmesh& submesh) {
+  FileState& state = StateOf(path, submesh);
   std::lock_guard<std::mutex> lock(state.mutex);
   LookUp(state, path);
   if (!state.pointed && !state.stored.points) {
@@ -392,6 +425,14 @@ std::shared_ptr<const MeshPoints> MeshCache::Points(const std::string& path, std
   }
   if (!state.stored.points && error) *error = state.points_error;
   return state.stored.points;
+}
+
+std::optional<std::vector<std::string>> MeshCache::SubmeshNames(const std::string& path,
+                                                                std::string* error) {
+  FileState& state = StateOf(path, {});
+  std::lock_guard<std::mutex> lock(state.mutex);
+  if (!LoadLocked(state, path, error)) return std::nullopt;
+  return internal::PartNames(state.parts);  // none for an STL read directly
 }
 
 int MeshCache::files_loaded() const {

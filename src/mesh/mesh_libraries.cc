@@ -108,11 +108,31 @@ Joined JoinIdenticalVertices(const aiMesh& mesh) {
   return joined;
 }
 
-bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
+// The prefix of the names assimp's Collada importer makes up for a node without one.
+constexpr char kAutoName[] = "$ColladaAutoName$";
+
+bool IsAutoName(const aiString& name) { return std::string(name.C_Str()).rfind(kAutoName, 0) == 0; }
+
+// The name gz-common gives the submeshes of `node` (its AssimpLoader and ColladaLoader agree):
+// the node's own name; for a DAE node without one, that of its nearest named ancestor below the
+// root; "" when there is none (gz-common then makes up "unnamed_submesh_N").
+std::string PartName(const aiNode* node, const aiNode* root) {
+  if (!IsAutoName(node->mName)) return node->mName.C_Str();
+  for (const aiNode* up = node->mParent; up != nullptr && up != root; up = up->mParent) {
+    if (!IsAutoName(up->mName)) return up->mName.C_Str();
+  }
+  return "";
+}
+
+bool LoadMesh(const char* path, TriangleMesh* mesh, std::vector<MeshPartRange>* parts,
+              std::string* error) {
   try {
     Assimp::Importer importer;
     // URDF and SDF use mesh coordinates as written: do not rotate a Z_UP (or X_UP) DAE to Y_UP.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+    // A DAE node's name is its `name` attribute (not its `id`), as gz-common names submeshes; a
+    // node without one gets kAutoName. Only names change, no geometry.
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_USE_COLLADA_NAMES, true);
     const aiScene* scene =
         importer.ReadFile(path, aiProcess_Triangulate);  // and JoinIdenticalVertices, below
     if (scene == nullptr || scene->mRootNode == nullptr) {
@@ -128,6 +148,7 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
       joins.push_back(JoinIdenticalVertices(*scene->mMeshes[m]));
     }
     TriangleMesh result;
+    std::vector<MeshPartRange> ranges;
     std::string problem;
     // Depth-first walk of the scene graph, carrying the node-to-file transform.
     std::vector<std::pair<const aiNode*, aiMatrix4x4>> stack = {
@@ -140,6 +161,7 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
         if (node->mMeshes[m] >= scene->mNumMeshes) continue;
         const aiMesh* part = scene->mMeshes[node->mMeshes[m]];
         const std::size_t offset = result.vertices.size();
+        const std::size_t first_triangle = result.triangles.size();
         const Joined& joined = joins[node->mMeshes[m]];
         if (offset + joined.kept.size() >
             static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
@@ -168,6 +190,10 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
             result.triangles.push_back({index(0), index(1), index(2)});
           }
         }
+        if (parts != nullptr) {
+          ranges.push_back({PartName(node, scene->mRootNode), offset, joined.kept.size(),
+                            first_triangle, result.triangles.size() - first_triangle});
+        }
       }
       for (unsigned c = 0; c < node->mNumChildren; ++c) {
         stack.emplace_back(node->mChildren[c], X_FileNode * node->mChildren[c]->mTransformation);
@@ -179,6 +205,7 @@ bool LoadMesh(const char* path, TriangleMesh* mesh, std::string* error) {
       return false;
     }
     *mesh = std::move(result);
+    if (parts != nullptr) *parts = std::move(ranges);
     return true;
   } catch (const std::exception& e) {  // e.g. std::bad_alloc on a huge file
     if (error) *error = "mesh file '" + std::string(path) + "' cannot be read: " + e.what();
@@ -231,7 +258,7 @@ int ConvexHull(const double* points, int count, std::vector<std::array<int, 3>>*
 }  // namespace
 }  // namespace massprops::internal
 
-extern "C" const massprops::internal::MeshBackend* massprops_mesh_backend_v1() {
+extern "C" const massprops::internal::MeshBackend* massprops_mesh_backend_v2() {
   static const massprops::internal::MeshBackend backend{&massprops::internal::LoadMesh,
                                                         &massprops::internal::ConvexHull};
   return &backend;

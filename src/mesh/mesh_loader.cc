@@ -1,6 +1,7 @@
 #include "massprops/mesh/mesh_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -11,6 +12,7 @@
 
 #include "massprops/core/unit_inertia.h"
 #include "mesh/mesh_backend.h"
+#include "mesh/submesh.h"
 
 namespace massprops {
 namespace fs = std::filesystem;
@@ -98,7 +100,11 @@ std::string Describe(const Geometry& geometry) {
   std::ostringstream out;
   out << (geometry.is_collision ? "collision" : "visual");
   if (geometry.location.line > 0) out << " at line " << geometry.location.line;
-  if (geometry.type == Geometry::Type::kMesh) out << " (mesh '" << geometry.uri << "')";
+  if (geometry.type == Geometry::Type::kMesh) {
+    out << " (mesh '" << geometry.uri << "'";
+    if (!geometry.submesh.empty()) out << ", submesh '" << geometry.submesh << "'";
+    out << ")";
+  }
   return out.str();
 }
 
@@ -291,6 +297,11 @@ std::optional<std::string> ResolveGeometryMeshUri(const Geometry& geometry,
 }
 
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error) {
+  return internal::LoadMeshFileParts(path, mesh, nullptr, error);
+}
+
+bool internal::LoadMeshFileParts(const std::string& path, TriangleMesh* mesh,
+                                 std::vector<MeshPartRange>* parts, std::string* error) {
   if (!IsRegularFile(path)) {
     if (error) *error = "mesh file '" + path + "' does not exist or is not a regular file";
     return false;
@@ -306,7 +317,16 @@ bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* erro
     if (error) *error = "mesh file '" + path + "' cannot be read: " + why;
     return false;
   }
-  return backend->load_mesh(path.c_str(), mesh, error);
+  if (!backend->load_mesh(path.c_str(), mesh, parts, error)) return false;
+  // An STL has no named parts here (the direct reader, which most STL files go through, keeps no
+  // names; gz-common names an ascii STL's solids: docs/meshes.md, "Submeshes").
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (parts != nullptr && extension == ".stl") {
+    for (internal::MeshPartRange& part : *parts) part.name.clear();
+  }
+  return true;
 }
 
 TriangleMesh ScaleMesh(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
@@ -405,15 +425,16 @@ void LoadGeometryMesh(const Geometry& geometry, const std::string& path,
                       const MeshResolveOptions& options, std::optional<MeshMassProperties>* mesh,
                       std::shared_ptr<const std::vector<Eigen::Vector3d>>* vertices,
                       std::string* reason) {
+  const MeshSubmesh submesh = SubmeshOf(geometry);
   if (options.cache != nullptr) {
-    *mesh = options.cache->MassProperties(path, geometry.scale, options.inertia, reason);
+    *mesh = options.cache->MassProperties(path, geometry.scale, options.inertia, reason, submesh);
     if (!*mesh) return;
-    if (std::shared_ptr<const MeshPoints> points = options.cache->Points(path, reason)) {
+    if (std::shared_ptr<const MeshPoints> points = options.cache->Points(path, reason, submesh)) {
       *vertices = std::shared_ptr<const std::vector<Eigen::Vector3d>>(points, &points->positions);
     }
   } else {
     auto triangles = std::make_shared<TriangleMesh>();
-    if (LoadMeshFile(path, triangles.get(), reason)) {
+    if (LoadMeshSubmesh(path, submesh, triangles.get(), reason)) {
       MeshInertiaOptions unit_density = options.inertia;
       unit_density.density = 1;
       *mesh = CalcMeshMassProperties(ScaleMesh(*triangles, geometry.scale), unit_density);
@@ -538,8 +559,16 @@ std::optional<Eigen::AlignedBox3d> CalcGeometryBounds(const Geometry& geometry,
       return std::nullopt;
     }
     std::optional<Eigen::AlignedBox3d> file_box;
+    const MeshSubmesh submesh = SubmeshOf(geometry);
     if (options.cache != nullptr) {
-      file_box = options.cache->Bounds(*path, &reason);
+      file_box = options.cache->Bounds(*path, &reason, submesh);
+    } else if (!submesh.name.empty()) {  // the box of the part's vertices
+      TriangleMesh part;
+      if (LoadMeshSubmesh(*path, submesh, &part, &reason)) {
+        Eigen::AlignedBox3d box;
+        for (const Eigen::Vector3d& v : part.vertices) box.extend(v);
+        file_box = box;
+      }
     } else {
       Eigen::AlignedBox3d box;
       if (LoadMeshBounds(*path, &box, nullptr, &reason)) file_box = box;

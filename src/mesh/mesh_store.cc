@@ -176,7 +176,9 @@ bool RecentlyModified(const FileKey& key) {
 }
 
 std::string EntryName(const FileKey& key) {
-  return "d-" + Hex(key.content_hash) + "-" + std::to_string(key.size);
+  const std::string part =
+      key.part.empty() ? "" : "." + Hex(HashBytes(key.part.data(), key.part.size()));
+  return "d-" + Hex(key.content_hash) + part + "-" + std::to_string(key.size);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // a concurrent run sees the old entry, the new one or none, never half of one):
 //   d-<content hash>-<size>: a mesh file's derived numbers (StoredMesh), for any file with
 //     those bytes (a checkout on CI gives the files new modification times: they still hit);
+//     d-<content hash>.<part hash>-<size> those of one part of it (an SDF <submesh>, FileKey);
 //   r-<run>: stat entries, one file per run that learned any: the content hash of the file at
 //     a path with a size, modification time and inode, so that an unchanged file is not even
 //     read. A run reads them all at its first lookup; past 16 such files, the next run that
@@ -77,6 +78,11 @@ struct FileKey {
   std::uint64_t inode = 0;  // with the device: part of the stat entry's name only
   std::uint64_t content_hash = 0;
   bool hashed = false;
+  /// Which part of the file the entry is of (SubmeshKey of src/mesh/submesh.h: an SDF <submesh>
+  /// and its centering), "" for the whole file: a part's entry is named
+  /// d-<content hash>.<hash of part>-<size>, so it is never taken for the whole file's or another
+  /// part's. The stat entries (path to content hash) are the file's, whatever the part.
+  std::string part;
 };
 
 /// Serialises a StoredMesh (exact: doubles as their bits) and back; Parse returns nullopt for

@@ -174,6 +174,29 @@ void CountMeshLinks(const Model& model, const std::vector<std::string>& model_pa
   const MeshResolveOptions resolve =
       MakeResolveOptions(PackagePaths(config_package_paths), model_paths, model.file, RunCache());
   RecordMeshUris(model, resolve, result);
+  // An SDF <submesh> its file does not have: a warning at the <submesh>, and the geometry of
+  // unknown size (never the whole file); such a link is not counted as one whose mesh did not
+  // resolve when no other mesh of it failed.
+  std::set<std::string> submesh_only;  // links whose failing meshes are all unknown submeshes
+  for (const Link& link : model.links) {
+    if (std::none_of(link.geometries.begin(), link.geometries.end(),
+                     [](const Geometry& g) { return !g.submesh.empty(); })) {
+      continue;
+    }
+    bool unknown = false, other = false;
+    for (const Geometry& g : link.geometries) {
+      if (g.type != Geometry::Type::kMesh) continue;
+      if (std::optional<std::string> why = UnknownSubmeshMessage(g, resolve)) {
+        const SourceLocation& at = g.submesh_location.line > 0 ? g.submesh_location : g.location;
+        result->findings.push_back(ReadWarningFinding(
+            MakeReadError(at.file, at.line, "<submesh> of link '" + link.name + "'", *why)));
+        unknown = true;
+      } else if (!CalcGeometryBounds(g, resolve, nullptr)) {
+        other = true;
+      }
+    }
+    if (unknown && !other) submesh_only.insert(link.name);
+  }
   if (args.enabled) return;
   const LinkBoxFunction box = MakeLinkBoxFunction(resolve);
   for (const Link& link : model.links) {
@@ -183,7 +206,7 @@ void CountMeshLinks(const Model& model, const std::vector<std::string>& model_pa
     if (!has_mesh) continue;
     ++result->mesh_links;
     const std::optional<LinkGeometryBox> found = box(link);
-    if (!found || found->unresolved_uri.empty()) continue;
+    if (!found || found->unresolved_uri.empty() || submesh_only.count(link.name)) continue;
     ++result->mesh_links_unresolved;
     if (result->first_unresolved_mesh.empty())
       result->first_unresolved_mesh = found->unresolved_uri;

@@ -207,10 +207,10 @@ class MeshTable {
       *error = "the scale is not finite";
       return std::nullopt;
     }
-    const auto key =
-        std::make_tuple(*path, geometry.scale.x(), geometry.scale.y(), geometry.scale.z());
+    const auto key = std::make_tuple(*path, geometry.submesh, geometry.center_submesh,
+                                     geometry.scale.x(), geometry.scale.y(), geometry.scale.z());
     if (auto it = index_.find(key); it != index_.end()) return it->second;
-    std::shared_ptr<const TriangleMesh> mesh = cache_.Load(*path, error);
+    std::shared_ptr<const TriangleMesh> mesh = cache_.Load(*path, error, SubmeshOf(geometry));
     if (!mesh) return std::nullopt;
     const int index = static_cast<int>(meshes_.size());
     meshes_.push_back({geometry.uri, ScaleMesh(*mesh, geometry.scale)});
@@ -234,7 +234,7 @@ class MeshTable {
 
  private:
   MeshCache cache_;
-  std::map<std::tuple<std::string, double, double, double>, int> index_;
+  std::map<std::tuple<std::string, std::string, bool, double, double, double>, int> index_;
   std::vector<std::pair<std::string, TriangleMesh>> meshes_;
 };
 

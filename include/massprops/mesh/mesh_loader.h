@@ -108,6 +108,38 @@ std::optional<std::string> ResolveGeometryMeshUri(const Geometry& geometry,
 /// and sets *error (if not null) when the file cannot be read or parsed, or holds no triangle.
 bool LoadMeshFile(const std::string& path, TriangleMesh* mesh, std::string* error);
 
+/// SDF `<submesh>`: which part of a mesh file a geometry is (Geometry::submesh and
+/// Geometry::center_submesh). An empty name is the whole file.
+struct MeshSubmesh {
+  std::string name;
+  /// Each selected part moved so that the center of its vertices' bounding box is the mesh
+  /// frame's origin, as gz-common's SubMesh::Center(0) does; before the geometry's scale.
+  bool center = false;
+};
+
+/// The part of its file `geometry` selects: {geometry.submesh, geometry.center_submesh}.
+MeshSubmesh SubmeshOf(const Geometry& geometry);
+
+/// LoadMeshFile's mesh of the named part of the file at `path` (submesh.name empty: the whole
+/// file, as LoadMeshFile). A part is one mesh of one node of the file's scene graph, named as
+/// gz-common names its submeshes: the node's name (a DAE `<node name>`, an OBJ `o`), or for a DAE
+/// node without a name that of its nearest named ancestor. Every part of that name is taken, each
+/// recentred on its own bounding box when submesh.center is set (as Gazebo's renderer draws a
+/// visual's submesh). STL files have no named parts here. Returns false and sets *error (which
+/// names the file, the submesh and the names the file has) when LoadMeshFile fails or no part has
+/// that name. Never throws. Cost: LoadMeshFile's, plus a pass over the part.
+bool LoadMeshSubmesh(const std::string& path, const MeshSubmesh& submesh, TriangleMesh* mesh,
+                     std::string* error);
+
+/// When `geometry` is a mesh whose SDF `<submesh>` names no part of its file, the file itself
+/// being found and read: a message for a warning that says so, names the URI, the submesh and the
+/// parts there are, and that the geometry's size is unknown (the geometry rules then treat it as
+/// of unknown size, never as the whole file). nullopt otherwise (no submesh, the part found, or the
+/// file not found or unreadable: those are said where meshes that do not resolve are). Through
+/// options.cache when set. Never throws.
+std::optional<std::string> UnknownSubmeshMessage(const Geometry& geometry,
+                                                 const MeshResolveOptions& options);
+
 /// The axis-aligned bounding box of the mesh file at `path`: of the vertices LoadMeshFile would
 /// give (same frame, unit and float rounding), without loading or integrating the triangles
 /// where that can be avoided. STL (binary or ascii) and OBJ (vertices used by a face, line or
@@ -161,26 +193,41 @@ class MeshCache {
   /// without UsePersistentCache. Errors (a read-only folder, a full disk) are ignored.
   void Flush();
 
-  /// The mesh at `path` (LoadMeshFile), loading it on first use; failures are remembered too.
-  /// Returns null and sets *error on failure.
-  std::shared_ptr<const TriangleMesh> Load(const std::string& path, std::string* error);
+  /// Every member below takes the part of the file it is about (`submesh`, MeshSubmesh: the
+  /// whole file by default); what is known of a part (its mesh, box, points and mass properties,
+  /// here and in the persistent cache) is kept apart from the whole file's and from the other
+  /// parts' and centerings. A part is taken from the whole file's mesh (LoadMeshSubmesh), so a
+  /// file is imported once however many of its parts are used.
+
+  /// The mesh at `path` (LoadMeshFile; LoadMeshSubmesh for a part), loading it on first use;
+  /// failures are remembered too. Returns null and sets *error on failure.
+  std::shared_ptr<const TriangleMesh> Load(const std::string& path, std::string* error,
+                                           const MeshSubmesh& submesh = {});
 
   /// Unit-density mass properties of the mesh at `path` scaled by diag(scale), in the mesh
-  /// frame G, computed once per (path, scale, options). Returns nullopt and sets *error on
+  /// frame G, computed once per (path, part, scale, options). Returns nullopt and sets *error on
   /// failure.
   std::optional<MeshMassProperties> MassProperties(const std::string& path,
                                                    const Eigen::Vector3d& scale,
                                                    const MeshInertiaOptions& options,
-                                                   std::string* error);
+                                                   std::string* error,
+                                                   const MeshSubmesh& submesh = {});
 
-  /// The bounding box of the mesh at `path` (LoadMeshBounds), read on first use; from the
-  /// mesh when it was read already. Failures are remembered too. Returns nullopt and sets
-  /// *error on failure.
-  std::optional<Eigen::AlignedBox3d> Bounds(const std::string& path, std::string* error);
+  /// The bounding box of the mesh at `path` (LoadMeshBounds; a part's from its mesh), read on
+  /// first use; from the mesh when it was read already. Failures are remembered too. Returns
+  /// nullopt and sets *error on failure.
+  std::optional<Eigen::AlignedBox3d> Bounds(const std::string& path, std::string* error,
+                                            const MeshSubmesh& submesh = {});
 
   /// The hull-bound points of the mesh at `path` (MeshPoints), read on first use. Returns
-  /// null and sets *error when LoadMeshFile cannot read the file.
-  std::shared_ptr<const MeshPoints> Points(const std::string& path, std::string* error);
+  /// null and sets *error when LoadMeshFile cannot read the file (or it has no such part).
+  std::shared_ptr<const MeshPoints> Points(const std::string& path, std::string* error,
+                                           const MeshSubmesh& submesh = {});
+
+  /// The names of the parts of the mesh file at `path` that a MeshSubmesh can name
+  /// (LoadMeshSubmesh), each once, in the mesh's order; empty for a file without named parts (an
+  /// STL). Returns nullopt and sets *error when the file cannot be read.
+  std::optional<std::vector<std::string>> SubmeshNames(const std::string& path, std::string* error);
 
   /// ResolveMeshUri(uri, options, error, found_by), remembered per (uri, the description's
   /// folder, the search paths, use_environment, search_repository): a model references the same
@@ -200,7 +247,7 @@ class MeshCache {
 
  private:
   struct FileState;
-  FileState& StateOf(const std::string& path);
+  FileState& StateOf(const std::string& path, const MeshSubmesh& submesh);
   void LookUp(FileState& state, const std::string& path);
   std::shared_ptr<const TriangleMesh> LoadLocked(FileState& state, const std::string& path,
                                                  std::string* error);
@@ -252,9 +299,10 @@ struct GeometryMassProperties {
 
 /// The unit-density volume, center and central inertia of a geometry, expressed in the link
 /// frame (X_BG applied): boxes, cylinders, spheres, capsules and ellipsoids from their closed
-/// forms (unit_inertia.h), meshes from their triangles (scaled by the geometry's scale, see
-/// CalcMeshMassProperties for open meshes). Returns nullopt and sets *error (if not null) for
-/// a mesh that cannot be resolved or loaded, a geometry of type kOther, or a negative or
+/// forms (unit_inertia.h), meshes from their triangles (of the geometry's SDF <submesh> only when
+/// it names one, LoadMeshSubmesh; scaled by the geometry's scale, see CalcMeshMassProperties for
+/// open meshes). Returns nullopt and sets *error (if not null) for a mesh that cannot be resolved
+/// or loaded, a <submesh> its file does not have, a geometry of type kOther, or a negative or
 /// non-finite dimension. Cost: primitives about 100 flops; meshes linear in the triangles (once
 /// per file and scale with a cache).
 std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry& geometry,
@@ -262,8 +310,9 @@ std::optional<GeometryMassProperties> CalcGeometryMassProperties(const Geometry&
                                                                  std::string* error);
 
 /// The axis-aligned bounding box, in the link frame B, of one geometry: CalcPrimitiveBounds for a
-/// primitive; for a mesh, the box of its file (LoadMeshBounds, through options.cache when set)
-/// scaled by the geometry's scale and posed by X_BG. The 8 corners of the scaled box are posed,
+/// primitive; for a mesh, the box of its file (LoadMeshBounds, through options.cache when set; of
+/// its <submesh> part only, as placed or recentred, when the geometry names one) scaled by the
+/// geometry's scale and posed by X_BG. The 8 corners of the scaled box are posed,
 /// not the vertices (the file's box is all that is kept per file): under a rotation that is not
 /// a multiple of 90° about the axes this box is larger than that of the posed vertices (up to
 /// √3 times in each direction, for a long thin mesh turned 45° about two axes); it is always an

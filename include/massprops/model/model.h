@@ -79,6 +79,13 @@ struct Geometry {
   Eigen::Vector3d radii = Eigen::Vector3d::Zero();  ///< kEllipsoid: semi-axes along x, y, z.
   std::string uri;                                  ///< kMesh: the filename/uri, as written.
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();  ///< kMesh.
+  /// kMesh, SDF `<submesh><name>`: the one named part of the file this geometry is (libsdformat's
+  /// sdf::Mesh::Submesh()); empty: the whole file.
+  std::string submesh;
+  /// kMesh, SDF `<submesh><center>`: that part recentred on its bounding box's center before the
+  /// scale and pose are applied (sdf::Mesh::CenterSubmesh()).
+  bool center_submesh = false;
+  SourceLocation submesh_location;  ///< The <submesh> element (line 0 when there is none).
   Pose X_BG;
   bool is_collision = true;  ///< false for <visual>.
   SourceLocation location;   ///< The <collision>/<visual> element.

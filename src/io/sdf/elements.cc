@@ -1,6 +1,8 @@
 // The SDF reader's elements and values (reader.h): the nodes of the pose graph read from <world>,
 // <model>, <link>, <joint> and <frame>, numbers and poses as written, and a link's contents: its
 // written <inertial>, its geometries and its massprops:ignore comments.
+#include <cctype>
+
 #include "io/sdf/reader.h"
 
 namespace massprops::internal::sdf_reader {
@@ -459,6 +461,36 @@ void Reader::ReadShape(const XMLElement* shape, const Context& ctx, const std::s
     SetMeshReference(Text(shape->FirstChildElement("uri")),
                      Vector(shape->FirstChildElement("scale"), Eigen::Vector3d::Ones(), ctx, swhat),
                      g);
+    const XMLElement* submesh = shape->FirstChildElement("submesh");
+    if (submesh != nullptr) ReadSubmesh(submesh, ctx, swhat, g);
+  }
+}
+
+// Reads a mesh's <submesh> as libsdformat's sdf::Mesh::Load does (its Submesh() and
+// CenterSubmesh()): the <name> as written without surrounding blanks; a missing or empty name, or
+// the default "__default__", is libsdformat's error and leaves the whole file in use (a warning
+// here); <center> is an SDF boolean (true/1, false/0, in any case), false when absent or empty,
+// and a value libsdformat cannot read leaves it false (a warning).
+void Reader::ReadSubmesh(const XMLElement* submesh, const Context& ctx, const std::string& swhat,
+                         Geometry* g) {
+  g->submesh_location = PlaceOf(ctx.file, submesh);
+  const std::string name = Text(submesh->FirstChildElement("name"));
+  if (name.empty() || name == "__default__") {
+    Warning(ctx.file, submesh, "<submesh> of " + swhat,
+            "no submesh <name>: the whole mesh file is used, as libsdformat leaves it");
+  } else {
+    g->submesh = name;
+  }
+  const XMLElement* center = submesh->FirstChildElement("center");
+  if (center == nullptr) return;
+  std::string value = Text(center);
+  std::transform(value.begin(), value.end(), value.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (value == "true" || value == "1") {
+    g->center_submesh = true;
+  } else if (!value.empty() && value != "false" && value != "0") {
+    Warning(ctx.file, center, "<submesh><center> of " + swhat,
+            "'" + Text(center) + "' is not a boolean: the submesh is not recentred");
   }
 }
 

@@ -233,6 +233,8 @@ class Reader {
                         const Context& ctx, const std::string& lname);
   void ReadShape(const XMLElement* shape, const Context& ctx, const std::string& swhat,
                  Geometry* g);
+  void ReadSubmesh(const XMLElement* submesh, const Context& ctx, const std::string& swhat,
+                   Geometry* g);
   bool ResolveInLink(const XMLElement* pose, int link_index, int top, const Pose& X_TB,
                      const Context& ctx, const std::string& what, Pose* X_BF);
 
