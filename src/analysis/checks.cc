@@ -13,6 +13,7 @@
 #include "analysis/rules/rule_context.h"
 #include "analysis/rules/model_rules.h"
 #include "analysis/rules/rules.h"
+#include "massprops/analysis/check_stats.h"
 #include "massprops/analysis/density_rules.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/target_profile.h"
@@ -167,6 +168,11 @@ const std::vector<RuleInfo>& AllRules() {
 }
 
 std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options) {
+  return CheckModel(model, options, nullptr);
+}
+
+std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options,
+                                CheckStats* stats) {
   RuleContext ctx(model, options);
   for (std::size_t i = 0; i < model.links.size(); ++i) CheckLink(ctx, static_cast<int>(i));
   bool kinematic_only = model.format == Model::Format::kUrdf;
@@ -185,11 +191,19 @@ std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options)
     return a.rule < b.rule;
   });
   AddDensityFindings(model, options, &findings);  // density_rules.h
+  if (stats != nullptr) *stats = ctx.stats;
   return std::move(findings);
 }
 
 std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& options) {
   std::vector<Finding> findings;
+  // Whether any link ignores a rule: where none does (nearly always), a finding's link is not
+  // looked up (a search of every model's links per finding: a world of n links with a reader
+  // finding on each, such as SDF 1.11's auto inertia, would cost n^2).
+  bool some_ignored = false;
+  for (const Model& model : read.models) {
+    for (const Link& link : model.links) some_ignored = some_ignored || !link.ignored_rules.empty();
+  }
   for (const ReadFinding& rf : read.findings) {
     std::optional<Severity> severity;
     const auto it = options.overrides.find(rf.rule);
@@ -203,6 +217,7 @@ std::vector<Finding> ReaderFindings(const ReadResult& read, const CheckOptions& 
     if (!severity) continue;
     bool ignored = false;
     for (const Model& model : read.models) {
+      if (!some_ignored) break;
       if (!rf.model.empty() && model.name != rf.model) continue;
       const int index = rf.link.empty() ? -1 : model.FindLink(rf.link);
       if (index < 0) continue;

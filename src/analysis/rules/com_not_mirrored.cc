@@ -27,6 +27,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -188,13 +189,15 @@ std::vector<std::pair<int, int>> MirroredPairs(const RuleContext& ctx) {
       add(by_mesh_file, mesh->first, mesh->second < 0 ? 1 : 0, l);
     }
   }
+  // In the order found, each pair once (a set of those found, not a search of the list).
   std::vector<std::pair<int, int>> pairs;
+  std::set<std::pair<int, int>> found;
   for (const auto* map : {&by_name, &by_mesh_name, &by_mesh_file}) {
     for (const auto& [key, sides] : *map) {
       (void)key;
       if (sides[0] < 0 || sides[1] < 0) continue;
       const std::pair<int, int> pair(std::min(sides[0], sides[1]), std::max(sides[0], sides[1]));
-      if (std::find(pairs.begin(), pairs.end(), pair) == pairs.end()) pairs.push_back(pair);
+      if (found.insert(pair).second) pairs.push_back(pair);
     }
   }
   return pairs;
@@ -396,12 +399,13 @@ const RuleInfo& ComNotMirroredRule() {
 }
 
 void CheckMirroredPairs(RuleContext& ctx) {
-  if (ctx.model.is_static) return;
+  if (ctx.model.is_static || !ctx.RuleOn(kComNotMirrored)) return;
   const std::vector<std::pair<int, int>> pairs = MirroredPairs(ctx);
   if (pairs.empty()) return;
   const ModelPoses poses = PosesOf(ctx);
   for (const auto& [a, b] : pairs) {
     if (poses.root[a] < 0 || poses.root[a] != poses.root[b]) continue;
+    ++ctx.stats.mirrored_pairs;
     CheckMirroredPair(ctx, a, b, poses.X_WL[a], poses.X_WL[b]);
   }
 }

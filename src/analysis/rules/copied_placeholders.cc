@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <unordered_set>
 #include <vector>
 
 #include "analysis/rules/kinematic_chain.h"
@@ -108,14 +109,18 @@ bool TypedInPattern(const Inertial& in) {
          (round(in.ixx) && round(in.iyy) && round(in.izz));
 }
 
-bool AlreadyFlagged(const RuleContext& ctx, const Link& link) {
-  return std::any_of(ctx.findings.begin(), ctx.findings.end(), [&](const Finding& f) {
-    return f.link == link.name && f.rule == kUnitsSuspect;
-  });
+// The links a units-suspect finding already names (an index of the findings, kept up to date as
+// this rule adds its own, instead of a scan of every finding per link).
+std::unordered_set<std::string> UnitsFlagged(const RuleContext& ctx) {
+  std::unordered_set<std::string> links;
+  for (const Finding& f : ctx.findings) {
+    if (f.rule == kUnitsSuspect) links.insert(f.link);
+  }
+  return links;
 }
 
 void ReportCopies(RuleContext& ctx, const std::vector<int>& copies, bool typed_in,
-                  double size_ratio) {
+                  double size_ratio, std::unordered_set<std::string>* flagged) {
   std::vector<Assembly> assemblies;
   for (int l : copies) {
     assemblies.push_back(
@@ -138,7 +143,8 @@ void ReportCopies(RuleContext& ctx, const std::vector<int>& copies, bool typed_i
     if (!(in.mass > kDummyMass)) continue;
     if (!(a.reach > kCoincidentLength) || a.partial) continue;
     const double ratio = k / a.reach;
-    if (!(ratio > kCopyRatio) || AlreadyFlagged(ctx, link)) continue;
+    if (!(ratio > kCopyRatio) || flagged->count(link.name) > 0) continue;
+    const std::size_t before = ctx.findings.size();
     ctx.Emit(kUnitsSuspect, link, InertiaLocation(link),
              "link '" + link.name + "': the same mass " + Num(in.mass) + " kg and inertia (" +
                  Num(in.ixx) + ", " + Num(in.iyy) + ", " + Num(in.izz) + ") are written on " +
@@ -168,13 +174,14 @@ void ReportCopies(RuleContext& ctx, const std::vector<int>& copies, bool typed_i
               {"copies_count", static_cast<double>(copies.size())}},
              "give each of " + names +
                  " the inertia of its own part (or zero mass and inertia if it is only a frame)");
+    if (ctx.findings.size() > before) flagged->insert(link.name);
   }
 }
 
 }  // namespace
 
 void CheckCopiedPlaceholders(RuleContext& ctx) {
-  if (ctx.model.is_static) return;
+  if (ctx.model.is_static || !ctx.RuleOn(kUnitsSuspect)) return;
   std::map<Numbers, std::vector<int>> groups;
   for (std::size_t i = 0; i < ctx.model.links.size(); ++i) {
     const Link& link = ctx.model.links[i];
@@ -185,6 +192,7 @@ void CheckCopiedPlaceholders(RuleContext& ctx) {
     if (!(in.ixx + in.iyy + in.izz > 0)) continue;
     groups[NumbersOf(in)].push_back(static_cast<int>(i));
   }
+  std::unordered_set<std::string> flagged = UnitsFlagged(ctx);
   for (const auto& [numbers, links] : groups) {
     (void)numbers;
     if (static_cast<int>(links.size()) < kMinCopies) continue;
@@ -192,6 +200,7 @@ void CheckCopiedPlaceholders(RuleContext& ctx) {
     if (std::none_of(copies.begin(), copies.end(), [&](int l) { return WithoutSize(ctx, l); })) {
       continue;
     }
+    ++ctx.stats.copied_groups;  // its assemblies measured
     double smallest = HUGE_VAL, largest = 0;
     for (int l : copies) {
       const Eigen::Vector3d c = LinkMassProperties(ctx.model.links[l], ctx.model.format).p_FoScm_F;
@@ -202,7 +211,7 @@ void CheckCopiedPlaceholders(RuleContext& ctx) {
     const double size_ratio = smallest > 0 ? largest / smallest : HUGE_VAL;
     const bool typed_in = TypedInPattern(*ctx.model.links[copies.front()].inertial);
     if (!typed_in && !(size_ratio >= kSeveralfold)) continue;
-    ReportCopies(ctx, copies, typed_in, size_ratio);
+    ReportCopies(ctx, copies, typed_in, size_ratio, &flagged);
   }
 }
 

@@ -20,8 +20,12 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
+#include "analysis/rules/farthest_point.h"
 #include "analysis/rules/model_rules.h"
 #include "analysis/rules/rules.h"
 
@@ -36,13 +40,17 @@ constexpr const char* kInertiaExceedsModel = "inertia-exceeds-model";
 // the copied placeholders of units-suspect allow their assembly).
 constexpr double kModelRatio = 1.5;
 
-// The findings that already say a link's inertia is too large for it: one finding per defect.
-bool AlreadyTooLarge(const RuleContext& ctx, const Link& link) {
-  return std::any_of(ctx.findings.begin(), ctx.findings.end(), [&](const Finding& f) {
-    return f.link == link.name &&
-           (f.rule == "units-suspect" || f.rule == "inertia-exceeds-geometry" ||
-            f.rule == "inertia-about-origin-suspect" || f.rule == "inertia-not-physical");
-  });
+// The links whose inertia a finding already says is too large: one finding per defect. Taken
+// once, before this rule emits (an index, not a scan of the findings per link).
+std::unordered_set<std::string_view> AlreadyTooLarge(const RuleContext& ctx) {
+  std::unordered_set<std::string_view> links;
+  for (const Finding& f : ctx.findings) {
+    if (f.rule == "units-suspect" || f.rule == "inertia-exceeds-geometry" ||
+        f.rule == "inertia-about-origin-suspect" || f.rule == "inertia-not-physical") {
+      links.insert(f.link);
+    }
+  }
+  return links;
 }
 
 // Whether link l draws a body: geometry of known size, larger than a placeholder, and not a
@@ -58,7 +66,8 @@ bool Drawn(const RuleContext& ctx, int l) {
 
 // The corners of every link's known geometry in the frame of the tree's root, per root; a root
 // whose tree has geometry of unknown size, or a welded group with mass and no geometry of known
-// size, gets none (its extent is not known).
+// size, gets none (its extent is not known). Each root's corners as a FarthestPointIndex (built
+// once per tree: every link of the tree asks it for its reach).
 std::vector<std::vector<Eigen::Vector3d>> ModelCorners(const RuleContext& ctx,
                                                        const ModelPoses& poses) {
   const std::size_t n = ctx.model.links.size();
@@ -107,20 +116,34 @@ const RuleInfo& InertiaExceedsModelRule() {
 }
 
 void CheckInertiaWithinModel(RuleContext& ctx) {
-  if (ctx.model.is_static) return;
+  if (ctx.model.is_static || !ctx.RuleOn(kInertiaExceedsModel)) return;
   const ModelPoses poses = PosesOf(ctx);
-  const std::vector<std::vector<Eigen::Vector3d>> corners = ModelCorners(ctx, poses);
+  std::vector<std::vector<Eigen::Vector3d>> corners = ModelCorners(ctx, poses);
+  std::vector<FarthestPointIndex> model_geometry;  // per tree with known extent
+  std::vector<int> geometry_of_root(corners.size(), -1);
+  for (std::size_t r = 0; r < corners.size(); ++r) {
+    if (corners[r].empty()) continue;
+    geometry_of_root[r] = static_cast<int>(model_geometry.size());
+    model_geometry.emplace_back(std::move(corners[r]));
+    ++ctx.stats.model_extents;
+  }
+  const std::unordered_set<std::string_view> already_too_large = AlreadyTooLarge(ctx);
   for (std::size_t l = 0; l < ctx.model.links.size(); ++l) {
     const Link& link = ctx.model.links[l];
     const int root = poses.root[l];
-    if (root < 0 || corners[root].empty() || !link.inertial || link.inertial_unreadable) continue;
+    if (root < 0 || geometry_of_root[root] < 0 || !link.inertial || link.inertial_unreadable) {
+      continue;
+    }
     const MassProperties props = LinkMassProperties(link, ctx.model.format);
     const double m = props.mass, trace = props.I_SScm_F.trace();
     if (!(m > kDummyMass) || !std::isfinite(m) || !(trace > 0) || !std::isfinite(trace)) continue;
-    if (!props.p_FoScm_F.allFinite() || AlreadyTooLarge(ctx, link)) continue;
+    if (!props.p_FoScm_F.allFinite() || already_too_large.count(link.name) > 0) continue;
     const Eigen::Vector3d c = poses.X_WL[l].p_AB + poses.X_WL[l].R_AB * props.p_FoScm_F;
-    double reach = 0;
-    for (const Eigen::Vector3d& p : corners[root]) reach = std::max(reach, (p - c).norm());
+    const FarthestPointIndex& geometry = model_geometry[geometry_of_root[root]];
+    const std::size_t evaluated = geometry.evaluated();
+    const double reach = geometry.MaxDistance(c);
+    ++ctx.stats.model_reach_measurements;
+    ctx.stats.model_reach_distances += geometry.evaluated() - evaluated;
     const double k = std::sqrt(trace / (2 * m));
     if (!(reach > 0) || !(k > kModelRatio * reach)) continue;
     const double ratio = k / reach;

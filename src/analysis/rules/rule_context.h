@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/analysis/check_stats.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/finding_text.h"
 #include "massprops/analysis/welded_groups.h"
@@ -147,6 +148,11 @@ class RuleContext {
   bool sdf_without_inertials = false;  // an SDF model none of whose links has an <inertial>
   bool model_note_given = false;       // model-without-inertials said
   std::vector<Finding> findings;
+  CheckStats stats;  // the expensive measurements taken (CheckModel's stats)
+
+  // Whether `rule` is on in this run (its severity after the overrides): a rule that is off
+  // is not computed (Emit would drop every finding of it anyway).
+  bool RuleOn(const std::string& rule) const { return SeverityOf(rule).has_value(); }
 
   // The welded group of link `link_index`.
   const WeldedGroup& GroupOf(int link_index) const { return groups[group_of[link_index]]; }
