@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Writes a synthetic serial chain of N links, for the reading benchmarks.
 
-Usage: gen_chain.py N OUT [--sdf]
+Usage: gen_chain.py N OUT [--sdf | --world]
 
 Each link has an <inertial> (a 1.5 kg box 0.04 x 0.04 x 0.1 m about its center, which is 0.05 m
 up the link's z axis) and a matching collision box; link k-1 and link k are joined by a revolute
-joint about y, 0.1 m apart. URDF by default; --sdf writes the same chain as SDF 1.9.
+joint about y, 0.1 m apart. URDF by default; --sdf writes the same chain as SDF 1.9; --world
+writes an SDF 1.9 world of N links in as many models as it takes: chains of WORLD_CHAIN links
+each (the last one shorter), standing 1 m apart on a square grid (a swarm, a multi-robot world).
 bench/read_bench.cc builds byte-identical URDF text in C++ (MakeChainUrdf), so its numbers hold
 for the files this script writes.
 """
@@ -46,42 +48,71 @@ def urdf_chain(n):
 
 def sdf_chain(n):
     out = ['<?xml version="1.0"?>\n<sdf version="1.9">\n  <model name="chain">\n']
-    for k in range(n):
-        out.append(
-            f'    <link name="link{k}">\n'
-            f'      <pose>0 0 {0.1 * k:.12g} 0 0 0</pose>\n'
-            f'      <inertial>\n'
-            f'        <pose>0 0 0.05 0 0 0</pose>\n'
-            f'        <mass>1.5</mass>\n'
-            f'        <inertia><ixx>{IXX}</ixx><ixy>0</ixy><ixz>0</ixz>'
-            f'<iyy>{IXX}</iyy><iyz>0</iyz><izz>{IZZ}</izz></inertia>\n'
-            f'      </inertial>\n'
-            f'      <collision name="box">\n'
-            f'        <pose>0 0 0.05 0 0 0</pose>\n'
-            f'        <geometry><box><size>0.04 0.04 0.1</size></box></geometry>\n'
-            f'      </collision>\n'
-            f'    </link>\n')
-        if k > 0:
-            out.append(
-                f'    <joint name="joint{k}" type="revolute">\n'
-                f'      <parent>link{k - 1}</parent>\n'
-                f'      <child>link{k}</child>\n'
-                f'      <axis><xyz>0 1 0</xyz>'
-                f'<limit><lower>-1.57</lower><upper>1.57</upper></limit></axis>\n'
-                f'    </joint>\n')
+    out.extend(sdf_links(n, '    '))
     out.append('  </model>\n</sdf>\n')
     return ''.join(out)
 
 
+# Links per model of a --world.
+WORLD_CHAIN = 8
+
+
+def sdf_links(n, indent):
+    """The links and joints of an SDF chain of n links, each line indented by `indent`."""
+    out = []
+    for k in range(n):
+        name = f'link{k}'
+        out.append(
+            f'{indent}<link name="{name}">\n'
+            f'{indent}  <pose>0 0 {0.1 * k:.12g} 0 0 0</pose>\n'
+            f'{indent}  <inertial>\n'
+            f'{indent}    <pose>0 0 0.05 0 0 0</pose>\n'
+            f'{indent}    <mass>1.5</mass>\n'
+            f'{indent}    <inertia><ixx>{IXX}</ixx><ixy>0</ixy><ixz>0</ixz>'
+            f'<iyy>{IXX}</iyy><iyz>0</iyz><izz>{IZZ}</izz></inertia>\n'
+            f'{indent}  </inertial>\n'
+            f'{indent}  <collision name="box">\n'
+            f'{indent}    <pose>0 0 0.05 0 0 0</pose>\n'
+            f'{indent}    <geometry><box><size>0.04 0.04 0.1</size></box></geometry>\n'
+            f'{indent}  </collision>\n'
+            f'{indent}</link>\n')
+        if k > 0:
+            out.append(
+                f'{indent}<joint name="joint{k}" type="revolute">\n'
+                f'{indent}  <parent>link{k - 1}</parent>\n'
+                f'{indent}  <child>{name}</child>\n'
+                f'{indent}  <axis><xyz>0 1 0</xyz>'
+                f'<limit><lower>-1.57</lower><upper>1.57</upper></limit></axis>\n'
+                f'{indent}</joint>\n')
+    return out
+
+
+def sdf_world(n):
+    models = (n + WORLD_CHAIN - 1) // WORLD_CHAIN
+    side = 1
+    while side * side < models:
+        side += 1
+    out = ['<?xml version="1.0"?>\n<sdf version="1.9">\n  <world name="swarm">\n']
+    for m in range(models):
+        links = min(WORLD_CHAIN, n - m * WORLD_CHAIN)
+        out.append(f'    <model name="robot{m}">\n'
+                   f'      <pose>{m % side} {m // side} 0 0 0 0</pose>\n')
+        out.extend(sdf_links(links, '      '))
+        out.append('    </model>\n')
+    out.append('  </world>\n</sdf>\n')
+    return ''.join(out)
+
+
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] != '--sdf'):
+    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] not in ('--sdf', '--world')):
         sys.stderr.write(__doc__)
         return 2
     n = int(argv[1])
     if n < 1:
         sys.stderr.write('N must be at least 1\n')
         return 2
-    text = sdf_chain(n) if len(argv) == 4 else urdf_chain(n)
+    kind = argv[3] if len(argv) == 4 else '--urdf'
+    text = {'--sdf': sdf_chain, '--world': sdf_world, '--urdf': urdf_chain}[kind](n)
     with open(argv[2], 'w', encoding='utf-8', newline='\n') as f:
         f.write(text)
     return 0
