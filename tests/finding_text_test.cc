@@ -62,15 +62,42 @@ TEST(FindingTextTest, EvidenceIsRenderedByTheUnitItsNameEndsIn) {
   EXPECT_EQ(EvidenceLabel("composite_mass_kg"), "composite mass");
 }
 
-TEST(FindingTextTest, EvidenceLineKeepsWhatFitsAndMarksTheRest) {
+TEST(FindingTextTest, EvidenceGoesOnAsManyWholeLinesAsItNeeds) {
   const std::vector<std::pair<std::string, double>> evidence = {
       {"radius_of_gyration_m", 8.7}, {"half_diagonal_m", 0.15}, {"ratio", 58}, {"mass_kg", 2}};
   EXPECT_EQ(FormatEvidence(evidence),
             "radius of gyration 8.7 m, half diagonal 15 cm, ratio 58x, mass 2 kg");
-  // 45 characters: "radius of gyration 8.7 m" (24) + ", half diagonal 15 cm" (21) = 45,
-  // and 3 more for ", …" do not fit: the second item is left out.
-  EXPECT_EQ(FormatEvidence(evidence, 45), "radius of gyration 8.7 m, …");
+  // Counted by hand: "radius of gyration 8.7 m" (24) + ", half diagonal 15 cm" (21) = 45 fit
+  // in 45; ", ratio 58x" would make 56: the third item starts a second line, and ", mass 2 kg"
+  // (11) fits beside it. Nothing is left out, nothing cut.
+  EXPECT_EQ(FormatEvidenceLines(evidence, 45),
+            (std::vector<std::string>{"radius of gyration 8.7 m, half diagonal 15 cm",
+                                      "ratio 58x, mass 2 kg"}));
+  EXPECT_EQ(FormatEvidence(evidence, 45),
+            "radius of gyration 8.7 m, half diagonal 15 cm\nratio 58x, mass 2 kg");
+  EXPECT_EQ(FormatEvidenceLines(evidence).size(), 1u);
   EXPECT_EQ(FormatEvidence({}), "");
+  EXPECT_TRUE(FormatEvidenceLines({}).empty());
+}
+
+TEST(FindingTextTest, ListsAreJoinedIntoWholeLinesCountedInCharacters) {
+  // "a, bb" is 5 characters; ", cc" would make 9 > 6.
+  EXPECT_EQ(JoinIntoLines({"a", "bb", "cc"}, 6), (std::vector<std::string>{"a, bb", "cc"}));
+  // An item longer than the line stands alone, whole.
+  EXPECT_EQ(JoinIntoLines({"a", "bbbbbbbb", "c"}, 6),
+            (std::vector<std::string>{"a", "bbbbbbbb", "c"}));
+  // "2 kg·m²" is 7 characters (9 bytes): "x, 2 kg·m²" is 10, which fits in 10.
+  EXPECT_EQ(JoinIntoLines({"x", "2 kg·m²"}, 10), (std::vector<std::string>{"x, 2 kg·m²"}));
+  EXPECT_TRUE(JoinIntoLines({}, 10).empty());
+}
+
+TEST(FindingTextTest, ProseIsWrappedAtSpacesWithoutCuttingAWord) {
+  // "the mass" is 8; " is" would make 11 > 10.
+  EXPECT_EQ(WrapWords("the mass is  zero\nhere", 10),
+            (std::vector<std::string>{"the mass", "is zero", "here"}));
+  EXPECT_EQ(WrapWords("a verylongword b", 5), (std::vector<std::string>{"a", "verylongword", "b"}));
+  EXPECT_EQ(WrapWords("kg·m² kg·m²", 11), (std::vector<std::string>{"kg·m² kg·m²"}));
+  EXPECT_TRUE(WrapWords("  ", 10).empty());
 }
 
 TEST(FindingTextTest, HeadlineFallsBackToTheMessage) {

@@ -190,9 +190,24 @@ def test_hover_on_upper_arm_shows_the_mass_written_in_the_file():
                                                    "position": {"line": forearm, "character": 4}})
         assert "welded group" in reply["result"]["contents"]["value"], reply
         assert "`tool0`" in reply["result"]["contents"]["value"], reply
+        # Both hovers' tables (the link's and the group's composite) have a header row that says
+        # something: CommonMark tables (GFM) render an empty one as a blank band.
+        tables = header_rows(hover["value"]) + header_rows(reply["result"]["contents"]["value"])
+        assert len(tables) == 3, tables
+        assert tables[0] == ["mass", "%s kg" % mass], tables
+        assert tables[2][0] == "composite mass", tables
+        for cells in tables:
+            assert all(cells), tables
         assert client.shutdown_and_exit() == 0
     finally:
         client.kill()
+
+
+def header_rows(markdown):
+    """The cells of each Markdown table's header row: the line above each `|---|...|` line."""
+    lines = markdown.split("\n")
+    return [[cell.strip() for cell in lines[i - 1].strip().strip("|").split("|")]
+            for i in range(1, len(lines)) if re.fullmatch(r"\|(-+\|)+", lines[i].strip())]
 
 
 def apply_edits(text, edits):

@@ -442,6 +442,60 @@ TEST(ReportersPartsTest, RepeatsOfOneCauseShareOneEvidenceAndHelpLine) {
             "  = help: check the mass\n");
 }
 
+// Two findings of one rule with the same help about two welded groups (issue 52): each stands
+// alone, since its members are its own, and lists them under it; an evidence too long for one
+// line goes on two. Split by hand, counting characters: evidence items "mass 0 kg" (9),
+// "outboard mass 0.25 kg" (21), "outboard moment 3.33e-5 kg·m²" (29) make 9 + 23 + 31 = 63 of
+// the 86 after "  = evidence: "; ", radius of gyration 1.23 cm" (28) would make 91. Members
+// "palm" (4), "finger_left_proximal" (20), "finger_left_distal" (18), "finger_right_proximal"
+// (21) make 4 + 22 + 20 + 23 = 69 of the 87 after "  = members: "; ", finger_right_distal" (21)
+// would make 90.
+TEST(ReportersPartsTest, AWeldedGroupsMembersAndALongEvidenceAreListedOnWholeLines) {
+  FileResult result;
+  result.path = "g.urdf";
+  auto add = [&](const std::string& root, int line, const std::vector<std::string>& members) {
+    Finding f;
+    f.rule = "massless-moving-body";
+    f.severity = Severity::kError;
+    f.link = root;
+    f.group = members;
+    f.location = {"g.urdf", line, 0};
+    f.headline = "the welded group rooted at '" + root + "' is massless";
+    f.evidence = {{"mass_kg", 0},
+                  {"outboard_mass_kg", 0.25},
+                  {"outboard_moment_kg_m2", 3.33e-5},
+                  {"radius_of_gyration_m", 0.0123},
+                  {"half_diagonal_m", 0.15},
+                  {"links_count", static_cast<double>(members.size())}};
+    f.help = "give one of its links a mass";
+    result.findings.push_back(f);
+  };
+  add("palm", 5,
+      {"palm", "finger_left_proximal", "finger_left_distal", "finger_right_proximal",
+       "finger_right_distal", "camera_mount", "tool_center_point"});
+  add("plate", 40, {"plate", "screw"});
+  ReportOptions quiet;
+  quiet.quiet = true;
+  const std::string evidence =
+      "  = evidence: mass 0 kg, outboard mass 0.25 kg, outboard moment 3.33e-5 kg·m²\n"
+      "  = evidence: radius of gyration 1.23 cm, half diagonal 15 cm, links ";
+  EXPECT_EQ(RenderText({result}, quiet),
+            "g.urdf:5: error: the welded group rooted at 'palm' is massless "
+            "[massless-moving-body]\n" +
+                evidence +
+                "7\n"
+                "  = members: palm, finger_left_proximal, finger_left_distal, "
+                "finger_right_proximal\n"
+                "  = members: finger_right_distal, camera_mount, tool_center_point\n"
+                "  = help: give one of its links a mass\n"
+                "g.urdf:40: error: the welded group rooted at 'plate' is massless "
+                "[massless-moving-body]\n" +
+                evidence +
+                "2\n"
+                "  = members: plate, screw\n"
+                "  = help: give one of its links a mass\n");
+}
+
 TEST(ReportersPartsTest, BriefPrintsHeadlinesAloneAndExplainAddsTheReasoning) {
   ReportOptions brief;
   brief.quiet = brief.brief = true;
@@ -522,8 +576,12 @@ TEST(ReportersPartsTest, ALongReadErrorHasAWholeHeadlineInEveryFormatAndItsTextB
   const std::string whole = headline + "; " + std::string(80, 'w');
   ReportOptions quiet;
   quiet.quiet = true;
+  // The whole text under it on whole lines of at most 100 characters: "  = why: " (9) and the
+  // headline with its ";" (79) make 88, and the 80 w's would make 169: they go on the next line,
+  // indented under the text (9 + 80 = 89).
   EXPECT_EQ(RenderText({LongReadErrorResult()}, quiet),
-            "r.urdf:9: error: " + headline + " [read-error]\n  = why: " + whole + "\n");
+            "r.urdf:9: error: " + headline + " [read-error]\n  = why: " + headline + ";\n" +
+                std::string(9, ' ') + std::string(80, 'w') + "\n");
   const json doc = json::parse(RenderJson({LongReadErrorResult()}));
   EXPECT_EQ(doc["files"][0]["errors"][0].at("headline"), headline);
   const json sarif = json::parse(RenderSarif({LongReadErrorResult()}));

@@ -202,24 +202,68 @@ std::string EvidenceLabel(std::string_view name) {
   return label;
 }
 
+std::vector<std::string> EvidenceItems(
+    const std::vector<std::pair<std::string, double>>& evidence) {
+  std::vector<std::string> items;
+  items.reserve(evidence.size());
+  for (const auto& [name, value] : evidence) {
+    items.push_back(EvidenceLabel(name) + " " + FormatEvidenceValue(name, value));
+  }
+  return items;
+}
+
 std::string FormatEvidence(const std::vector<std::pair<std::string, double>>& evidence,
                            std::size_t max_chars) {
   std::string out;
-  for (const auto& [name, value] : evidence) {
-    const std::string item = EvidenceLabel(name) + " " + FormatEvidenceValue(name, value);
-    const std::string next = out.empty() ? item : out + ", " + item;
-    // Counted in characters, not bytes ("·", "²", "×" take two bytes each).
-    auto chars = [](const std::string& s) {
-      return static_cast<std::size_t>(
-          std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-    };
-    if (chars(next) + 3 > max_chars) {
-      out += out.empty() ? "…" : ", …";
-      break;
-    }
-    out = next;
+  for (const std::string& line : FormatEvidenceLines(evidence, max_chars)) {
+    out += (out.empty() ? "" : "\n") + line;
   }
   return out;
+}
+
+std::vector<std::string> FormatEvidenceLines(
+    const std::vector<std::pair<std::string, double>>& evidence, std::size_t max_chars) {
+  return JoinIntoLines(EvidenceItems(evidence), max_chars);
+}
+
+std::vector<std::string> JoinIntoLines(const std::vector<std::string>& items,
+                                       std::size_t max_chars) {
+  std::vector<std::string> lines;
+  std::size_t chars = 0;  // of lines.back(), counted in characters ("·", "²" take two bytes)
+  for (const std::string& item : items) {
+    const std::size_t item_chars = CountChars(item);
+    if (!lines.empty() && chars + 2 + item_chars <= max_chars) {
+      lines.back().append(", ").append(item);
+      chars += 2 + item_chars;
+    } else {
+      lines.push_back(item);
+      chars = item_chars;
+    }
+  }
+  return lines;
+}
+
+std::vector<std::string> WrapWords(std::string_view text, std::size_t max_chars) {
+  auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  std::vector<std::string> lines;
+  std::size_t chars = 0, i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && is_space(text[i])) ++i;
+    std::size_t end = i;
+    while (end < text.size() && !is_space(text[end])) ++end;
+    if (end == i) break;
+    const std::string_view word = text.substr(i, end - i);
+    const std::size_t word_chars = CountChars(word);
+    if (!lines.empty() && chars + 1 + word_chars <= max_chars) {
+      lines.back().append(" ").append(word);
+      chars += 1 + word_chars;
+    } else {
+      lines.emplace_back(word);
+      chars = word_chars;
+    }
+    i = end;
+  }
+  return lines;
 }
 
 std::size_t CountChars(std::string_view text) {

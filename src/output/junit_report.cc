@@ -135,8 +135,9 @@ std::string TestName(const Finding& finding, const FileResult& result) {
 std::string FindingText(const Finding& finding, const FileResult& result) {
   std::string text = FileLine(PlaceOf(finding, result)) + ": " + ToString(finding.severity) + ": " +
                      HeadlineOf(finding) + " [" + finding.rule + "]\n";
-  const std::string evidence = FormatEvidence(finding.evidence);
-  if (!evidence.empty()) text += "evidence: " + evidence + "\n";
+  for (const std::string& line : FormatEvidenceLines(finding.evidence)) {
+    text += "evidence: " + line + "\n";
+  }
   if (!finding.help.empty()) text += "help: " + finding.help + "\n";
   if (!finding.group.empty()) {
     text += "welded group of " + std::to_string(finding.group.size()) + " links:";

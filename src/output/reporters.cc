@@ -271,28 +271,12 @@ std::string UnresolvedMeshesLine(const ReportSummary& s) {
 
 namespace {
 
-// Characters (not bytes) of UTF-8 text.
-std::size_t CharCount(std::string_view text) {
-  return static_cast<std::size_t>(
-      std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-}
-
-// `text` cut to at most `max_chars` characters (at a character boundary), ending in "…" when cut.
-std::string CutToChars(const std::string& text, std::size_t max_chars) {
-  if (CharCount(text) <= max_chars) return text;
-  std::size_t chars = 0, at = 0;
-  while (at < text.size() && chars + 1 < max_chars) {
-    ++at;
-    while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
-    ++chars;
-  }
-  return text.substr(0, at) + "…";
-}
-
 // The evidence of a group of findings of one rule and cause: each number of the first finding,
-// as its range over the group ("ratio 577x to 1200x"), or its value when all agree.
-std::string GroupEvidence(const std::vector<const Finding*>& group) {
-  std::vector<std::pair<std::string, double>> lows, highs;
+// as its range over the group ("ratio 577x to 1200x"), or its value when all agree; as whole
+// lines of at most `max_chars` characters, the first starting "2 links: ".
+std::vector<std::string> GroupEvidence(const std::vector<const Finding*>& group,
+                                       std::size_t max_chars) {
+  std::vector<std::string> items;
   for (const auto& [name, value] : group.front()->evidence) {
     double low = value, high = value;
     for (const Finding* f : group) {
@@ -300,26 +284,14 @@ std::string GroupEvidence(const std::vector<const Finding*>& group) {
         if (other == name && std::isfinite(v)) low = std::min(low, v), high = std::max(high, v);
       }
     }
-    lows.emplace_back(name, low);
-    highs.emplace_back(name, high);
+    std::string text = FormatEvidenceValue(name, low);
+    const std::string high_text = FormatEvidenceValue(name, high);
+    if (high_text != text) text += " to " + high_text;
+    items.push_back(EvidenceLabel(name) + " " + text);
   }
-  std::string out = std::to_string(group.size()) + " links: ";
-  const std::size_t room = kMaxDetailChars - CharCount("  = evidence: ") - CharCount(out);
-  std::string items;
-  for (std::size_t i = 0; i < lows.size(); ++i) {
-    const std::string& name = lows[i].first;
-    std::string value = FormatEvidenceValue(name, lows[i].second);
-    const std::string high = FormatEvidenceValue(name, highs[i].second);
-    if (high != value) value += " to " + high;
-    const std::string item = EvidenceLabel(name) + " " + value;
-    const std::string next = items.empty() ? item : items + ", " + item;
-    if (CharCount(next) + 3 > room) {
-      items += items.empty() ? "…" : ", …";
-      break;
-    }
-    items = next;
-  }
-  return out + items;
+  if (items.empty()) return {};
+  items.front().insert(0, std::to_string(group.size()) + " links: ");
+  return JoinIntoLines(items, max_chars);
 }
 
 // The findings of one file as groups: those of one rule with the same non-empty help (one
@@ -329,7 +301,8 @@ std::vector<std::vector<const Finding*>> GroupFindings(const std::vector<Finding
   std::vector<std::vector<const Finding*>> groups;
   std::map<std::pair<std::string, std::string>, std::size_t> index;
   for (const Finding& finding : findings) {
-    if (!group || finding.help.empty()) {
+    // A welded group's finding stands alone: its members are its own.
+    if (!group || finding.help.empty() || !finding.group.empty()) {
       groups.push_back({&finding});
       continue;
     }
@@ -361,24 +334,56 @@ std::string HeadlineLine(const Finding& finding, const FileResult& result, bool 
   return where + ": " + severity + " " + headline + " [" + finding.rule + "]" + note + "\n";
 }
 
-// The lines under a group's headlines: `  = evidence: ...`, `  = help: ...` (and with explain,
-// `  = why: MESSAGE`, the full reasoning).
+// `  = LABEL: TEXT` for each of `lines`: a list split into whole lines (evidence, members)
+// repeats its label on each.
+std::string LabelledLines(const std::string& label, const std::vector<std::string>& lines,
+                          bool color) {
+  std::string out;
+  for (const std::string& line : lines) {
+    out += (color ? std::string(kDim) : "") + "  = " + label + ": " + line +
+           (color ? std::string(kReset) : "") + "\n";
+  }
+  return out;
+}
+
+// `  = why: TEXT` for prose (a reader's message, a finding's reasoning), split at spaces into
+// whole lines of at most kMaxDetailChars characters, the lines after the first indented under
+// its text.
+std::string WhyLines(const std::string& text, bool color) {
+  const std::string first = "  = why: ", next(CountChars(first), ' ');
+  std::string out;
+  for (const std::string& line :
+       WrapWords(ShortenLongWords(text), kMaxDetailChars - CountChars(first))) {
+    out += (color ? std::string(kDim) : "") + (out.empty() ? first : next) + line +
+           (color ? std::string(kReset) : "") + "\n";
+  }
+  return out;
+}
+
+// The lines under a group's headlines, each whole and at most kMaxDetailChars characters where
+// the rules keep to their limits: `  = evidence: ...` (as many lines as its numbers need),
+// `  = members: ...` (a welded group's links), `  = help: ...` (and with explain, `  = why: ...`,
+// the full reasoning).
 std::string DetailLines(const std::vector<const Finding*>& group, const ReportOptions& options) {
   const Finding& first = *group.front();
-  const std::string lead = options.color ? std::string(kDim) + "  = " : "  = ";
-  const std::string end = options.color ? std::string(kReset) + "\n" : "\n";
+  const bool color = options.color;
   std::string out;
-  const std::string evidence = first.evidence.empty() ? ""
-                               : group.size() > 1     ? GroupEvidence(group)
-                                                      : FormatEvidence(first.evidence);
-  if (!evidence.empty()) {
-    out += lead + CutToChars("evidence: " + ShortenLongWords(evidence), kMaxDetailChars - 4) + end;
+  const std::size_t evidence_room = kMaxDetailChars - CountChars("  = evidence: ");
+  out += LabelledLines(
+      "evidence",
+      group.size() > 1 ? GroupEvidence(group, evidence_room) : FormatEvidenceLines(first.evidence),
+      color);
+  if (!first.group.empty()) {
+    std::vector<std::string> names;
+    for (const std::string& name : first.group) names.push_back(ShortenLongWords(name));
+    out += LabelledLines(
+        "members", JoinIntoLines(names, kMaxDetailChars - CountChars("  = members: ")), color);
   }
-  if (!first.help.empty()) {
-    out += lead + CutToChars("help: " + ShortenLongWords(first.help), kMaxDetailChars - 4) + end;
-  }
+  // Whole, as the rule wrote it: a help is at most kMaxDetailChars characters with its label
+  // (the rules' tests and the corpus's, headline_form_test.cc, hold them to it).
+  if (!first.help.empty()) out += LabelledLines("help", {ShortenLongWords(first.help)}, color);
   if (options.explain && !first.message.empty() && first.message != first.headline) {
-    out += lead + "why: " + ShortenLongWords(first.message) + end;
+    out += WhyLines(first.message, color);
   }
   return out;
 }
@@ -428,8 +433,7 @@ std::string RenderText(const std::vector<FileResult>& results, const ReportOptio
       out += "\n";
       // A read error has no --explain: its whole message goes under a shorter headline.
       if (headline != ReadErrorText(error) && !options.brief) {
-        out += (color ? std::string(kDim) + "  = why: " : std::string("  = why: ")) +
-               ShortenLongWords(ReadErrorText(error)) + (color ? std::string(kReset) : "") + "\n";
+        out += WhyLines(ReadErrorText(error), color);
       }
     }
     const bool group = !options.explain && !options.brief;

@@ -75,7 +75,10 @@ std::string RuleAnchor(const std::string& rule) {
 // headline, then "evidence: ..." and "help: ..." lines when the finding has them.
 std::string FindingMessage(const Finding& finding) {
   std::string message = HeadlineOf(finding);
-  if (!finding.evidence.empty()) message += "\nevidence: " + FormatEvidence(finding.evidence);
+  // The lines of check's text output, each whole: a long evidence on several lines.
+  for (const std::string& line : FormatEvidenceLines(finding.evidence)) {
+    message += "\nevidence: " + line;
+  }
   if (!finding.help.empty()) message += "\nhelp: " + finding.help;
   return message;
 }

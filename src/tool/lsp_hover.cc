@@ -66,8 +66,8 @@ std::string LinkTable(const Link& link, const Model& model) {
   }
   if (link.inertial_unreadable) text += "the `<inertial>` could not be read wholly\n\n";
   const MassProperties props = LinkMassProperties(link, model.format);
-  text += "| | |\n|---|---|\n";
-  text += "| mass | " + FormatShortest(props.mass) + " kg |\n";
+  // A Markdown table needs a header row: the mass is it (an empty one renders as a blank band).
+  text += "| mass | " + FormatShortest(props.mass) + " kg |\n|---|---|\n";
   const char* frame = model.format == Model::Format::kMjcf ? "body" : "link";
   text += "| center of mass | " + Vector(props.p_FoScm_F) + " m in the " + frame + " frame |\n";
   text += "| principal moments | " + PrincipalMoments(props.I_SScm_F) + " |\n";
@@ -93,8 +93,8 @@ std::string GroupTable(const Model& model, int index) {
     }
     const CompositeInertia composite = CalcCompositeInertia(model, group);
     std::string text = "\n**welded group** (fixed joints) rooted at `" + root + "`: " + members +
-                       "\n\n| composite | |\n|---|---|\n";
-    text += "| mass | " + FormatSignificant(composite.mass, 6) + " kg |\n";
+                       "\n\n| composite mass | " + FormatSignificant(composite.mass, 6) +
+                       " kg |\n|---|---|\n";
     text +=
         "| center of mass | " + Vector(composite.p_RoScm_R) + " m in `" + root + "`'s frame |\n";
     text += "| principal moments | " + PrincipalMoments(composite.I_SScm_R) + " |\n";

@@ -49,10 +49,27 @@ std::string FormatEvidenceValue(std::string_view name, double value);
 /// ("radius_of_gyration_m", not "k_m"): "half_diagonal_m" → "half diagonal", "com_x_m" →
 /// "COM x", "ratio" → "ratio".
 std::string EvidenceLabel(std::string_view name);
-/// "mass 2 kg, half diagonal 21.2 cm, ratio 0.018x": as many items as fit in `max_chars`, then
-/// "…" when some were left out (JSON and `--explain` keep them all).
+/// Each named number as "mass 2 kg", "half diagonal 21.2 cm", "ratio 0.018x", in order.
+std::vector<std::string> EvidenceItems(const std::vector<std::pair<std::string, double>>& evidence);
+/// "mass 2 kg, half diagonal 21.2 cm, ratio 0.018x": every item, never cut; on one line by
+/// default (the HTML view), else the lines of FormatEvidenceLines joined by "\n".
 std::string FormatEvidence(const std::vector<std::pair<std::string, double>>& evidence,
-                           std::size_t max_chars = kMaxDetailChars - 14);
+                           std::size_t max_chars = std::string::npos);
+/// The evidence as whole lines of at most `max_chars` characters (JoinIntoLines of its items):
+/// text output's `  = evidence: ...` lines, one per element, never cut. The default leaves room
+/// for "  = evidence: " within kMaxDetailChars.
+std::vector<std::string> FormatEvidenceLines(
+    const std::vector<std::pair<std::string, double>>& evidence,
+    std::size_t max_chars = kMaxDetailChars - 14);
+/// `items` joined by ", " into lines of at most `max_chars` characters, in order, as many items
+/// on a line as fit; no item is ever cut: one longer than `max_chars` stands alone on its line.
+/// {} for no items. ["a", "bb", "cc"] in 6 → ["a, bb", "cc"].
+std::vector<std::string> JoinIntoLines(const std::vector<std::string>& items,
+                                       std::size_t max_chars);
+/// `text` (prose: a reader's message, a finding's reasoning) split at spaces into lines of at
+/// most `max_chars` characters, no word cut (a word longer than `max_chars` stands alone on its
+/// line); runs of spaces and newlines between words become one break or one space. {} for "".
+std::vector<std::string> WrapWords(std::string_view text, std::size_t max_chars);
 
 /// The characters of UTF-8 text (not its bytes: "·", "²" and "×" take two bytes each).
 std::size_t CountChars(std::string_view text);

@@ -118,15 +118,19 @@ ReportSummary Summarize(const std::vector<FileResult>& results);
 
 /// One line per finding, `file:line:col: severity: HEADLINE [rule-id]` (`:col` left out when the
 /// column is unknown, `:line` too when the line is; the headline whole: at most kMaxHeadlineChars
-/// characters, finding_text.h), and
-/// under it at most two lines, `  = evidence: ...` and `  = help: ...` (each at most
-/// kMaxDetailChars; finding_text.h). Findings of one rule in one file with the same help (one
-/// cause) are a group: each keeps its headline line, and the evidence (each number's range over
-/// the group) and the help are printed once, under the last. `options.brief`: headlines only;
-/// `options.explain`: no grouping, and a third line `  = why: MESSAGE`; `options.statistics`:
+/// characters, finding_text.h), and under it whole lines (never cut) of at most kMaxDetailChars
+/// characters: `  = evidence: ...` (on as many lines as its numbers need), for a finding about a
+/// welded group `  = members: ...` (its links, on as many lines as they need), and
+/// `  = help: ...` (one line, as the rule wrote it). Findings of one rule in one file with the
+/// same help (one cause) are a group, unless they are about welded groups: each keeps its
+/// headline line, and the evidence (each number's range over the group) and the help are
+/// printed once, under the last. `options.brief`: headlines only; `options.explain`: no
+/// grouping, and `  = why: MESSAGE` wrapped at spaces (its next lines indented under its text);
+/// `options.statistics`:
 /// counts per rule instead of the findings. One line per ReadError,
 /// `file:line:col: error: HEADLINE [read-error]` (ReadErrorHeadline), followed by
-/// `  = why: element: message` when the headline is shorter than that (not with `brief`), then
+/// `  = why: element: message` (wrapped alike) when the headline is shorter than that (not with
+/// `brief`), then
 /// (unless quiet) a summary line,
 /// and when some links' meshes did not resolve, one more line that says how many (and the first
 /// URI), e.g. `massprops: 12 links' meshes did not resolve or could not be read: their size is
