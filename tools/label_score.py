@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Precision and recall of `massprops check`'s warnings against hand-judged labels, per link and
 per rule, on the corpus table (the train set: testdata/labels/warnings.tsv over ../shared/corpus)
-and on ../shared/labelled/set1 and set2 (the validation set: labelled by others, never tuned on).
+on ../shared/labelled/set1 and set2 (the validation set: labelled by others, never tuned on), and
+on ../shared/labelled/set3..set5 (robots with their meshes, labelled link by link: label_links.py).
 
-Usage: tools/label_score.py [--tool BUILD/massprops] [--set corpus|labelled|all] [--list]
-                            [--extra-args "ARGS"]
+Usage: tools/label_score.py [--tool BUILD/massprops] [--set corpus,labelled,sets3-5|all] [--list]
+                            [--extra-args "ARGS"] [--work DIR] [--check FIGURES_TSV]
 
 How a set is scored (../shared/labelled/README.md): a finding of severity warning (or error, for
 the rules the labels judge: massless-moving-body, urdf-not-loadable) is judged by the rows of its
@@ -32,6 +33,8 @@ EXACT = {"inertia-not-physical", "mass-not-positive", "inertia-not-finite", "ine
 PHYSICS_ERRORS = set()  # (file, link) of every per-link inertia-not-physical error seen
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 import shared_data  # noqa: E402  (tests/shared_data.py: a missing ../shared skips, exit 77)
+sys.path.insert(0, HERE)
+import label_links  # noqa: E402  (sets 3-5, with meshes, labelled per link)
 
 CORPUS_MODEL_PATHS = ["gazebo_models", "sdformat/test/integration/model",
                       "gz-sim/test/worlds/models", "example-robot-data/robots"]
@@ -129,10 +132,12 @@ def score(name, rows, findings, listing):
     return figures
 
 
-def main():
+def parse_args():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--tool", default=os.path.join(ROOT, "build", "massprops"))
-    ap.add_argument("--set", default="all", choices=["corpus", "labelled", "all"])
+    ap.add_argument("--set", default="all",
+                    help="corpus, labelled (set1+2), sets3-5, or several joined by commas; all "
+                         "(the default): the three")
     ap.add_argument("--list", action="store_true", help="list noise and missed links")
     ap.add_argument("--extra-args", default="", help="more arguments for check")
     ap.add_argument("--check", metavar="FIGURES_TSV",
@@ -145,105 +150,127 @@ def main():
     ap.add_argument("--mesh-labels", metavar="TSV",
                     help="with --meshes: add these rows (testdata/labels/labelled-meshes-judged.tsv)")
     ap.add_argument("--shared", help="the shared folder (default: ../shared beside the checkout)")
-    args = ap.parse_args()
+    ap.add_argument("--work", help="where sets 3-5 are unpacked (default: labelled/ beside the "
+                                   "tool, in its build folder)")
+    return ap.parse_args()
+
+
+def score_corpus(tool, extra, listing):
+    rows = read_rows(os.path.join(ROOT, "testdata", "labels", "warnings.tsv"))
+    corpus = os.path.join(SHARED, "corpus")
+    with open(os.path.join(corpus, "MANIFEST.tsv"), newline="") as f:
+        files = [r["file"] for r in csv.DictReader(f, delimiter="\t")
+                 if r["format"] in ("urdf", "sdf")]
+    paths = []
+    for p in CORPUS_MODEL_PATHS:
+        paths += ["--model-path", p]
+    findings = run_check(tool, corpus, files, paths + ["--package-path", "."] + extra)
+    return score("corpus (train: testdata/labels/warnings.tsv)", rows, findings, listing)
+
+
+def score_meshes(args):
+    allrows, allfindings = [], []
+    for s in ("set1", "set2"):
+        rows = read_rows(os.path.join(SHARED, "labelled", s, "labels.tsv"))
+        for r in rows:
+            r["file"] = s + "/" + r["file"]
+        allrows += rows
+    # Our own judgement of the firings the labels (made without meshes) have no row for,
+    # from tools/labelled_mesh_evidence.py: counted only with --mesh-labels.
+    if args.mesh_labels:
+        allrows += read_rows(args.mesh_labels)
+    with open(args.meshes) as f:
+        for line in f:
+            d = json.loads(line)
+            if d["severity"] == "note" or d["rule"] in EXACT:
+                continue
+            allfindings.append((d["set"] + "/" + d["file"], d["rule"], d.get("link", ""),
+                                d.get("message", ""), d["severity"]))
+    score("labelled with meshes (validation, " + args.meshes + ")", allrows, allfindings,
+          args.list)
+
+
+def score_labelled(tool, extra, listing):
+    """Sets 1 and 2: (figures, the links whose errors differ from the oracle)."""
+    allrows, allfindings = [], []
+    oracle_mismatches = []
+    for s in ("set1", "set2"):
+        base = os.path.join(SHARED, "labelled", s)
+        PHYSICS_ERRORS.clear()
+        rows = read_rows(os.path.join(base, "labels.tsv"))
+        files = sorted(os.listdir(os.path.join(base, "files")))
+        extra_s = extra + ["--model-path", os.path.join(base, "modelpath")]
+        findings = run_check(tool, os.path.join(base, "files"), files, extra_s)
+        for r in rows:
+            r["file"] = s + "/" + r["file"]
+        allrows += rows
+        allfindings += [(s + "/" + f[0],) + tuple(f[1:]) for f in findings]
+        # Errors are physics: exactly the links the independent numpy oracle finds invalid.
+        invalid = label_links.oracle_invalid(base, files)
+        for key in sorted(invalid ^ PHYSICS_ERRORS):
+            oracle_mismatches.append(f"{s}/{key[0]} {key[1]}: " + (
+                "oracle invalid, no error" if key in invalid else "error, oracle valid"))
+        print(f"## {s} errors: {len(PHYSICS_ERRORS)} links with inertia-not-physical, "
+              f"{len(invalid)} invalid by oracle.json, {len(invalid ^ PHYSICS_ERRORS)} differ")
+    for m in oracle_mismatches:
+        print("  ORACLE", m)
+    return score("labelled (validation: ../shared/labelled set1+set2)", allrows, allfindings,
+                 listing), oracle_mismatches
+
+
+def check_floors(path, results, oracle_mismatches):
+    failures = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or line.startswith("set\t") or not line.strip():
+                continue
+            name, rule, floor_p, floor_r = line.rstrip("\n").split("\t")[:4]
+            if name not in results:
+                continue
+            got_p, got_r = results[name].get(rule, (None, None))
+            for what, floor, got in (("precision", floor_p, got_p), ("recall", floor_r, got_r)):
+                if floor == "-":
+                    continue
+                if got is None or got + 1e-9 < float(floor):
+                    failures.append(f"{name} {rule} {what}: {got} below the floor {floor}")
+    for failure in failures:
+        print("FAIL:", failure)
+    failures += ["errors differ from the oracle: " + m for m in oracle_mismatches]
+    print(f"label_score: {len(failures)} figure(s) below their floor or error(s) unlike the "
+          f"oracle")
+    sys.exit(1 if failures else 0)
+
+
+def main():
+    args = parse_args()
     global SHARED
     if args.shared:
         SHARED = os.path.abspath(args.shared)
     tool = os.path.abspath(args.tool)
     extra = args.extra_args.split()
-    shared_data.check(SHARED, (["corpus/MANIFEST.tsv"] if args.set in ("corpus", "all") else []) +
-                      (["labelled"] if args.set in ("labelled", "all") or args.meshes else []))
+    wants = {"corpus", "labelled", "sets3-5"} if args.set == "all" else set(args.set.split(","))
+    if wants - {"corpus", "labelled", "sets3-5"}:
+        sys.exit(f"label_score: --set {args.set}: corpus, labelled, sets3-5 or all")
+    shared_data.check(SHARED, (["corpus/MANIFEST.tsv"] if "corpus" in wants else []) +
+                      (["labelled"] if "labelled" in wants or args.meshes else []) +
+                      ([f"labelled/{s}/data.tar.xz" for s in label_links.SETS]
+                       if "sets3-5" in wants and not args.meshes else []))
     results = {}
-    if args.set in ("corpus", "all"):
-        rows = read_rows(os.path.join(ROOT, "testdata", "labels", "warnings.tsv"))
-        corpus = os.path.join(SHARED, "corpus")
-        with open(os.path.join(corpus, "MANIFEST.tsv"), newline="") as f:
-            files = [r["file"] for r in csv.DictReader(f, delimiter="\t")
-                     if r["format"] in ("urdf", "sdf")]
-        paths = []
-        for p in CORPUS_MODEL_PATHS:
-            paths += ["--model-path", p]
-        findings = run_check(tool, corpus, files, paths + ["--package-path", "."] + extra)
-        results["corpus"] = score("corpus (train: testdata/labels/warnings.tsv)", rows, findings,
-                                  args.list)
+    if "corpus" in wants:
+        results["corpus"] = score_corpus(tool, extra, args.list)
     if args.meshes:
-        allrows, allfindings = [], []
-        for s in ("set1", "set2"):
-            rows = read_rows(os.path.join(SHARED, "labelled", s, "labels.tsv"))
-            for r in rows:
-                r["file"] = s + "/" + r["file"]
-            allrows += rows
-        # Our own judgement of the firings the labels (made without meshes) have no row for,
-        # from tools/labelled_mesh_evidence.py: counted only with --mesh-labels.
-        if args.mesh_labels:
-            allrows += read_rows(args.mesh_labels)
-        with open(args.meshes) as f:
-            for line in f:
-                d = json.loads(line)
-                if d["severity"] == "note" or d["rule"] in EXACT:
-                    continue
-                allfindings.append((d["set"] + "/" + d["file"], d["rule"], d.get("link", ""),
-                                    d.get("message", ""), d["severity"]))
-        score("labelled with meshes (validation, " + args.meshes + ")", allrows, allfindings,
-              args.list)
+        score_meshes(args)
         return
     oracle_mismatches = []
-    if args.set in ("labelled", "all"):
-        allrows, allfindings = [], []
-        oracle_mismatches = []
-        for s in ("set1", "set2"):
-            base = os.path.join(SHARED, "labelled", s)
-            PHYSICS_ERRORS.clear()
-            rows = read_rows(os.path.join(base, "labels.tsv"))
-            files = sorted(os.listdir(os.path.join(base, "files")))
-            extra_s = extra + ["--model-path", os.path.join(base, "modelpath")]
-            findings = run_check(tool, os.path.join(base, "files"), files, extra_s)
-            for r in rows:
-                r["file"] = s + "/" + r["file"]
-            allrows += rows
-            allfindings += [(s + "/" + f[0],) + tuple(f[1:]) for f in findings]
-            # Errors are physics: exactly the links the independent numpy oracle finds invalid.
-            with open(os.path.join(base, "oracle.json")) as f:
-                oracle = json.load(f)
-            by_index = {int(name.split("_")[0]): name for name in files}
-            invalid = set()
-            for index, links in oracle.items():
-                for link in links:
-                    # tensor_ok_1e6: the triangle inequality within 1e-6 of the trace, the
-                    # tolerance of inertia-not-physical (mass is judged by other rules).
-                    ok = link.get("tensor_ok_1e6", link.get("valid") or link.get("mass_zero"))
-                    if link.get("has_inertial") and not ok:
-                        invalid.add((by_index.get(int(index), index), link["link"]))
-            for key in sorted(invalid ^ PHYSICS_ERRORS):
-                oracle_mismatches.append(f"{s}/{key[0]} {key[1]}: " + (
-                    "oracle invalid, no error" if key in invalid else "error, oracle valid"))
-            print(f"## {s} errors: {len(PHYSICS_ERRORS)} links with inertia-not-physical, "
-                  f"{len(invalid)} invalid by oracle.json, {len(invalid ^ PHYSICS_ERRORS)} differ")
-        for m in oracle_mismatches:
-            print("  ORACLE", m)
-        results["labelled"] = score("labelled (validation: ../shared/labelled set1+set2)", allrows,
-                                    allfindings, args.list)
+    if "labelled" in wants:
+        results["labelled"], oracle_mismatches = score_labelled(tool, extra, args.list)
+    if "sets3-5" in wants:
+        work = os.path.abspath(args.work or os.path.join(os.path.dirname(tool), "labelled"))
+        results["sets3-5"], mismatches = label_links.score_sets(
+            tool, SHARED, work, extra, EXACT, args.list)
+        oracle_mismatches += mismatches
     if args.check:
-        failures = []
-        with open(args.check) as f:
-            for line in f:
-                if line.startswith("#") or line.startswith("set\t") or not line.strip():
-                    continue
-                name, rule, floor_p, floor_r = line.rstrip("\n").split("\t")[:4]
-                if name not in results:
-                    continue
-                got_p, got_r = results[name].get(rule, (None, None))
-                for what, floor, got in (("precision", floor_p, got_p), ("recall", floor_r, got_r)):
-                    if floor == "-":
-                        continue
-                    if got is None or got + 1e-9 < float(floor):
-                        failures.append(f"{name} {rule} {what}: {got} below the floor {floor}")
-        for failure in failures:
-            print("FAIL:", failure)
-        if args.set in ("labelled", "all"):
-            failures += ["errors differ from the oracle: " + m for m in oracle_mismatches]
-        print(f"label_score: {len(failures)} figure(s) below their floor")
-        sys.exit(1 if failures else 0)
+        check_floors(args.check, results, oracle_mismatches)
 
 
 if __name__ == "__main__":
