@@ -38,6 +38,7 @@
 #include "massprops/analysis/density_rules.h"
 #include "massprops/analysis/fix_effect.h"
 #include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/link_measure.h"
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/mass_repair.h"
 #include "massprops/analysis/mass_report.h"

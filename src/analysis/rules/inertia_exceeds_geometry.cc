@@ -28,6 +28,7 @@
 
 #include "analysis/rules/rules.h"
 #include "massprops/analysis/finding_text.h"
+#include "massprops/analysis/link_measure.h"
 
 namespace massprops {
 namespace rules {
@@ -218,26 +219,6 @@ std::optional<EnvelopePrimitives> FindEnvelopePrimitives(const JudgedLink& judge
   if (found.shapes.empty()) return std::nullopt;
   found.points.count = found.points.corners_B.size();
   return found;
-}
-
-// Half the width of a primitive (AddPrimitiveCorners accepted it) along the unit direction v of
-// its own frame: its support function, max over its points x of v·(x − its center). Exact for
-// each shape: a cylinder reaches L/2 along its axis and r across it, not to its box's corners.
-double HalfWidthAlong(const Geometry& g, const Eigen::Vector3d& v) {
-  switch (g.type) {
-    case Geometry::Type::kBox:
-      return 0.5 * v.cwiseAbs().dot(g.size);
-    case Geometry::Type::kCylinder:
-      return g.radius * std::hypot(v.x(), v.y()) + 0.5 * g.length * std::abs(v.z());
-    case Geometry::Type::kCapsule:
-      return g.radius * v.norm() + 0.5 * g.length * std::abs(v.z());
-    case Geometry::Type::kSphere:
-      return g.radius * v.norm();
-    case Geometry::Type::kEllipsoid:
-      return v.cwiseProduct(g.radii).norm();
-    default:
-      return 0;
-  }
 }
 
 // The direction u along which the inertia spreads the mass farthest beyond what the primitives
