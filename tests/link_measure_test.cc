@@ -28,9 +28,8 @@ MeshLink MakeMeshLink(const std::vector<Eigen::Vector3d>& positions) {
   g.type = Geometry::Type::kMesh;
   g.uri = "cloud.stl";
   made.link.geometries.push_back(g);
-  made.points.posed.push_back(
-      {std::make_shared<const std::vector<Eigen::Vector3d>>(positions), Eigen::Vector3d::Ones(),
-       Pose()});
+  made.points.posed.push_back({std::make_shared<const std::vector<Eigen::Vector3d>>(positions),
+                               Eigen::Vector3d::Ones(), Pose()});
   made.points.count = positions.size();
   made.points.meshes = 1;
   return made;

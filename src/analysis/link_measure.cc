@@ -132,7 +132,8 @@ bool EnclosingEllipsoid(const std::vector<Eigen::Vector3d>& points, Eigen::Vecto
   Eigen::Matrix3d inverse = ldlt.solve(Eigen::Matrix3d::Identity());
   inverse = 0.5 * (inverse + inverse.transpose());
   double grow = 1;
-  for (const Eigen::Vector3d& p : points) grow = std::max(grow, (p - center).dot(inverse * (p - center)));
+  for (const Eigen::Vector3d& p : points)
+    grow = std::max(grow, (p - center).dot(inverse * (p - center)));
   *x0 = center;
   *Q_inverse = inverse / (grow * (1 + 1e-12));
   return Q_inverse->allFinite();
@@ -224,8 +225,9 @@ LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints
     // The meshes' hull vertices: those of the hull that are no primitive's corner (a corner of
     // a primitive's box lies outside a round primitive; its exact support is used instead).
     for (const Eigen::Vector3d& v : vertices) {
-      const bool corner = std::find(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(corners),
-                                    v) != cloud.begin() + static_cast<std::ptrdiff_t>(corners);
+      const bool corner =
+          std::find(cloud.begin(), cloud.begin() + static_cast<std::ptrdiff_t>(corners), v) !=
+          cloud.begin() + static_cast<std::ptrdiff_t>(corners);
       if (!corner) measure.mesh_vertices_B.push_back(v);
     }
   }
@@ -245,8 +247,7 @@ DirectionBound WorstDirection(const LinkMeasure& measure, double m, const Eigen:
   for (const Geometry* g : measure.primitives) {
     for (int i = 0; i < 3; ++i) directions.emplace_back(g->X_BG.R_AB.col(i).normalized());
   }
-  directions.insert(directions.end(), measure.face_normals_B.begin(),
-                    measure.face_normals_B.end());
+  directions.insert(directions.end(), measure.face_normals_B.begin(), measure.face_normals_B.end());
   directions.insert(directions.end(), SphereDirections().begin(), SphereDirections().end());
   DirectionBound worst;
   for (Eigen::Vector3d u : directions) {
@@ -264,8 +265,14 @@ DirectionBound WorstDirection(const LinkMeasure& measure, double m, const Eigen:
     const double bound = m * ahead * behind;
     const double ratio = second_moment / bound;
     if (ratio > worst.ratio) {
-      worst = {ratio,  second_moment, bound, ahead, behind, support_ahead - u.dot(c),
-               u.dot(c) + support_behind, u};
+      worst = {ratio,
+               second_moment,
+               bound,
+               ahead,
+               behind,
+               support_ahead - u.dot(c),
+               u.dot(c) + support_behind,
+               u};
     }
   }
   return worst;

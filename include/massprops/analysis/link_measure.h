@@ -1,11 +1,12 @@
 #pragma once
 /// @file
-/// One measurement of a link's geometry as placed, made once per link and read by the geometry
-/// rules (issue 49): the convex hull K of every geometry of the link (collision and visual,
+/// One measurement of a link's geometry as placed, for the geometry rules (issue 49): the
+/// convex hull K of every geometry of the link (collision and visual,
 /// primitives and meshes, in the link frame), its support function h_K, its face normals, its
 /// volume and the minimum-volume ellipsoid that encloses it; and the bounds that a non-negative
 /// density inside K puts on a mass m, center of mass c and second-moment matrix
-/// Σ = ∫(x − c)(x − c)ᵀ dm = ½·tr(I_c)·1 − I_c (docs/rules.md, "Density realizability").
+/// Σ = ∫(x − c)(x − c)ᵀ dm = ½·tr(I_c)·1 − I_c. Each bound is a necessary condition (any
+/// density inside K meets it: tests/link_measure_test.cc).
 
 #include <Eigen/Core>
 #include <optional>
@@ -54,9 +55,9 @@ LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints
 /// The direction along which a second-moment matrix most exceeds the Bhatia–Davis bound
 /// uᵀΣu <= m·(h(u) − u·c)·(u·c + h(−u)) of a body K grown `scale` times about its box's center.
 struct DirectionBound {
-  double ratio = 0;          // uᵀΣu over the bound (infinite when the bound is 0 or less)
-  double second_moment = 0;  // uᵀΣu (kg·m²)
-  double bound = 0;          // m·(h(u) − u·c)·(u·c + h(−u)) (kg·m²)
+  double ratio = 0;              // uᵀΣu over the bound (infinite when the bound is 0 or less)
+  double second_moment = 0;      // uᵀΣu (kg·m²)
+  double bound = 0;              // m·(h(u) − u·c)·(u·c + h(−u)) (kg·m²)
   double ahead = 0, behind = 0;  // h(u) − u·c and u·c + h(−u) of the grown body (metres)
   /// The same distances in K itself (not grown): where the COM sits between its faces.
   double ahead_in_K = 0, behind_in_K = 0;
