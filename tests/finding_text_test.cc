@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "massprops/analysis/fix_text.h"
+
 namespace massprops {
 namespace {
 
@@ -93,7 +95,7 @@ TEST(FindingTextTest, ListsAreJoinedIntoWholeLinesCountedInCharacters) {
 
 TEST(FindingTextTest, ProseIsWrappedAtSpacesWithoutCuttingAWord) {
   // "the mass" is 8; " is" would make 11 > 10.
-  EXPECT_EQ(WrapWords("the mass is  zero\nhere", 10),
+  EXPECT_EQ(WrapWords("the mass is  zero here", 10),
             (std::vector<std::string>{"the mass", "is zero", "here"}));
   EXPECT_EQ(WrapWords("a verylongword b", 5), (std::vector<std::string>{"a", "verylongword", "b"}));
   EXPECT_EQ(WrapWords("kg·m² kg·m²", 11), (std::vector<std::string>{"kg·m² kg·m²"}));

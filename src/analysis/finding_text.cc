@@ -243,29 +243,6 @@ std::vector<std::string> JoinIntoLines(const std::vector<std::string>& items,
   return lines;
 }
 
-std::vector<std::string> WrapWords(std::string_view text, std::size_t max_chars) {
-  auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-  std::vector<std::string> lines;
-  std::size_t chars = 0, i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && is_space(text[i])) ++i;
-    std::size_t end = i;
-    while (end < text.size() && !is_space(text[end])) ++end;
-    if (end == i) break;
-    const std::string_view word = text.substr(i, end - i);
-    const std::size_t word_chars = CountChars(word);
-    if (!lines.empty() && chars + 1 + word_chars <= max_chars) {
-      lines.back().append(" ").append(word);
-      chars += 1 + word_chars;
-    } else {
-      lines.emplace_back(word);
-      chars = word_chars;
-    }
-    i = end;
-  }
-  return lines;
-}
-
 std::size_t CountChars(std::string_view text) {
   return static_cast<std::size_t>(
       std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "massprops/analysis/finding_text.h"
+#include "massprops/analysis/fix_text.h"
 
 namespace massprops {
 namespace {
@@ -352,8 +353,9 @@ std::string LabelledLines(const std::string& label, const std::vector<std::strin
 std::string WhyLines(const std::string& text, bool color) {
   const std::string first = "  = why: ", next(CountChars(first), ' ');
   std::string out;
-  for (const std::string& line :
-       WrapWords(ShortenLongWords(text), kMaxDetailChars - CountChars(first))) {
+  std::string prose = ShortenLongWords(text);
+  std::replace(prose.begin(), prose.end(), '\n', ' ');
+  for (const std::string& line : WrapWords(prose, kMaxDetailChars - CountChars(first))) {
     out += (color ? std::string(kDim) : "") + (out.empty() ? first : next) + line +
            (color ? std::string(kReset) : "") + "\n";
   }

@@ -66,10 +66,6 @@ std::vector<std::string> FormatEvidenceLines(
 /// {} for no items. ["a", "bb", "cc"] in 6 → ["a, bb", "cc"].
 std::vector<std::string> JoinIntoLines(const std::vector<std::string>& items,
                                        std::size_t max_chars);
-/// `text` (prose: a reader's message, a finding's reasoning) split at spaces into lines of at
-/// most `max_chars` characters, no word cut (a word longer than `max_chars` stands alone on its
-/// line); runs of spaces and newlines between words become one break or one space. {} for "".
-std::vector<std::string> WrapWords(std::string_view text, std::size_t max_chars);
 
 /// The characters of UTF-8 text (not its bytes: "·", "²" and "×" take two bytes each).
 std::size_t CountChars(std::string_view text);
