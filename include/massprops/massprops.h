@@ -2,9 +2,9 @@
 /// @file
 /// Everything of the massprops library in one include. The parts, from the bottom up
 /// (docs/architecture.md): core (inertia classes and solvers), model (what a reader produces),
-/// mesh (triangle meshes), io (readers), analysis (welded groups, checks, repairs, targets,
-/// report numbers), output (renderings, the patcher, merge-fixed). Include a part's header
-/// directly to depend on less.
+/// mesh (triangle meshes), io (readers), dynamics (inverse dynamics and its regressor),
+/// analysis (welded groups, checks, repairs, targets, report numbers), output (renderings, the
+/// patcher, merge-fixed). Include a part's header directly to depend on less.
 
 // core
 #include "massprops/core/eigen_types.h"
@@ -28,8 +28,14 @@
 #include "massprops/io/mjcf_reader.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
+#include "massprops/io/trajectory_csv.h"
 #include "massprops/io/urdf_reader.h"
 #include "massprops/io/xacro_trace.h"
+
+// dynamics
+#include "massprops/dynamics/inverse_dynamics.h"
+#include "massprops/dynamics/kinematic_tree.h"
+#include "massprops/dynamics/torque_regressor.h"
 
 // analysis
 #include "massprops/analysis/checks.h"
@@ -38,6 +44,7 @@
 #include "massprops/analysis/density_rules.h"
 #include "massprops/analysis/fix_effect.h"
 #include "massprops/analysis/geometry_checks.h"
+#include "massprops/analysis/identifiability.h"
 #include "massprops/analysis/link_measure.h"
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/mass_repair.h"
