@@ -3,9 +3,10 @@
 // iteration computes one sample from a pool of 1 024 random states (q, q̇, q̈ uniform in ±2 rad,
 // ±2 rad/s, ±6 rad/s²), so the numbers are per sample:
 //   BM_InverseDynamics     τ by CalcInverseDynamics (friction terms of the tree, all zero);
-//   BM_TorqueRegressor     Y (7 × 91: inertial, friction and armature columns) written into a
+//   BM_TorqueRegressor     Y (7 × 98: 70 inertial, 21 friction and 7 armature columns) written into
+//   a
 //                          preallocated matrix, as a stacked regressor is filled.
-// What it measured is in docs/benchmarks.md (section 11), with the command.
+// What it measured is in docs/benchmarks.md (section 12), with the command.
 #include <benchmark/benchmark.h>
 
 #include <random>
