@@ -73,7 +73,9 @@ std::size_t Chars(const std::string& s) {
 void ExpectLinesAtAGlance(const std::string& text) {
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line[0] == ' ') EXPECT_LE(Chars(line), 100u) << line;
+    if (!line.empty() && line[0] == ' ') {
+      EXPECT_LE(Chars(line), 100u) << line;
+    }
     EXPECT_EQ(line.find("…"), std::string::npos) << line;
   }
 }

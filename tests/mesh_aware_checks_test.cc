@@ -375,7 +375,7 @@ TEST(MeshAwareChecksTest, FixFromGeometrySaysWhyANamedLinkIsLeftAlone) {
               true);
   EXPECT_EQ(found.exit_code, 0) << found.output;
   EXPECT_NE(found.output.find("link 'visual_only' [--from-geometry → from-geometry-density]: new "
-                              "<inertial>: mass 8000"),
+                              "<inertial>\n  mass 8000"),
             std::string::npos)
       << found.output;
 }

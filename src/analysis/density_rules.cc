@@ -166,8 +166,7 @@ std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, S
                 {"density_kg_m3", rho},
                 {"mass_if_steel_kg", kSteelDensity * d.volume}};
   f.help =
-      "write the weighed mass, or massprops fix --material LINK=NAME (massprops explain "
-      "density-implausible)";
+      "write the weighed mass, or run massprops fix --material LINK=NAME";
   return f;
 }
 
@@ -212,8 +211,7 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
                      (mesh_in_mm ? "mesh in mm without scale?" : "placeholder mass?") + ")");
   f.evidence = {{"mass_kg", d.mass}, {"volume_m3", d.volume}, {"density_kg_m3", rho}};
   f.help =
-      "write the weighed mass, or massprops fix --material LINK=NAME (massprops explain "
-      "density-implausible)";
+      "write the weighed mass, or run massprops fix --material LINK=NAME";
   return f;
 }
 

@@ -281,11 +281,11 @@ void ReportMirrorMismatch(RuleContext& ctx, const Mismatch& m) {
            {{"com_off_mirror_image_m", m.com_miss},
             {"products_off_mirror_image_percent", 100 * m.products_miss},
             {"mirror_plane_offset_m", m.offset}},
-           m.com_bad ? "write " + Vec(expected) +
-                           " in the model frame: the mirror image of the COM of '" + good.name +
-                           "' across " + std::string(1, axis_name) + " = " + FormatLength(m.offset)
-                     : "write on '" + bad.name + "' the products of '" + good.name +
-                           "', negated where the mirror plane flips them");
+           m.com_bad ? "write " + Vec(expected) + " (model frame): the COM of '" + good.name +
+                           "' mirrored across " + std::string(1, axis_name) + " = " +
+                           FormatLength(m.offset)
+                     : "write the products of '" + good.name +
+                           "' here, negated where the mirror plane flips them");
 }
 
 // Two links that draw the same mesh files at the same handedness are one part placed twice (a

@@ -172,8 +172,8 @@ void ReportCopies(RuleContext& ctx, const std::vector<int>& copies, bool typed_i
               {"ratio", ratio},
               {"mass_kg", in.mass},
               {"copies_count", static_cast<double>(copies.size())}},
-             "give each of " + names +
-                 " the inertia of its own part (or zero mass and inertia if it is only a frame)");
+             "give each of the " + std::to_string(copies.size()) +
+                 " links its own part's inertia (zero mass and inertia if only a frame)");
     if (ctx.findings.size() > before) flagged->insert(link.name);
   }
 }
