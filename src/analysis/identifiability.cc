@@ -61,8 +61,12 @@ Identifiability AnalyzeIdentifiability(const Eigen::MatrixXd& W,
   const Eigen::VectorXi& pivot = qr.colsPermutation().indices();
   // K = R11⁻¹·R12: how each dependent column is made of the base ones.
   const Eigen::MatrixXd R11 = QR.topLeftCorner(r, r).triangularView<Eigen::Upper>();
-  const Eigen::MatrixXd K =
-      QR.topLeftCorner(r, r).triangularView<Eigen::Upper>().solve(QR.topRightCorner(r, p - r));
+  // (Not solved when either side is empty: Eigen's triangular solve reads a coefficient of an
+  // empty right-hand side, undefined behaviour that UBSan reports.)
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(r, p - r);
+  if (r > 0 && p - r > 0) {
+    K = QR.topLeftCorner(r, r).triangularView<Eigen::Upper>().solve(QR.topRightCorner(r, p - r));
+  }
   out.base_from_full = Eigen::MatrixXd::Zero(r, p);
   for (Eigen::Index i = 0; i < r; ++i) {
     BaseParameter base;

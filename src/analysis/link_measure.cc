@@ -80,8 +80,9 @@ bool Hull(const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3
   *volume = std::abs(six_volume) / 6;
   std::sort(faces.begin(), faces.end(),
             [](const auto& x, const auto& y) { return x.first > y.first; });
-  for (const auto& [area, normal] : faces) {
-    (void)area;
+  for (const auto& face : faces) {
+    // Named, not a structured binding: a C++17 lambda cannot capture one (clang rejects it).
+    const Eigen::Vector3d& normal = face.second;
     if (normals->size() >= static_cast<std::size_t>(kMaxFaceNormals)) break;
     const bool seen = std::any_of(normals->begin(), normals->end(), [&](const Eigen::Vector3d& v) {
       return v.dot(normal) > 1 - 1e-9;
