@@ -62,8 +62,7 @@ TEST(CheckStatsTest, InertiaExceedsModelMeasuresTheModelOnlyWhenOn) {
   EXPECT_GT(on.model_reach_distances, 0u);
 
   CheckStats off;
-  const std::vector<Finding> without =
-      CheckModel(model, Off("inertia-exceeds-model"), &off);
+  const std::vector<Finding> without = CheckModel(model, Off("inertia-exceeds-model"), &off);
   EXPECT_TRUE(Select(without, "inertia-exceeds-model").empty());
   EXPECT_EQ(off.model_extents, 0u);
   EXPECT_EQ(off.model_reach_measurements, 0u);

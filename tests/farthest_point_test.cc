@@ -66,8 +66,8 @@ TEST(FarthestPointIndexTest, GivesTheScansDistanceBitForBit) {
 TEST(FarthestPointIndexTest, NotFinitePointsOrCentersAreTheScan) {
   const double inf = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<Eigen::Vector3d> points = {
-      Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d(0, 2, 0)};
+  const std::vector<Eigen::Vector3d> points = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(nan, 0, 0),
+                                               Eigen::Vector3d(0, 2, 0)};
   const FarthestPointIndex index(points);
   // std::max skips the NaN distance: the scan's 2, from (0, 2, 0).
   EXPECT_EQ(index.MaxDistance(Eigen::Vector3d::Zero()), 2.0);

@@ -260,7 +260,8 @@ TEST(SubmeshTest, AMissingNameOrABadCenterIsAWarningAndTheWholeFile) {
 }
 
 TEST(SubmeshTest, CheckWarnsAtTheSubmeshAndCountsNoUnresolvedMesh) {
-  const test_support::ToolRun run = test_support::RunTool("check --explain --no-cache '" + kSdf + "'");
+  const test_support::ToolRun run =
+      test_support::RunTool("check --explain --no-cache '" + kSdf + "'");
   // unknown_part's <submesh> is line 190 of the fixture.
   EXPECT_NE(run.output.find("submesh.sdf:190: warning: "), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("no submesh 'n-prop'"), std::string::npos) << run.output;

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "analysis/rule_severity.h"
-#include "analysis/rules/rule_context.h"
 #include "analysis/rules/model_rules.h"
+#include "analysis/rules/rule_context.h"
 #include "analysis/rules/rules.h"
 #include "massprops/analysis/check_stats.h"
 #include "massprops/analysis/density_rules.h"

@@ -165,8 +165,7 @@ std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, S
                 {"volume_m3", d.volume},
                 {"density_kg_m3", rho},
                 {"mass_if_steel_kg", kSteelDensity * d.volume}};
-  f.help =
-      "write the weighed mass, or run massprops fix --material LINK=NAME";
+  f.help = "write the weighed mass, or run massprops fix --material LINK=NAME";
   return f;
 }
 
@@ -210,8 +209,7 @@ std::optional<Finding> CheckDensity(const Model& model, const LinkDensity& d, Se
                      " kg/m³ over its closed mesh, lighter than foam (" +
                      (mesh_in_mm ? "mesh in mm without scale?" : "placeholder mass?") + ")");
   f.evidence = {{"mass_kg", d.mass}, {"volume_m3", d.volume}, {"density_kg_m3", rho}};
-  f.help =
-      "write the weighed mass, or run massprops fix --material LINK=NAME";
+  f.help = "write the weighed mass, or run massprops fix --material LINK=NAME";
   return f;
 }
 

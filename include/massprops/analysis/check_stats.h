@@ -31,7 +31,6 @@ struct CheckStats {
 
 /// CheckModel(model, options), and what it measured in `*stats` (set, not added to; nullptr:
 /// not reported).
-std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options,
-                                CheckStats* stats);
+std::vector<Finding> CheckModel(const Model& model, const CheckOptions& options, CheckStats* stats);
 
 }  // namespace massprops

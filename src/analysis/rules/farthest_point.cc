@@ -46,10 +46,9 @@ int FarthestPointIndex::Build(int begin, int end) {
   int axis = 0;
   box.sizes().maxCoeff(&axis);
   const int middle = begin + (end - begin) / 2;
-  std::nth_element(points_.begin() + begin, points_.begin() + middle, points_.begin() + end,
-                   [axis](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-                     return a(axis) < b(axis);
-                   });
+  std::nth_element(
+      points_.begin() + begin, points_.begin() + middle, points_.begin() + end,
+      [axis](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a(axis) < b(axis); });
   const int left = Build(begin, middle);
   const int right = Build(middle, end);
   nodes_[index].left = left;

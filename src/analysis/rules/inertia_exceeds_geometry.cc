@@ -313,61 +313,62 @@ namespace {
 void EmitSpread(RuleContext& ctx, const JudgedLink& judged, const std::string& geometry,
                 const WorstSpread& worst) {
   const Link& link = *judged.link;
-  ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
-           judged.who + ": along the direction " + Vec(worst.axis) +
-               " the inertia spreads the mass by ∫(u·(x - c))² dm = tr(I)/2 - uᵀIu = " +
-               Num(worst.second_moment) + " kg·m² about the center of mass " +
-               Vec(judged.props.p_FoScm_F) + ", but the " + geometry +
-               " primitives as placed are " + Num(worst.width) +
-               " m wide along it, so a body inside them has at most m · (farthest point from "
-               "the center of mass along it)² = " +
-               Num(worst.bound) + " kg·m² (ratio " + Num(worst.ratio) + ", allowed " +
-               Num(kPrimitiveSpreadSlack) +
-               " for simplified geometry: a typed-in placeholder, such as the same moment on "
-               "every axis of a wheel or caster)",
-           {{"second_moment", worst.second_moment},
-            {"width_bound", worst.bound},
-            {"ratio", worst.ratio}},
-           LinkHeadline(link.name, ": inertia " + FormatRatio(worst.ratio) +
-                                       " too spread along its " + FormatLength(worst.width) +
-                                       " width (typed-in placeholder?)"),
-           {{"second_moment_kg_m2", worst.second_moment},
-            {"max_for_its_width_kg_m2", worst.bound},
-            {"ratio", worst.ratio},
-            {"width_m", worst.width},
-            {"axis_x", worst.axis.x()},
-            {"axis_y", worst.axis.y()},
-            {"axis_z", worst.axis.z()}},
-           "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
+  ctx.Emit(
+      kInertiaExceedsGeometry, link, InertiaLocation(link),
+      judged.who + ": along the direction " + Vec(worst.axis) +
+          " the inertia spreads the mass by ∫(u·(x - c))² dm = tr(I)/2 - uᵀIu = " +
+          Num(worst.second_moment) + " kg·m² about the center of mass " +
+          Vec(judged.props.p_FoScm_F) + ", but the " + geometry + " primitives as placed are " +
+          Num(worst.width) +
+          " m wide along it, so a body inside them has at most m · (farthest point from "
+          "the center of mass along it)² = " +
+          Num(worst.bound) + " kg·m² (ratio " + Num(worst.ratio) + ", allowed " +
+          Num(kPrimitiveSpreadSlack) +
+          " for simplified geometry: a typed-in placeholder, such as the same moment on "
+          "every axis of a wheel or caster)",
+      {{"second_moment", worst.second_moment},
+       {"width_bound", worst.bound},
+       {"ratio", worst.ratio}},
+      LinkHeadline(link.name, ": inertia " + FormatRatio(worst.ratio) + " too spread along its " +
+                                  FormatLength(worst.width) + " width (typed-in placeholder?)"),
+      {{"second_moment_kg_m2", worst.second_moment},
+       {"max_for_its_width_kg_m2", worst.bound},
+       {"ratio", worst.ratio},
+       {"width_m", worst.width},
+       {"axis_x", worst.axis.x()},
+       {"axis_y", worst.axis.y()},
+       {"axis_z", worst.axis.z()}},
+      "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
 }
 
 void EmitAxisMoment(RuleContext& ctx, const JudgedLink& judged, const std::string& geometry,
                     const WorstAxis& worst, bool turned, double allowed) {
   const Link& link = *judged.link;
-  ctx.Emit(kInertiaExceedsGeometry, link, InertiaLocation(link),
-           judged.who + ": about the axis " + Vec(worst.axis) + " through the center of mass " +
-               Vec(judged.props.p_FoScm_F) + " the moment of inertia is " + Num(worst.moment) +
-               " kg·m², but a body inside the " + geometry +
-               " primitives as placed (their origins' rotations applied) has at most m · "
-               "(farthest corner from that axis)² = " +
-               Num(worst.bound) + " kg·m² about it (ratio " + Num(worst.ratio) + ", allowed " +
-               Num(allowed) +
-               (turned ? ": the moments together fit the part, so the mass sits about the wrong "
-                         "axis: an inertia written for the part before it was turned)"
-                       : " for simplified geometry: an inertia for a larger part, or typed in)"),
-           {{"moment", worst.moment}, {"axis_bound", worst.bound}, {"ratio", worst.ratio}},
-           LinkHeadline(link.name, ": axis moment " + FormatRatio(worst.ratio) + " what its " +
-                                       geometry + " allows" +
-                                       (turned ? " (tensor not rotated?)" : " (typed-in inertia?)")),
-           {{"moment_kg_m2", worst.moment},
-            {"axis_bound_kg_m2", worst.bound},
-            {"ratio", worst.ratio},
-            {"axis_x", worst.axis.x()},
-            {"axis_y", worst.axis.y()},
-            {"axis_z", worst.axis.z()}},
-           turned ? "rotate the inertia as the geometry is placed (R·I·Rᵀ), or massprops fix "
-                    "--from-geometry"
-                  : "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
+  ctx.Emit(
+      kInertiaExceedsGeometry, link, InertiaLocation(link),
+      judged.who + ": about the axis " + Vec(worst.axis) + " through the center of mass " +
+          Vec(judged.props.p_FoScm_F) + " the moment of inertia is " + Num(worst.moment) +
+          " kg·m², but a body inside the " + geometry +
+          " primitives as placed (their origins' rotations applied) has at most m · "
+          "(farthest corner from that axis)² = " +
+          Num(worst.bound) + " kg·m² about it (ratio " + Num(worst.ratio) + ", allowed " +
+          Num(allowed) +
+          (turned ? ": the moments together fit the part, so the mass sits about the wrong "
+                    "axis: an inertia written for the part before it was turned)"
+                  : " for simplified geometry: an inertia for a larger part, or typed in)"),
+      {{"moment", worst.moment}, {"axis_bound", worst.bound}, {"ratio", worst.ratio}},
+      LinkHeadline(link.name, ": axis moment " + FormatRatio(worst.ratio) + " what its " +
+                                  geometry + " allows" +
+                                  (turned ? " (tensor not rotated?)" : " (typed-in inertia?)")),
+      {{"moment_kg_m2", worst.moment},
+       {"axis_bound_kg_m2", worst.bound},
+       {"ratio", worst.ratio},
+       {"axis_x", worst.axis.x()},
+       {"axis_y", worst.axis.y()},
+       {"axis_z", worst.axis.z()}},
+      turned ? "rotate the inertia as the geometry is placed (R·I·Rᵀ), or massprops fix "
+               "--from-geometry"
+             : "recompute the inertia for this part (from CAD, or massprops fix --from-geometry)");
 }
 
 // Whether the link belongs to the world: its welded group does not move and holds a URDF root

@@ -84,7 +84,8 @@ std::vector<std::vector<Eigen::Vector3d>> ModelCorners(const RuleContext& ctx,
     }
     const Pose& X_WL = poses.X_WL[l];
     for (int corner = 0; corner < 8; ++corner) {
-      const Eigen::Vector3d p = b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+      const Eigen::Vector3d p =
+          b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
       corners[root].push_back(X_WL.p_AB + X_WL.R_AB * p);
     }
   }
@@ -147,23 +148,21 @@ void CheckInertiaWithinModel(RuleContext& ctx) {
     const double k = std::sqrt(trace / (2 * m));
     if (!(reach > 0) || !(k > kModelRatio * reach)) continue;
     const double ratio = k / reach;
-    ctx.Emit(kInertiaExceedsModel, link, InertiaLocation(link),
-             "link '" + link.name + "': its radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) +
-                 " m is " + Num(ratio) + " times the " + Num(reach) +
-                 " m from its center of mass to the farthest point of the whole model's geometry "
-                 "(every link's, at the zero configuration): a body inside the model has "
-                 "tr(I)/2 = ∫|x - c|² dm <= m·" +
-                 Num(reach) + "², so k <= " + Num(reach) + " m (reported beyond " +
-                 Num(kModelRatio) + " times, for a model drawn smaller than the machine)",
-             {{"radius_of_gyration", k}, {"model_reach", reach}, {"ratio", ratio}, {"mass", m}},
-             LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) + ", " +
-                                         FormatRatio(ratio) + " the whole model's reach of " +
-                                         FormatLength(reach)),
-             {{"radius_of_gyration_m", k},
-              {"model_reach_m", reach},
-              {"ratio", ratio},
-              {"mass_kg", m}},
-             "recompute the part's inertia (from CAD, or massprops fix --from-geometry)");
+    ctx.Emit(
+        kInertiaExceedsModel, link, InertiaLocation(link),
+        "link '" + link.name + "': its radius of gyration sqrt(tr(I)/(2m)) = " + Num(k) + " m is " +
+            Num(ratio) + " times the " + Num(reach) +
+            " m from its center of mass to the farthest point of the whole model's geometry "
+            "(every link's, at the zero configuration): a body inside the model has "
+            "tr(I)/2 = ∫|x - c|² dm <= m·" +
+            Num(reach) + "², so k <= " + Num(reach) + " m (reported beyond " + Num(kModelRatio) +
+            " times, for a model drawn smaller than the machine)",
+        {{"radius_of_gyration", k}, {"model_reach", reach}, {"ratio", ratio}, {"mass", m}},
+        LinkHeadline(link.name, ": radius of gyration " + FormatLength(k) + ", " +
+                                    FormatRatio(ratio) + " the whole model's reach of " +
+                                    FormatLength(reach)),
+        {{"radius_of_gyration_m", k}, {"model_reach_m", reach}, {"ratio", ratio}, {"mass_kg", m}},
+        "recompute the part's inertia (from CAD, or massprops fix --from-geometry)");
   }
 }
 
