@@ -14,6 +14,19 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=$(nproc)
 
+# The wall time of each phase, printed as the last line (also when a phase fails), so that a CI
+# log's tail says where its time went (docs/development.md, "CI time").
+phases=()
+phase_start=$SECONDS
+phase_done() {
+  phases+=("$1 $((SECONDS - phase_start)) s")
+  phase_start=$SECONDS
+}
+print_phases() {
+  local IFS=,
+  echo "tools/test.sh: wall time by phase: ${phases[*]:-none}; total $SECONDS s"
+}
+
 # The Release builds (build/, the .deb's, the colcon workspace's) compile the same sources with the
 # same flags: through ccache (tools/setup.sh installs it), the first compiles them and the others
 # hit. A cache of the checkout's own unless CCACHE_DIR names one (docs/development.md, "CI time").
@@ -24,6 +37,7 @@ export CCACHE_DIR=${CCACHE_DIR:-$here/build-ccache}
 release_args=(-DMASSPROPS_WERROR=ON -DMASSPROPS_PCH=OFF)
 BUILD_DIR="$here/build" "$here/tools/setup.sh" "${release_args[@]}" -DMASSPROPS_BUILD_TESTS=ON \
   -DMASSPROPS_BUILD_BENCH=ON
+phase_done "Release build"
 
 # One clang-14 tree for both sanitizer passes: the tests under ASan + UBSan, and the libFuzzer
 # targets (MASSPROPS_FUZZ=ON instruments everything for coverage too; only the fuzz targets link
@@ -43,8 +57,8 @@ if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
     -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_FUZZ=ON \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" >"$asan/build.log" 2>&1 &
   asan_pid=$!
-  trap '[[ -z $asan_pid ]] || kill -- -"$asan_pid" 2>/dev/null || true' EXIT
 fi
+trap 'print_phases; [[ -z $asan_pid ]] || kill -- -"$asan_pid" 2>/dev/null || true' EXIT
 
 # Each ctest pass writes its results as JUnit, whose skipped tests are counted at the end.
 junit=("$here/build/Testing/test-sh.xml")
@@ -61,11 +75,13 @@ shared_skips() {
 }
 
 (cd "$here/build" && ctest --output-on-failure -j "$jobs" --output-junit "${junit[0]}")
+phase_done "Release ctest"
 
 # As users install it (docs/install.md): the .deb built, judged by lintian and run from its files
 # only, with the GitHub Action's script on it; a ROS 2 workspace built by colcon.
 bash "$here/tools/package_test.sh" "${release_args[@]}"
 bash "$here/tools/colcon_test.sh" "${release_args[@]}"
+phase_done ".deb + colcon"
 
 if [[ -n ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   shared_skips
@@ -79,13 +95,17 @@ if ! wait "$asan_pid"; then
   exit 1
 fi
 asan_pid=
+phase_done "sanitizer build (after the Release pass)"
 junit+=("$asan/Testing/test-sh.xml")
 (cd "$asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    LSAN_OPTIONS=suppressions="$here/tools/lsan.supp" \
-   ctest --output-on-failure -j "$jobs" -LE 'lint|sdformat' --output-junit "${junit[1]}")
-# Left out here, run in the Release pass: the lint, and the comparisons with libsdformat (label
+   ctest --output-on-failure -j "$jobs" -LE 'lint|sdformat|sweep' --output-junit "${junit[1]}")
+phase_done "sanitizer ctest"
+# Left out here, run in the Release pass: the lint; the comparisons with libsdformat (label
 # sdformat), whose time goes to libsdformat's own allocations through ASan's allocator (61-80 s
-# each); the same corpus goes through our readers here in corpus_sdf_test and the CLI tests.
+# each; the same corpus goes through our readers here in corpus_sdf_test and the CLI tests); and
+# the sweeps of the CLI over every labelled or corpus file for a figure or a message form (label
+# sweep, 95 and 164 s here), whose code paths corpus_fix_test, the CLI tests and the fuzzers take.
 
 # A short fuzz run, $jobs targets at a time: any crash, sanitizer report or broken invariant fails
 # the run (the input is left in build-asan/artifacts/TARGET/; keep it in
@@ -106,6 +126,7 @@ for target in urdf sdf mjcf fix inertia; do
   running[$!]=$target
 done
 while ((${#running[@]} > 0)); do finish_one; done
+phase_done "fuzz"
 if ((${#failed[@]} > 0)); then
   echo "tools/test.sh: fuzz target(s) failed: ${failed[*]} (inputs in build-asan/artifacts/)" >&2
   exit 1

@@ -42,8 +42,10 @@ constexpr double kModelRatio = 1.5;
 
 // The links whose inertia a finding already says is too large: one finding per defect. Taken
 // once, before this rule emits (an index, not a scan of the findings per link).
-std::unordered_set<std::string_view> AlreadyTooLarge(const RuleContext& ctx) {
-  std::unordered_set<std::string_view> links;
+// Names are copied: the findings vector grows while this rule emits, and a view into a moved
+// short string would dangle.
+std::unordered_set<std::string> AlreadyTooLarge(const RuleContext& ctx) {
+  std::unordered_set<std::string> links;
   for (const Finding& f : ctx.findings) {
     if (f.rule == "units-suspect" || f.rule == "inertia-exceeds-geometry" ||
         f.rule == "inertia-about-origin-suspect" || f.rule == "inertia-not-physical") {
@@ -128,7 +130,7 @@ void CheckInertiaWithinModel(RuleContext& ctx) {
     model_geometry.emplace_back(std::move(corners[r]));
     ++ctx.stats.model_extents;
   }
-  const std::unordered_set<std::string_view> already_too_large = AlreadyTooLarge(ctx);
+  const std::unordered_set<std::string> already_too_large = AlreadyTooLarge(ctx);
   for (std::size_t l = 0; l < ctx.model.links.size(); ++l) {
     const Link& link = ctx.model.links[l];
     const int root = poses.root[l];
