@@ -45,6 +45,7 @@
 #include "massprops/analysis/fix_effect.h"
 #include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/identifiability.h"
+#include "massprops/analysis/identify.h"
 #include "massprops/analysis/link_measure.h"
 #include "massprops/analysis/link_shape.h"
 #include "massprops/analysis/mass_repair.h"

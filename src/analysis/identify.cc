@@ -1,0 +1,274 @@
+// Identification of a tree's inertial parameters from recorded torques (identify.h): ordinary
+// least squares on the base parameters and the physically consistent fit by Levenberg–Marquardt
+// over the log-Cholesky coordinates, each judged on held-out samples.
+#include "massprops/analysis/identify.h"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <unsupported/Eigen/LevenbergMarquardt>
+#include <vector>
+
+namespace massprops {
+
+namespace {
+
+// A body's scales for the prior: its mass m0 and length L (the root mean square distance of its
+// mass from its origin), so that mass, first moments and inertias deviate in units of m0, m0·L
+// and m0·L².
+Eigen::Matrix<double, 10, 1> PriorScales(const InertialParameters& pi, double fallback_mass) {
+  const double m0 = pi[0] > 0 && std::isfinite(pi[0]) ? pi[0] : fallback_mass;
+  // tr(Σ) = ½·(Ixx + Iyy + Izz) about the origin: Σ m·|r|².
+  const double second_moment = 0.5 * (pi[4] + pi[6] + pi[9]);
+  double length = pi[0] > 0 && second_moment > 0 ? std::sqrt(second_moment / pi[0]) : 0.1;
+  if (!(length > 1e-3)) length = 1e-3;
+  Eigen::Matrix<double, 10, 1> s;
+  s << m0, m0 * length, m0 * length, m0 * length, m0 * length * length, m0 * length * length,
+      m0 * length * length, m0 * length * length, m0 * length * length, m0 * length * length;
+  return s;
+}
+
+// The residual of the consistent fit: the data (through R of the QR of [W τ]) and the prior.
+struct ConsistentFitFunctor : Eigen::DenseFunctor<double> {
+  ConsistentFitFunctor(const Eigen::MatrixXd& R, int bodies, const Eigen::VectorXd& prior,
+                       const Eigen::VectorXd& prior_weights)
+      : Eigen::DenseFunctor<double>(static_cast<int>(R.cols() - 1),
+                                    static_cast<int>(R.rows() + 10 * bodies)),
+        R_(R),
+        bodies_(bodies),
+        prior_(prior),
+        weights_(prior_weights) {}
+
+  // The full parameter vector π of x = [θ per body, friction].
+  Eigen::VectorXd Parameters(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd pi = x;
+    for (int b = 0; b < bodies_; ++b)
+      pi.segment<10>(10 * b) = InertialParametersFromLogCholesky(x.segment<10>(10 * b));
+    return pi;
+  }
+
+  int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
+    const Eigen::VectorXd pi = Parameters(x);
+    const Eigen::Index c = R_.cols() - 1;
+    f.resize(values());
+    f.head(R_.rows()) = R_.leftCols(c) * pi - R_.col(c);
+    const Eigen::Index inertial = 10 * bodies_;
+    f.tail(inertial) = weights_.cwiseProduct(pi.head(inertial) - prior_.head(inertial));
+    return 0;
+  }
+
+  int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
+    ++jacobians;  // once per iteration
+    const Eigen::Index c = R_.cols() - 1;
+    Eigen::MatrixXd D = Eigen::MatrixXd::Identity(c, c);
+    for (int b = 0; b < bodies_; ++b)
+      D.block<10, 10>(10 * b, 10 * b) =
+          InertialParametersFromLogCholeskyJacobian(x.segment<10>(10 * b));
+    jac.resize(values(), inputs());
+    jac.topRows(R_.rows()) = R_.leftCols(c) * D;
+    const Eigen::Index inertial = 10 * bodies_;
+    jac.bottomRows(inertial) = weights_.asDiagonal() * D.topRows(inertial);
+    return 0;
+  }
+
+  const Eigen::MatrixXd& R_;
+  int bodies_;
+  Eigen::VectorXd prior_, weights_;
+  mutable int jacobians = 0;
+};
+
+std::string StatusInWords(Eigen::LevenbergMarquardtSpace::Status status) {
+  using S = Eigen::LevenbergMarquardtSpace::Status;
+  switch (status) {
+    case S::RelativeReductionTooSmall:
+    case S::RelativeErrorTooSmall:
+    case S::RelativeErrorAndReductionTooSmall:
+    case S::CosinusTooSmall:
+      return "converged";
+    case S::TooManyFunctionEvaluation:
+      return "stopped at the evaluation limit";
+    case S::FtolTooSmall:
+    case S::XtolTooSmall:
+    case S::GtolTooSmall:
+      return "converged to the precision of doubles";
+    default:
+      return "did not run (improper input)";
+  }
+}
+
+// Per joint RMS of W·π − τ over the samples of W (rows: samples × joints).
+Eigen::VectorXd JointRms(const Eigen::MatrixXd& W, const Eigen::VectorXd& pi,
+                         const Eigen::VectorXd& tau, int joints) {
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(joints);
+  const Eigen::VectorXd e = W * pi - tau;
+  const Eigen::Index samples = e.size() / joints;
+  for (Eigen::Index k = 0; k < samples; ++k)
+    for (int j = 0; j < joints; ++j) sum[j] += e[k * joints + j] * e[k * joints + j];
+  return (sum / static_cast<double>(std::max<Eigen::Index>(samples, 1))).cwiseSqrt();
+}
+
+// Stacks the N × n torques sample by sample, as StackTorqueRegressor orders its rows.
+Eigen::VectorXd StackTorques(const Eigen::MatrixXd& tau) {
+  Eigen::VectorXd out(tau.size());
+  for (Eigen::Index k = 0; k < tau.rows(); ++k)
+    out.segment(k * tau.cols(), tau.cols()) = tau.row(k);
+  return out;
+}
+
+// OLS through the base columns: β̂, its standard errors, and a full π whose base parameters are
+// β̂ and whose dependent parameters are the prior's (π_base = β̂ − K·π_dependent).
+void FitLeastSquares(const Eigen::MatrixXd& W, const Eigen::VectorXd& tau,
+                     const Eigen::VectorXd& prior, IdentifyResult* out) {
+  const Identifiability& id = out->identifiability;
+  const int r = id.rank;
+  Eigen::MatrixXd Wb(W.rows(), r);
+  for (int i = 0; i < r; ++i) Wb.col(i) = W.col(id.base[static_cast<std::size_t>(i)].column);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Wb);
+  const Eigen::VectorXd beta = qr.solve(tau);
+  const double dof = static_cast<double>(std::max<Eigen::Index>(W.rows() - r, 1));
+  const double sigma2 = (Wb * beta - tau).squaredNorm() / dof;
+  const Eigen::MatrixXd Rb = qr.matrixQR().topRows(r).triangularView<Eigen::Upper>();
+  const Eigen::MatrixXd Rinv =
+      Rb.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(r, r));
+  out->base_standard_error = (sigma2 * Rinv.rowwise().squaredNorm()).cwiseSqrt();
+  out->base_least_squares = beta;
+  // π with the prior's values, then each base column set so that B·π = β̂ (B has a 1 at each
+  // base column and no other base column's entry in its row).
+  Eigen::VectorXd pi = prior;
+  for (int i = 0; i < r; ++i) pi[id.base[static_cast<std::size_t>(i)].column] = 0;
+  const Eigen::VectorXd rest = id.base_from_full * pi;
+  for (int i = 0; i < r; ++i) pi[id.base[static_cast<std::size_t>(i)].column] = beta[i] - rest[i];
+  out->least_squares = pi;
+}
+
+void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& W, const Eigen::VectorXd& tau,
+                   const IdentifyOptions& options, IdentifyResult* out) {
+  const int n = tree.size();
+  const Eigen::Index c = W.cols();
+  // R of the QR of [W τ]: ‖W·π − τ‖ = ‖R·[π; −1]‖, so each iteration costs O(c²), not O(N).
+  Eigen::MatrixXd A(W.rows(), c + 1);
+  A << W, tau;
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
+  const Eigen::Index rows = std::min<Eigen::Index>(A.rows(), c + 1);
+  const Eigen::MatrixXd R = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+  const double mean_square = tau.squaredNorm();  // Σ τ², the data term's scale
+  double mean_mass = 0;
+  int massive = 0;
+  for (const MovingBody& b : tree.bodies) {
+    if (b.pi_BBo_B[0] > 0) mean_mass += b.pi_BBo_B[0], ++massive;
+  }
+  mean_mass = massive > 0 ? mean_mass / massive : 1.0;
+  Eigen::VectorXd weights(10 * n);
+  Eigen::VectorXd x = out->file;
+  for (int b = 0; b < n; ++b) {
+    const InertialParameters prior = out->file.segment<10>(10 * b);
+    weights.segment<10>(10 * b) = std::sqrt(options.prior_weight * mean_square) *
+                                  PriorScales(prior, mean_mass).cwiseInverse();
+    x.segment<10>(10 * b) = LogCholeskyFromInertialParameters(prior);
+  }
+  ConsistentFitFunctor functor(R, n, out->file, weights);
+  Eigen::LevenbergMarquardt<ConsistentFitFunctor> lm(functor);
+  lm.setMaxfev(options.max_function_evaluations);
+  const Eigen::LevenbergMarquardtSpace::Status status = lm.minimize(x);
+  out->solver_iterations = functor.jacobians;
+  out->solver_status = StatusInWords(status);
+  out->identified = functor.Parameters(x);
+}
+
+}  // namespace
+
+OrderedTrajectory OrderTrajectory(const KinematicTree& tree, const JointTrajectory& data) {
+  OrderedTrajectory out;
+  std::vector<std::string> missing, extra;
+  std::vector<int> column(static_cast<std::size_t>(tree.size()), -1);
+  for (std::size_t i = 0; i < data.joints.size(); ++i) {
+    const int j = tree.FindJoint(data.joints[i]);
+    if (j < 0) {
+      extra.push_back(data.joints[i]);
+    } else {
+      column[static_cast<std::size_t>(j)] = static_cast<int>(i);
+    }
+  }
+  for (int j = 0; j < tree.size(); ++j) {
+    if (column[static_cast<std::size_t>(j)] < 0) missing.push_back(tree.bodies[j].joint);
+  }
+  for (const std::string& m : missing) {
+    out.error += (out.error.empty() ? "" : "; ") + std::string("joint '") + m +
+                 "' of the model has no columns in the data (" + m + ".q, " + m + ".tau)";
+  }
+  for (const std::string& e : extra) {
+    out.error += (out.error.empty() ? "" : "; ") + std::string("joint '") + e +
+                 "' in the data is not a moving joint of the model";
+  }
+  if (!out.ok()) return out;
+  const Eigen::Index N = data.time.size();
+  out.q.resize(N, tree.size());
+  out.dq.resize(N, tree.size());
+  out.ddq.resize(N, tree.size());
+  out.tau.resize(N, tree.size());
+  for (int j = 0; j < tree.size(); ++j) {
+    const int i = column[static_cast<std::size_t>(j)];
+    out.q.col(j) = data.q.col(i);
+    out.dq.col(j) = data.dq.col(i);
+    out.ddq.col(j) = data.ddq.col(i);
+    out.tau.col(j) = data.tau.col(i);
+  }
+  return out;
+}
+
+IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data,
+                        const IdentifyOptions& options) {
+  const int n = tree.size();
+  if (data.q.cols() != n || data.tau.cols() != n || data.tau.rows() != data.q.rows()) {
+    throw std::invalid_argument("identify: the data have " + std::to_string(data.q.cols()) +
+                                " joints and " + std::to_string(data.tau.rows()) +
+                                " torque rows; the tree has " + std::to_string(n) + " joints");
+  }
+  if (!(options.validation_fraction >= 0 && options.validation_fraction <= 0.9)) {
+    throw std::invalid_argument("identify: validation fraction " +
+                                std::to_string(options.validation_fraction) +
+                                " is not in [0, 0.9]");
+  }
+  const Eigen::Index N = data.q.rows();
+  const Eigen::Index held = static_cast<Eigen::Index>(std::floor(options.validation_fraction * N));
+  const Eigen::Index fit = N - held;
+  if (fit < 2) throw std::invalid_argument("identify: fewer than 2 samples to fit");
+  IdentifyResult out;
+  out.training_samples = static_cast<int>(fit);
+  out.validation_samples = static_cast<int>(held);
+  out.column_names = RegressorColumnNames(tree, options.regressor);
+  const Eigen::MatrixXd W =
+      StackTorqueRegressor(tree, data.q, data.dq, data.ddq, options.regressor);
+  const Eigen::VectorXd tau = StackTorques(data.tau);
+  const Eigen::MatrixXd W_fit = W.topRows(fit * n);
+  const Eigen::VectorXd tau_fit = tau.head(fit * n);
+  out.identifiability = AnalyzeIdentifiability(W_fit, out.column_names, options.identifiability);
+  out.unexcited_links = UnexcitedLinks(out.identifiability, out.column_names);
+  out.file = RegressorParameters(tree, options.regressor);
+  FitLeastSquares(W_fit, tau_fit, out.file, &out);
+  FitConsistent(tree, W_fit, tau_fit, options, &out);
+  const Eigen::MatrixXd& B = out.identifiability.base_from_full;
+  out.base_file = B * out.file;
+  out.base_identified = B * out.identified;
+  for (int b = 0; b < n; ++b) {
+    BodyEstimate e;
+    e.link = tree.bodies[b].link;
+    e.file = out.file.segment<10>(10 * b);
+    e.least_squares = out.least_squares.segment<10>(10 * b);
+    e.identified = out.identified.segment<10>(10 * b);
+    e.least_squares_consistent = IsConsistentBody(e.least_squares);
+    e.identified_consistent = IsConsistentBody(e.identified);
+    if (!e.least_squares_consistent) ++out.inconsistent_least_squares_links;
+    out.bodies.push_back(e);
+  }
+  const Eigen::MatrixXd W_check = held > 0 ? W.bottomRows(held * n) : W_fit;
+  const Eigen::VectorXd tau_check = held > 0 ? tau.tail(held * n) : tau_fit;
+  out.rms_file = JointRms(W_check, out.file, tau_check, n);
+  out.rms_least_squares = JointRms(W_check, out.least_squares, tau_check, n);
+  out.rms_identified = JointRms(W_check, out.identified, tau_check, n);
+  return out;
+}
+
+}  // namespace massprops
