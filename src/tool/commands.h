@@ -33,6 +33,10 @@ void AddCacheCommands(CLI::App& app, std::function<int()>* run);
 /// Defined in src/tool/diff_command.cc.
 void AddDiffCommands(CLI::App& app, std::function<int()>* run);
 
+/// `identify` (the mass properties recorded joint torques prove, physically consistent; written
+/// back with fix's writer). Defined in src/tool/identify_command.cc.
+void AddIdentifyCommands(CLI::App& app, std::function<int()>* run);
+
 /// `lsp` (the language server on standard input and output, docs/editors.md). Defined in
 /// src/tool/lsp_command.cc.
 void AddLspCommand(CLI::App& app, std::function<int()>* run);

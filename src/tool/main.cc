@@ -634,6 +634,7 @@ int main(int argc, char** argv) {
     massprops::cli::AddFixCommands(app, &run);
     massprops::cli::AddViewCommands(app, &run);
     massprops::cli::AddDiffCommands(app, &run);
+    massprops::cli::AddIdentifyCommands(app, &run);
     massprops::cli::AddTraceCommand(app, &run);
     massprops::cli::AddCacheCommands(app, &run);
     massprops::cli::AddExplainCommand(app, &run);

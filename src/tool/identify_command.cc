@@ -1,0 +1,376 @@
+// `massprops identify ROBOT DATA` (docs/identify.md, issue 51): the inertial parameters that a
+// recorded trajectory proves, physically consistent (analysis/identify.h), reported per joint and
+// per link, and written back into a URDF with fix's minimal-diff writer. Exit codes:
+//   0  identified (and written, when asked);
+//   2  a file could not be read, the model is not a fixed-base tree, the data's joints do not
+//      match the model's, the output cannot be written, or the command line is wrong.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "massprops/analysis/identify.h"
+#include "massprops/analysis/repair.h"
+#include "massprops/core/rotational_inertia.h"
+#include "massprops/io/model_reader.h"
+#include "massprops/io/trajectory_csv.h"
+#include "massprops/output/xml_patch.h"
+#include "safe_write.h"
+
+namespace massprops::cli {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitError = 2;
+
+struct IdentifyArgs {
+  std::string robot, data;
+  double validate = 0.3;
+  std::string write;
+  bool in_place = false;
+  std::string format = "text";
+};
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+// Three numbers; those below 1e-9 of the largest are round-off of a zero and shown as 0.
+std::string Triple(Eigen::Vector3d v) {
+  const double largest = v.cwiseAbs().maxCoeff();
+  for (int k = 0; k < 3; ++k) {
+    if (std::abs(v[k]) < 1e-9 * largest) v[k] = 0;
+  }
+  return "(" + Number(v[0]) + ", " + Number(v[1]) + ", " + Number(v[2]) + ")";
+}
+
+// A body's mass, center of mass, central inertia (in B) and principal moments, from π.
+struct CentralProperties {
+  double mass = 0;
+  Eigen::Vector3d com = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d I_BBcm_B = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d principal = Eigen::Vector3d::Zero();
+};
+
+CentralProperties Central(const InertialParameters& pi) {
+  CentralProperties out;
+  out.mass = pi[0];
+  if (!(pi[0] > 0) || !pi.allFinite()) return out;
+  out.com = pi.segment<3>(1) / pi[0];
+  Eigen::Matrix3d I;
+  I << pi[4], pi[5], pi[7], pi[5], pi[6], pi[8], pi[7], pi[8], pi[9];
+  const Eigen::Vector3d& c = out.com;
+  out.I_BBcm_B = I - pi[0] * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+  const Eigen::Matrix3d& J = out.I_BBcm_B;
+  out.principal = internal::ScaledPrincipalMoments<double>(
+      J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(0, 2), J(1, 2), PrincipalSolver::kAccurate);
+  return out;
+}
+
+void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const IdentifyResult& r) {
+  const Identifiability& id = r.identifiability;
+  std::cout << "massprops identify: " << args.robot << " (" << tree.size() << " joints) with "
+            << args.data << " (" << r.training_samples + r.validation_samples
+            << " samples: " << r.training_samples << " fitted, " << r.validation_samples
+            << " held out)\n\n";
+  std::cout << "identifiability: the data determine " << id.rank << " combinations of the "
+            << r.column_names.size() << " parameters (condition number "
+            << Number(id.condition_number) << ")\n";
+  if (r.unexcited_links.empty()) {
+    std::cout << "  every link is excited\n";
+  } else {
+    std::cout << "  not excited (kept as the file has them):";
+    for (const std::string& l : r.unexcited_links) std::cout << " '" << l << "'";
+    std::cout << "\n";
+  }
+  std::cout << "  base parameters (file -> identified, ± OLS standard error):\n";
+  for (std::size_t i = 0; i < id.base.size(); ++i) {
+    const Eigen::Index k = static_cast<Eigen::Index>(i);
+    const double scale =
+        std::max(r.base_file.cwiseAbs().maxCoeff(), r.base_identified.cwiseAbs().maxCoeff());
+    const auto clean = [&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : x; };
+    std::cout << "    " << id.base[i].ToString() << ": " << Number(clean(r.base_file[k])) << " -> "
+              << Number(clean(r.base_identified[k])) << " ± " << Number(r.base_standard_error[k])
+              << "\n";
+  }
+  std::cout << "\ntorque RMS on the " << (r.validation_samples > 0 ? "held-out" : "fitted")
+            << " samples (N·m or N): file -> identified (least squares)\n";
+  for (int j = 0; j < tree.size(); ++j) {
+    std::cout << "  joint '" << tree.bodies[j].joint << "': " << Number(r.rms_file[j]) << " -> "
+              << Number(r.rms_identified[j]) << " (" << Number(r.rms_least_squares[j]) << ")\n";
+  }
+  std::cout << "\nleast squares (the base parameters above, the rest at the file's values): "
+            << r.inconsistent_least_squares_links << " of " << r.bodies.size()
+            << " links not physically consistent";
+  std::string names;
+  for (const BodyEstimate& b : r.bodies) {
+    if (!b.least_squares_consistent) names += (names.empty() ? "" : ", ") + ("'" + b.link + "'");
+  }
+  if (!names.empty()) std::cout << " (" << names << ")";
+  std::cout << "; the consistent fit " << r.solver_status << " in " << r.solver_iterations
+            << " iterations\n\nlinks (with the links welded to them), file -> identified:\n";
+  for (const BodyEstimate& b : r.bodies) {
+    const CentralProperties before = Central(b.file), after = Central(b.identified);
+    std::cout << "  link '" << b.link << "':\n    mass " << Number(before.mass) << " -> "
+              << Number(after.mass) << " kg\n    center of mass " << Triple(before.com) << " -> "
+              << Triple(after.com) << " m\n    principal moments " << Triple(before.principal)
+              << " -> " << Triple(after.principal) << " kg·m²\n";
+  }
+}
+
+nlohmann::json Vector(const Eigen::VectorXd& v) {
+  nlohmann::json out = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v[i]);
+  return out;
+}
+
+nlohmann::json BodyJson(const InertialParameters& pi) {
+  const CentralProperties p = Central(pi);
+  return {{"mass", p.mass},
+          {"com", Vector(p.com)},
+          {"principal_moments", Vector(p.principal)},
+          {"parameters", Vector(pi)}};
+}
+
+void WriteJson(const KinematicTree& tree, const IdentifyResult& r) {
+  const Identifiability& id = r.identifiability;
+  nlohmann::json base = nlohmann::json::array();
+  for (std::size_t i = 0; i < id.base.size(); ++i) {
+    const Eigen::Index k = static_cast<Eigen::Index>(i);
+    base.push_back({{"name", id.base[i].ToString()},
+                    {"file", r.base_file[k]},
+                    {"least_squares", r.base_least_squares[k]},
+                    {"identified", r.base_identified[k]},
+                    {"standard_error", r.base_standard_error[k]}});
+  }
+  nlohmann::json joints = nlohmann::json::array();
+  for (int j = 0; j < tree.size(); ++j) {
+    joints.push_back({{"joint", tree.bodies[j].joint},
+                      {"rms_file", r.rms_file[j]},
+                      {"rms_least_squares", r.rms_least_squares[j]},
+                      {"rms_identified", r.rms_identified[j]}});
+  }
+  nlohmann::json links = nlohmann::json::array();
+  for (const BodyEstimate& b : r.bodies) {
+    links.push_back({{"link", b.link},
+                     {"file", BodyJson(b.file)},
+                     {"identified", BodyJson(b.identified)},
+                     {"least_squares_consistent", b.least_squares_consistent},
+                     {"identified_consistent", b.identified_consistent}});
+  }
+  const nlohmann::json out = {
+      {"identifiability",
+       {{"rank", id.rank},
+        {"parameters", r.column_names.size()},
+        {"condition_number", std::isfinite(id.condition_number)
+                                 ? nlohmann::json(id.condition_number)
+                                 : nlohmann::json(nullptr)},
+        {"unexcited_links", r.unexcited_links},
+        {"base_parameters", base}}},
+      {"training_samples", r.training_samples},
+      {"validation_samples", r.validation_samples},
+      {"joints", joints},
+      {"links", links},
+      {"inconsistent_least_squares_links", r.inconsistent_least_squares_links},
+      {"solver", {{"status", r.solver_status}, {"iterations", r.solver_iterations}}}};
+  std::cout << out.dump(2) << "\n";
+}
+
+// x to `digits` significant digits, or 0 when below 1e-9 of `scale` (round-off of a value the
+// data and the file leave at zero).
+double Rounded(double x, double scale, int digits) {
+  if (!(std::abs(x) >= 1e-9 * scale)) return 0;
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, x);
+  return std::strtod(text, nullptr);
+}
+
+// The <inertial> of central properties p, its inertia expressed in the inertial frame Bi whose
+// rotation R_BBi is kept from the file, with the fewest significant digits (6 at least) whose
+// inertia is still valid: a fit whose constraint is active sits on the triangle inequality.
+Inertial RoundedInertial(const CentralProperties& p, const Eigen::Matrix3d& R_BBi) {
+  Inertial a;
+  a.X_BBi.R_AB = R_BBi;
+  const Eigen::Matrix3d I = R_BBi.transpose() * p.I_BBcm_B * R_BBi;
+  const double trace = I.trace();
+  const double length = std::max(p.com.norm(), std::sqrt(std::max(trace, 0.0) / p.mass));
+  for (int digits : {6, 8, 10, 12, 14, 17}) {
+    for (int k = 0; k < 3; ++k) a.X_BBi.p_AB[k] = Rounded(p.com[k], length, digits);
+    a.mass = Rounded(p.mass, p.mass, digits);
+    a.ixx = Rounded(I(0, 0), trace, digits), a.iyy = Rounded(I(1, 1), trace, digits);
+    a.izz = Rounded(I(2, 2), trace, digits), a.ixy = Rounded(I(0, 1), trace, digits);
+    a.ixz = Rounded(I(0, 2), trace, digits), a.iyz = Rounded(I(1, 2), trace, digits);
+    if (internal::IsPhysicallyValidInertia(a.ixx, a.iyy, a.izz, a.ixy, a.ixz, a.iyz, 1e-12)) break;
+  }
+  return a;
+}
+
+// The identified values of each excited body as repairs of its link's <inertial>. A body with
+// massive welded links is not written (its parameters are of the welded group); said in *notes.
+std::vector<Repair> PlanWrites(const Model& model, const KinematicTree& tree,
+                               const IdentifyResult& r, std::vector<std::string>* notes) {
+  std::vector<Repair> repairs;
+  for (int b = 0; b < tree.size(); ++b) {
+    const MovingBody& body = tree.bodies[static_cast<std::size_t>(b)];
+    bool unexcited = false;
+    for (const std::string& l : r.unexcited_links) unexcited |= l == body.link;
+    if (unexcited) continue;
+    bool welded_mass = false;
+    for (const std::string& w : body.welded_links) {
+      const int i = model.FindLink(w);
+      welded_mass |= i >= 0 && model.links[i].inertial && model.links[i].inertial->mass != 0;
+    }
+    if (welded_mass) {
+      notes->push_back("link '" + body.link +
+                       "' not written: its identified values include the links welded to it");
+      continue;
+    }
+    const int i = model.FindLink(body.link);
+    if (i < 0) continue;
+    const Link& link = model.links[i];
+    const CentralProperties p = Central(r.bodies[static_cast<std::size_t>(b)].identified);
+    Repair repair;
+    repair.rule = "identify";
+    repair.method = "identify";
+    repair.link = link.name;
+    repair.link_line = link.location.line;
+    repair.before = link.inertial;
+    repair.inserts_inertial = !link.inertial.has_value();
+    repair.after =
+        RoundedInertial(p, link.inertial ? link.inertial->X_BBi.R_AB : Eigen::Matrix3d::Identity());
+    repair.why = "identified from the recorded torques (massprops identify)";
+    FillRepairChanges(model, link, &repair);
+    repairs.push_back(repair);
+  }
+  return repairs;
+}
+
+int WriteIdentified(const IdentifyArgs& args, const Model& model, const KinematicTree& tree,
+                    const IdentifyResult& r) {
+  std::ifstream in(args.robot, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::vector<std::string> notes;
+  const std::vector<Repair> repairs = PlanWrites(model, tree, r, &notes);
+  const PatchResult patched = PatchModelText(text.str(), model.format, repairs);
+  for (const PatchError& e : patched.errors) {
+    std::cerr << args.robot << ":" << e.line << ": error: link '" << e.link << "': " << e.message
+              << "\n";
+  }
+  if (!patched.errors.empty()) return kExitError;
+  const std::string out = args.in_place ? args.robot : args.write;
+  if (auto error = WriteFileSafely(out, patched.text, &notes)) {
+    std::cerr << "massprops: error: " << *error << "\n";
+    return kExitError;
+  }
+  for (const std::string& n : notes) std::cerr << "massprops: note: " << n << "\n";
+  std::cerr << "massprops: " << out << ": identified values of " << patched.applied
+            << " link(s) written\n";
+  return kExitOk;
+}
+
+// The model and its tree, or an error printed (false).
+bool ReadRobot(const std::string& file, Model* model, std::optional<KinematicTree>* tree) {
+  const ReadResult read = ReadModelFile(file);
+  for (const ReadError& e : read.errors) std::cerr << e.ToString() << "\n";
+  if (!read.ok() || read.models.empty()) {
+    if (read.ok()) std::cerr << file << ": error: no model in the file\n";
+    return false;
+  }
+  *model = read.models[0];
+  KinematicTreeResult made = MakeKinematicTree(*model);
+  if (!made.tree) {
+    std::cerr << file << ": error: " << made.error << "\n";
+    return false;
+  }
+  *tree = std::move(made.tree);
+  return true;
+}
+
+int RunIdentify(const IdentifyArgs& args) {
+  const bool writes = args.in_place || !args.write.empty();
+  if (args.in_place && !args.write.empty()) {
+    std::cerr << "massprops: error: --write and --in-place exclude each other\n";
+    return kExitError;
+  }
+  if (std::filesystem::is_directory(args.data) ||
+      (args.data.size() >= 4 && args.data.substr(args.data.size() - 4) == ".db3")) {
+    std::cerr << args.data
+              << ": error: rosbag2 recordings are not read yet; export the joint states to CSV "
+                 "(docs/identify.md)\n";
+    return kExitError;
+  }
+  Model model;
+  std::optional<KinematicTree> tree;
+  if (!ReadRobot(args.robot, &model, &tree)) return kExitError;
+  if (writes && model.format != Model::Format::kUrdf) {
+    std::cerr << args.robot << ": error: identify writes URDF files only for now ("
+              << ToString(model.format) << " is read, not written); nothing written\n";
+    return kExitError;
+  }
+  const TrajectoryReadResult log = ReadTrajectoryCsvFile(args.data);
+  for (const ReadError& e : log.errors) std::cerr << e.ToString() << "\n";
+  if (!log.ok()) return kExitError;
+  for (const std::string& n : log.trajectory->notes)
+    std::cerr << args.data << ": note: " << n << "\n";
+  const OrderedTrajectory data = OrderTrajectory(*tree, *log.trajectory);
+  if (!data.ok()) {
+    std::cerr << args.data << ": error: " << data.error << "\n";
+    return kExitError;
+  }
+  IdentifyOptions options;
+  options.validation_fraction = args.validate;
+  IdentifyResult result;
+  try {
+    result = Identify(*tree, data, options);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << args.data << ": error: " << e.what() << "\n";
+    return kExitError;
+  }
+  if (args.format == "json") {
+    WriteJson(*tree, result);
+  } else {
+    WriteText(args, *tree, result);
+  }
+  const int code = writes ? WriteIdentified(args, model, *tree, result) : kExitOk;
+  return FinishStandardOutput(code);
+}
+
+}  // namespace
+
+void AddIdentifyCommands(CLI::App& app, std::function<int()>* run) {
+  auto args = std::make_shared<IdentifyArgs>();
+  CLI::App* identify = app.add_subcommand(
+      "identify",
+      "Identify the mass properties that recorded joint torques prove (physically consistent, "
+      "regularised toward the file's values): identifiability, torque error on held-out samples "
+      "and each link before and after; --write or --in-place writes them into the URDF.");
+  identify->add_option("ROBOT", args->robot, "The model (URDF, SDF or MJCF; fixed base)")
+      ->required();
+  identify
+      ->add_option("DATA", args->data,
+                   "The recording: CSV with time and, per joint J, J.q, J.tau (J.dq, J.ddq)")
+      ->required();
+  identify
+      ->add_option("--validate", args->validate,
+                   "The last FRACTION of the samples is held out to judge the fit (default 0.3)")
+      ->check(CLI::Range(0.0, 0.9));
+  identify->add_option("--write", args->write, "Write the identified values into OUT (URDF)");
+  identify->add_flag("--in-place", args->in_place, "Write the identified values into ROBOT");
+  identify->add_option("--format", args->format, "Output format")
+      ->check(CLI::IsMember({"text", "json"}));
+  identify->callback([args, run]() { *run = [args]() { return RunIdentify(*args); }; });
+}
+
+}  // namespace massprops::cli

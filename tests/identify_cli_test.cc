@@ -1,0 +1,178 @@
+// End-to-end tests of `massprops identify ROBOT DATA` (docs/identify.md): the planar two-link arm
+// of testdata/identify/planar_arm.urdf (the file's values) and a recording of a different true arm,
+// testdata/identify/planar_arm.csv, whose torques tools/make_identify_csv.py computes from the
+// closed-form equations of Spong, Hutchinson and Vidyasagar ("Robot Modeling and Control", 2006,
+// §7.4), not from massprops' dynamics. Expected values come from the script's TRUE arm:
+// m2 = 1.0 kg, lc2 = 0.24 m, I2 = 0.012 kg·m², so the forearm's first moment m2·lc2 = 0.24 kg·m and
+// its inertia about the elbow axis I2 + m2·lc2² = 0.0696 kg·m², both determined by the data
+// (Khalil and Dombre 2002, §12.4: MX2 and ZZ2 are base parameters of the planar arm).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "massprops/io/model_reader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTool = MASSPROPS_TOOL_PATH;
+const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/identify/";
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct ToolRun {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+class IdentifyCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "massprops-identify-XXXXXX").string();
+    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+    fs::copy_file(kDir + "planar_arm.urdf", dir_ / "planar_arm.urdf");
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  ToolRun Run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command =
+        "'" + kTool + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    ToolRun run;
+    run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = ReadFile(out);
+    run.err = ReadFile(err);
+    return run;
+  }
+
+  std::string Robot() const { return (dir_ / "planar_arm.urdf").string(); }
+  std::string Csv(const std::string& text) {
+    const fs::path path = dir_ / "data.csv";
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(IdentifyCliTest, JsonReportsIdentifiabilityAndTheHeldOutError) {
+  const ToolRun run =
+      Run("identify --format json --validate 0.25 '" + Robot() + "' '" + kDir + "planar_arm.csv'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const nlohmann::json doc = nlohmann::json::parse(run.out);
+  // 2 × 10 inertial + 2 × 3 friction columns; the planar arm has 6 inertial base parameters
+  // (Khalil and Dombre §12.4) and each joint's viscous, Coulomb and offset columns are
+  // independent: 12.
+  EXPECT_EQ(doc["identifiability"]["parameters"], 26);
+  EXPECT_EQ(doc["identifiability"]["rank"], 12);
+  EXPECT_TRUE(doc["identifiability"]["unexcited_links"].empty());
+  EXPECT_EQ(doc["training_samples"], 600);
+  EXPECT_EQ(doc["validation_samples"], 200);
+  ASSERT_EQ(doc["joints"].size(), 2u);
+  for (const auto& joint : doc["joints"]) {
+    // The noise of the recording is 0.01 N·m (tools/make_identify_csv.py).
+    EXPECT_LT(joint["rms_identified"].get<double>(), 0.012) << joint.dump();
+    EXPECT_GT(joint["rms_file"].get<double>(), 0.05) << joint.dump();
+    EXPECT_LE(joint["rms_identified"].get<double>(),
+              joint["rms_least_squares"].get<double>() * 1.02 + 1e-4)
+        << joint.dump();
+  }
+  for (const auto& link : doc["links"]) EXPECT_TRUE(link["identified_consistent"]) << link.dump();
+}
+
+TEST_F(IdentifyCliTest, TextSaysIdentifiabilityFirstThenJointsThenLinks) {
+  const ToolRun run = Run("identify '" + Robot() + "' '" + kDir + "planar_arm.csv'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const std::size_t id = run.out.find("identifiability: the data determine 12 combinations");
+  const std::size_t joints = run.out.find("torque RMS on the held-out samples");
+  const std::size_t links = run.out.find("link 'fore':");
+  ASSERT_NE(id, std::string::npos) << run.out;
+  ASSERT_NE(joints, std::string::npos) << run.out;
+  ASSERT_NE(links, std::string::npos) << run.out;
+  EXPECT_LT(id, joints);
+  EXPECT_LT(joints, links);
+}
+
+TEST_F(IdentifyCliTest, WriteChangesOnlyInertialNumbersToTheTrueArmsOnes) {
+  const std::string out = (dir_ / "identified.urdf").string();
+  const ToolRun run =
+      Run("identify '" + Robot() + "' '" + kDir + "planar_arm.csv' --write '" + out + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(ReadFile(Robot()), ReadFile(kDir + "planar_arm.urdf"));  // the input is untouched
+  const massprops::ReadResult read = massprops::ReadModelFile(out);
+  ASSERT_TRUE(read.ok() && read.models.size() == 1);
+  const massprops::Model& model = read.models[0];
+  const massprops::Inertial& fore = *model.links[model.FindLink("fore")].inertial;
+  const double cx = fore.X_BBi.p_AB.x();
+  EXPECT_NEAR(fore.mass * cx, 0.24, 0.24 * 0.02);  // m2·lc2 of the true arm
+  // ZZ2 = I2 + m2·lc2² (about the elbow axis, y), with the written central iyy.
+  EXPECT_NEAR(fore.iyy + fore.mass * (cx * cx + fore.X_BBi.p_AB.z() * fore.X_BBi.p_AB.z()), 0.0696,
+              0.0696 * 0.02);
+  // Only lines inside <inertial> changed: the others are byte for byte the same.
+  std::istringstream before(ReadFile(kDir + "planar_arm.urdf")), after(ReadFile(out));
+  std::string a, b;
+  bool inside = false;
+  while (std::getline(before, a) && std::getline(after, b)) {
+    if (a.find("<inertial>") != std::string::npos) inside = true;
+    if (!inside) {
+      EXPECT_EQ(a, b);
+    }
+    if (a.find("</inertial>") != std::string::npos) inside = false;
+  }
+}
+
+TEST_F(IdentifyCliTest, JointsMissingOnEitherSideAreErrorsThatNameThem) {
+  const std::string csv =
+      Csv("time,shoulder.q,shoulder.tau,wrist.q,wrist.tau\n"
+          "0,0,0,0,0\n0.01,0,0,0,0\n0.02,0,0,0,0\n0.03,0,0,0,0\n0.04,0,0,0,0\n"
+          "0.05,0,0,0,0\n0.06,0,0,0,0\n0.07,0,0,0,0\n0.08,0,0,0,0\n0.09,0,0,0,0\n0.10,0,0,0,0\n");
+  const ToolRun run = Run("identify '" + Robot() + "' '" + csv + "'");
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("joint 'elbow' of the model has no columns in the data"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("joint 'wrist' in the data is not a moving joint of the model"),
+            std::string::npos)
+      << run.err;
+  EXPECT_TRUE(run.out.empty());
+}
+
+TEST_F(IdentifyCliTest, AMissingColumnIsAnErrorAndNothingIsWritten) {
+  const std::string csv = Csv("time,shoulder.q,elbow.q,elbow.tau\n0,0,0,0\n");
+  const std::string out = (dir_ / "never.urdf").string();
+  const ToolRun run = Run("identify '" + Robot() + "' '" + csv + "' --write '" + out + "'");
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("shoulder"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(IdentifyCliTest, WritingAnSdfIsAClearError) {
+  const fs::path sdf = dir_ / "arm.sdf";
+  std::ofstream(sdf) << "<sdf version='1.9'><model name='m'><link name='a'/></model></sdf>";
+  const ToolRun run =
+      Run("identify '" + sdf.string() + "' '" + kDir + "planar_arm.csv' --in-place");
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find("writes URDF files only"), std::string::npos) << run.err;
+}
+
+}  // namespace
