@@ -99,8 +99,8 @@ std::string StatusInWords(Eigen::LevenbergMarquardtSpace::Status status) {
 }
 
 // Per joint RMS of W·π − τ over the samples of W (rows: samples × joints).
-Eigen::VectorXd JointRms(const Eigen::MatrixXd& W, const Eigen::VectorXd& pi,
-                         const Eigen::VectorXd& tau, int joints) {
+Eigen::VectorXd JointRms(const Eigen::Ref<const Eigen::MatrixXd>& W, const Eigen::VectorXd& pi,
+                         const Eigen::Ref<const Eigen::VectorXd>& tau, int joints) {
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(joints);
   const Eigen::VectorXd e = W * pi - tau;
   const Eigen::Index samples = e.size() / joints;
@@ -117,21 +117,36 @@ Eigen::VectorXd StackTorques(const Eigen::MatrixXd& tau) {
   return out;
 }
 
-// OLS through the base columns: β̂, its standard errors, and a full π whose base parameters are
-// β̂ and whose dependent parameters are the prior's (π_base = β̂ − K·π_dependent).
-void FitLeastSquares(const Eigen::MatrixXd& W, const Eigen::VectorXd& tau,
+// R of the QR of the fitted samples' [W τ] (min(rows, c + 1) × (c + 1)): ‖W·π − τ‖ = ‖R·[π; −1]‖
+// for every π and W = Q·R, so the rank, the base parameters, the singular values, least squares
+// and the consistent fit are all computed from R, after one QR of the data.
+Eigen::MatrixXd CompressData(const Eigen::Ref<const Eigen::MatrixXd>& W,
+                             const Eigen::Ref<const Eigen::VectorXd>& tau) {
+  const Eigen::Index c = W.cols();
+  Eigen::MatrixXd A(W.rows(), c + 1);
+  A << W, tau;
+  const Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(A);  // in place: no copy of A
+  const Eigen::Index rows = std::min<Eigen::Index>(W.rows(), c + 1);
+  return qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+}
+
+// OLS through the base columns of the compressed data R (CompressData of `samples_rows` rows): β̂,
+// its standard errors, and a full π whose base parameters are β̂ and whose dependent parameters
+// are the prior's (π_base = β̂ − K·π_dependent).
+void FitLeastSquares(const Eigen::MatrixXd& R, Eigen::Index samples_rows,
                      const Eigen::VectorXd& prior, IdentifyResult* out) {
   const Identifiability& id = out->identifiability;
   const int r = id.rank;
-  Eigen::MatrixXd Wb(W.rows(), r);
-  for (int i = 0; i < r; ++i) Wb.col(i) = W.col(id.base[static_cast<std::size_t>(i)].column);
-  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Wb);
-  const Eigen::VectorXd beta = qr.solve(tau);
-  const double dof = static_cast<double>(std::max<Eigen::Index>(W.rows() - r, 1));
-  const double sigma2 = (Wb * beta - tau).squaredNorm() / dof;
-  const Eigen::MatrixXd Rb = qr.matrixQR().topRows(r).triangularView<Eigen::Upper>();
+  const Eigen::Index c = R.cols() - 1;
+  Eigen::MatrixXd Rb(R.rows(), r);
+  for (int i = 0; i < r; ++i) Rb.col(i) = R.col(id.base[static_cast<std::size_t>(i)].column);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Rb);
+  const Eigen::VectorXd beta = qr.solve(R.col(c));
+  const double dof = static_cast<double>(std::max<Eigen::Index>(samples_rows - r, 1));
+  const double sigma2 = (Rb * beta - R.col(c)).squaredNorm() / dof;
   const Eigen::MatrixXd Rinv =
-      Rb.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(r, r));
+      qr.matrixQR().topLeftCorner(r, r).triangularView<Eigen::Upper>().solve(
+          Eigen::MatrixXd::Identity(r, r));
   out->base_standard_error = (sigma2 * Rinv.rowwise().squaredNorm()).cwiseSqrt();
   out->base_least_squares = beta;
   // π with the prior's values, then each base column set so that B·π = β̂ (B has a 1 at each
@@ -143,17 +158,11 @@ void FitLeastSquares(const Eigen::MatrixXd& W, const Eigen::VectorXd& tau,
   out->least_squares = pi;
 }
 
-void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& W, const Eigen::VectorXd& tau,
+// The consistent fit on the compressed data R; sum_squares = Σ τ² of the fitted samples (the data
+// term's scale, which the prior weight is relative to).
+void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& R, double sum_squares,
                    const IdentifyOptions& options, IdentifyResult* out) {
   const int n = tree.size();
-  const Eigen::Index c = W.cols();
-  // R of the QR of [W τ]: ‖W·π − τ‖ = ‖R·[π; −1]‖, so each iteration costs O(c²), not O(N).
-  Eigen::MatrixXd A(W.rows(), c + 1);
-  A << W, tau;
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr(A);
-  const Eigen::Index rows = std::min<Eigen::Index>(A.rows(), c + 1);
-  const Eigen::MatrixXd R = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
-  const double mean_square = tau.squaredNorm();  // Σ τ², the data term's scale
   double mean_mass = 0;
   int massive = 0;
   for (const MovingBody& b : tree.bodies) {
@@ -164,7 +173,7 @@ void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& W, const Ei
   Eigen::VectorXd x = out->file;
   for (int b = 0; b < n; ++b) {
     const InertialParameters prior = out->file.segment<10>(10 * b);
-    weights.segment<10>(10 * b) = std::sqrt(options.prior_weight * mean_square) *
+    weights.segment<10>(10 * b) = std::sqrt(options.prior_weight * sum_squares) *
                                   PriorScales(prior, mean_mass).cwiseInverse();
     x.segment<10>(10 * b) = LogCholeskyFromInertialParameters(prior);
   }
@@ -242,13 +251,14 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
   const Eigen::MatrixXd W =
       StackTorqueRegressor(tree, data.q, data.dq, data.ddq, options.regressor);
   const Eigen::VectorXd tau = StackTorques(data.tau);
-  const Eigen::MatrixXd W_fit = W.topRows(fit * n);
-  const Eigen::VectorXd tau_fit = tau.head(fit * n);
-  out.identifiability = AnalyzeIdentifiability(W_fit, out.column_names, options.identifiability);
+  const Eigen::MatrixXd R = CompressData(W.topRows(fit * n), tau.head(fit * n));
+  const Eigen::Index c = R.cols() - 1;
+  out.identifiability =
+      AnalyzeIdentifiability(R.leftCols(c), out.column_names, options.identifiability);
   out.unexcited_links = UnexcitedLinks(out.identifiability, out.column_names);
   out.file = RegressorParameters(tree, options.regressor);
-  FitLeastSquares(W_fit, tau_fit, out.file, &out);
-  FitConsistent(tree, W_fit, tau_fit, options, &out);
+  FitLeastSquares(R, fit * n, out.file, &out);
+  FitConsistent(tree, R, tau.head(fit * n).squaredNorm(), options, &out);
   const Eigen::MatrixXd& B = out.identifiability.base_from_full;
   out.base_file = B * out.file;
   out.base_identified = B * out.identified;
@@ -263,8 +273,9 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
     if (!e.least_squares_consistent) ++out.inconsistent_least_squares_links;
     out.bodies.push_back(e);
   }
-  const Eigen::MatrixXd W_check = held > 0 ? W.bottomRows(held * n) : W_fit;
-  const Eigen::VectorXd tau_check = held > 0 ? tau.tail(held * n) : tau_fit;
+  const Eigen::Index first = held > 0 ? fit * n : 0, rows = held > 0 ? held * n : fit * n;
+  const auto W_check = W.middleRows(first, rows);
+  const auto tau_check = tau.segment(first, rows);
   out.rms_file = JointRms(W_check, out.file, tau_check, n);
   out.rms_least_squares = JointRms(W_check, out.least_squares, tau_check, n);
   out.rms_identified = JointRms(W_check, out.identified, tau_check, n);

@@ -83,7 +83,7 @@ LogCholeskyParameters LogCholeskyFromInertialParameters(const InertialParameters
                                                         double floor) {
   PseudoMatrix J = ToPseudoInertia(pi);
   const Eigen::SelfAdjointEigenSolver<PseudoMatrix> eig(J);
-  const Eigen::Vector4d lambda = eig.eigenvalues();
+  const Eigen::Vector4d& lambda = eig.eigenvalues();
   const double smallest = std::max(floor * std::max(lambda.maxCoeff(), 0.0), 1e-12);
   if (!(lambda.minCoeff() >= smallest)) {
     J = eig.eigenvectors() * lambda.cwiseMax(smallest).asDiagonal() *
