@@ -186,6 +186,22 @@ TEST(IdentifyTest, JointsMissingOnEitherSideAreNamed) {
   EXPECT_EQ(reordered.q(0, 0), 0);
 }
 
+// No motion and no gravity: the data see nothing (rank 0), every link is unexcited and the fit
+// keeps the file's values (the prior is the only term).
+TEST(IdentifyTest, DataThatSeeNothingKeepTheFilesValues) {
+  KinematicTree file = FileArm();
+  file.gravity_base.setZero();
+  OrderedTrajectory still;
+  still.q = still.dq = still.ddq = still.tau = Eigen::MatrixXd::Zero(20, 3);
+  IdentifyOptions options;
+  options.regressor.friction = false;
+  const IdentifyResult r = Identify(file, still, options);
+  EXPECT_EQ(r.identifiability.rank, 0);
+  EXPECT_EQ(r.unexcited_links, (std::vector<std::string>{"shoulder", "upper_arm", "forearm"}));
+  EXPECT_EQ(r.least_squares, r.file);
+  EXPECT_LT((r.identified - r.file).norm(), 1e-12 * r.file.norm());
+}
+
 TEST(IdentifyTest, BadOptionsThrow) {
   const KinematicTree file = FileArm();
   const OrderedTrajectory data = Simulate(file, 20, 0, 1);

@@ -138,6 +138,10 @@ void FitLeastSquares(const Eigen::MatrixXd& R, Eigen::Index samples_rows,
   const Identifiability& id = out->identifiability;
   const int r = id.rank;
   const Eigen::Index c = R.cols() - 1;
+  out->least_squares = prior;
+  out->base_least_squares.resize(0);
+  out->base_standard_error.resize(0);
+  if (r == 0) return;  // no data: nothing to solve (and no empty triangular solve)
   Eigen::MatrixXd Rb(R.rows(), r);
   for (int i = 0; i < r; ++i) Rb.col(i) = R.col(id.base[static_cast<std::size_t>(i)].column);
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Rb);
