@@ -259,7 +259,11 @@ TEST_F(CorpusMeshTest, MeshAwareChecksFindTheFingersFlippedProductAndPlaceholder
     found.emplace_back(f.link, f.rule);
   }
   std::sort(found.begin(), found.end());
+  // base_link, the placeholder base: 0.7 kg with tr(I) = 2.37e-4 kg·m², below an osmium ball of
+  // 0.7 kg (r = (3 · 0.7 / (4π · 22590))^(1/3) = 0.0195 m, (6/5) · 0.7 · r² = 3.19e-4): the
+  // inertia-too-compact note.
   const std::vector<std::pair<std::string, std::string>> expected = {
+      {"base_link", "inertia-too-compact"},
       {"finger_base_link", "com-outside-geometry"},
       {"finger_base_link", "inertia-exceeds-geometry"},
       {"finger_middle_link", "products-sign-suspect"}};

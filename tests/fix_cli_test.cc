@@ -271,9 +271,12 @@ TEST_F(FixCliTest, BalanceRepairWritesTheMeanMoment) {
   EXPECT_NE(run.out.find("<izz>0.266667</izz>"), std::string::npos) << run.out;
 }
 
-TEST_F(FixCliTest, FromGeometryReplacesTheInertialOfTheNamedLink) {
-  // upper_arm: solid cylinder r 0.05, l 0.4 about its
-  // center: Ixx = m(3r² + l²)/12 (m = 2000 as written).
+TEST_F(FixCliTest, FromGeometryAtAnImpossibleMassIsRefusedWithTheWaysForward) {
+  // upper_arm: 2000 kg (grams written as kg) in a cylinder r 0.05, l 0.4. Its geometry's
+  // inertia at that mass, Ixx = 2000 (3 r² + l²) / 12 = 27.9 kg·m², is what --from-geometry would
+  // write; but 2000 kg in the cylinder's box grown twice (0.1 x 0.1 x 0.4 m, 8 times 0.004 m³)
+  // is 62 500 kg/m³, denser than osmium (22 590): density-implausible, so the repair is refused
+  // (docs/fix.md: a repair must pass the checks it is judged by) and the numbers stay.
   const ToolRun run =
       RunTool("fix '" + kFixDir + "/cad_export.urdf' --from-geometry upper_arm", dir_);
   EXPECT_EQ(run.code, 0) << run.err;
@@ -281,10 +284,15 @@ TEST_F(FixCliTest, FromGeometryReplacesTheInertialOfTheNamedLink) {
   ASSERT_NE(link, std::string::npos);
   const std::size_t ixx = run.out.find("ixx=\"", link);
   ASSERT_NE(ixx, std::string::npos);
-  // The mass kept is the 2000 written (--from-geometry comes before the units repair).
-  // Written with 6 significant digits (the fewest that pass the checks): 27.9167.
-  EXPECT_NEAR(std::strtod(run.out.c_str() + ixx + 5, nullptr), 2000 * (3 * 0.0025 + 0.16) / 12,
-              5e-6 * 27.92);
+  EXPECT_EQ(run.out.substr(ixx, 15), "ixx=\"0.0279167\"");  // as written
+  EXPECT_NE(run.err.find("link 'upper_arm': not repaired"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("density-implausible"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("density 62500"), std::string::npos) << run.err;
+  // The ways forward: the unit repair (2 kg) and the weighed mass.
+  EXPECT_NE(run.err.find("massprops fix --apply units-suspect"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("massprops fix --mass upper_arm=KG"), std::string::npos) << run.err;
+  // A refused repair is said once, with its reason, not as "left as it is".
+  EXPECT_EQ(run.err.find("is left as it is"), std::string::npos) << run.err;
 }
 
 TEST_F(FixCliTest, ErrorsWithoutARepairGiveExitCodeOne) {

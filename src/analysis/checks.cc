@@ -28,6 +28,19 @@ namespace {
 
 using rules::RuleContext;
 
+// The per-link rules that judge a link against its geometry, in the order they are judged.
+void CheckLinkGeometry(RuleContext& ctx, const rules::JudgedLink& judged, bool units_flagged) {
+  if (!judged.group_bounds) return;
+  const std::size_t before = ctx.findings.size();
+  if (judged.valid && !units_flagged && !rules::CheckInertiaFitsGeometry(ctx, judged)) {
+    rules::CheckInertiaFitsHull(ctx, judged);
+  }
+  // The bounds of the link's whole geometry where the box and the hull found nothing too large
+  // (one finding per defect).
+  if (!units_flagged && ctx.findings.size() == before) rules::CheckDensityRealizable(ctx, judged);
+  rules::CheckComInsideGeometry(ctx, judged);
+}
+
 // Every per-link rule on link `link_index`, in the order they are judged.
 void CheckLink(RuleContext& ctx, int link_index) {
   const Link& link = ctx.model.links[link_index];
@@ -47,11 +60,13 @@ void CheckLink(RuleContext& ctx, int link_index) {
   rules::CheckProductsSignAgainstGeometry(ctx, judged);
   const bool units_flagged =
       rules::CheckUnits(ctx, judged) || rules::CheckMadeUpInertia(ctx, judged);
-  if (!judged.group_bounds) return;
-  if (valid && !units_flagged && !rules::CheckInertiaFitsGeometry(ctx, judged)) {
-    rules::CheckInertiaFitsHull(ctx, judged);
+  const std::size_t before = ctx.findings.size();
+  CheckLinkGeometry(ctx, judged, units_flagged);
+  // Too compact for any material, where no rule above found the mass or the size wrong (one
+  // finding per defect: a part denser than osmium is also more compact than osmium's ball).
+  if (valid && !units_flagged && ctx.findings.size() == before) {
+    rules::CheckInertiaTooCompact(ctx, judged);
   }
-  rules::CheckComInsideGeometry(ctx, judged);
 }
 
 // The findings from index `first` on were made by rules that judge the welded group as one body
@@ -146,6 +161,8 @@ const std::vector<RuleInfo>& AllRules() {
       rules::UnitsSuspectRule(),
       rules::InertiaAboutOriginSuspectRule(),
       rules::InertiaExceedsGeometryRule(),
+      rules::InertiaBeyondHullRule(),
+      rules::InertiaTooCompactRule(),
       rules::ComOutsideGeometryRule(),
       rules::ComNotMirroredRule(),
       rules::InertiaExceedsModelRule(),

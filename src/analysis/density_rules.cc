@@ -12,6 +12,7 @@
 
 #include "analysis/rule_severity.h"
 #include "massprops/analysis/finding_text.h"
+#include "massprops/analysis/link_measure.h"
 #include "massprops/analysis/materials.h"
 #include "massprops/analysis/welded_groups.h"
 
@@ -89,7 +90,6 @@ Finding MakeFinding(const char* rule, Severity severity, const Model& model, std
 // only tungsten alloys (17 000-19 300) and the precious metals are; a link's mesh reported denser
 // must be beyond lead by kDenseMargin (a tessellated mesh's chord error and a rounded mass move a
 // lead counterweight's density by well under 10%).
-constexpr double kLeadDensity = 11340;
 constexpr double kDenseMargin = 1.1;
 constexpr double kSteelDensity = 7850;  // what the part would weigh in steel, for the evidence
 // The written inertial is the closed meshes' own uniform solid at the written mass when every
@@ -167,6 +167,14 @@ std::optional<Finding> CheckTooDense(const Model& model, const LinkDensity& d, S
                 {"mass_if_steel_kg", kSteelDensity * d.volume}};
   f.help = "write the weighed mass, or run massprops fix --material LINK=NAME";
   return f;
+}
+
+// Whether a density-implausible finding of the hull's (rules/density_realizable.cc) is above
+// osmium's density: its "density" value beyond 22 590 kg/m³ (kOsmiumDensity).
+bool AboveOsmium(const Finding& f) {
+  return std::any_of(f.values.begin(), f.values.end(), [](const auto& value) {
+    return value.first == "density" && value.second > kOsmiumDensity;
+  });
 }
 
 // density-implausible on one link.
@@ -274,8 +282,9 @@ const std::vector<RuleInfo>& DensityRules() {
       {kDensityImplausibleRule, Severity::kWarning, true,
        "A link's mass over the volume of its closed meshes is a density no solid part has "
        "(below 100 kg/m³: only foams; above 1.1 times lead where the inertia is the mesh's own "
-       "uniform solid); markers (meshes that would hold at most 1 g at 100 kg/m³, or 5% of "
-       "their welded group) are not judged."},
+       "uniform solid), or over the hull of its whole geometry: above osmium, or above 1.1 times "
+       "lead where meshes draw it; markers (meshes that would hold at most 1 g at 100 kg/m³, or "
+       "5% of their welded group) are not judged."},
       {kCadDefaultDensityRule, Severity::kWarning, true,
        "Every link with closed meshes (at least 2) has mass = volume × 1000 kg/m³ within 1%: the "
        "CAD export had no material (SolidWorks' default density); said once per model."},
@@ -320,13 +329,26 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
       // out of proportion with its geometry (a mass in grams, a mesh in millimetres), that
       // finding says it; the density would repeat the same unit slip.
       const std::string& name = model.links[d.index].name;
-      if (std::any_of(
-              findings->begin(), findings->begin() + static_cast<std::ptrdiff_t>(before),
-              [&](const Finding& f) { return f.link == name && f.rule == "units-suspect"; })) {
+      const auto first = findings->begin();
+      const auto last = findings->begin() + static_cast<std::ptrdiff_t>(before);
+      if (std::any_of(first, last, [&](const Finding& f) {
+            return f.link == name && f.rule == "units-suspect";
+          })) {
         continue;
       }
-      if (std::optional<Finding> f = CheckDensity(model, d, *implausible)) {
+      std::optional<Finding> f = CheckDensity(model, d, *implausible);
+      if (!f) continue;
+      // The hull of the link's whole geometry may have found it too dense already
+      // (rules/density_realizable.cc): this finding, about its closed meshes' own solid, says
+      // more than the hull's denser-than-lead and takes its place; the hull's denser than osmium
+      // (no body of that mass fits at all) says more than either and stays.
+      const auto hull = std::find_if(first, last, [&](const Finding& g) {
+        return g.link == name && g.rule == kDensityImplausibleRule;
+      });
+      if (hull == last) {
         findings->push_back(std::move(*f));
+      } else if (!AboveOsmium(*hull)) {
+        *hull = std::move(*f);
       }
     }
   }

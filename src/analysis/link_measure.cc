@@ -184,7 +184,8 @@ double LinkMeasure::Support(const Eigen::Vector3d& u) const {
   return h;
 }
 
-LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints>& points) {
+LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints>& points,
+                        bool ellipsoid) {
   LinkMeasure measure;
   std::vector<Eigen::Vector3d> cloud;  // the meshes' positions and the primitives' box corners
   for (const Geometry& g : link.geometries) {
@@ -232,7 +233,8 @@ LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints
       if (!corner) measure.mesh_vertices_B.push_back(v);
     }
   }
-  measure.has_ellipsoid = EnclosingEllipsoid(vertices, &measure.x0, &measure.Q_inverse);
+  measure.has_ellipsoid =
+      ellipsoid && EnclosingEllipsoid(vertices, &measure.x0, &measure.Q_inverse);
   measure.whole = true;
   return measure;
 }

@@ -349,7 +349,11 @@ bool ExplainFromGeometryLinks(const FixArgs& args, const FixInput& input, const 
     }
     const bool repaired = std::any_of(plan.repairs.begin(), plan.repairs.end(),
                                       [&](const Repair& r) { return r.link == link; });
-    if (repaired) continue;
+    // A repair planned and refused is said where the refusals are (its reason and the ways
+    // forward), not as "left as it is".
+    const bool refused = std::any_of(plan.refused.begin(), plan.refused.end(),
+                                     [&](const RefusedRepair& r) { return r.link == link; });
+    if (repaired || refused) continue;
     for (const Model& model : input.read.models) {
       const int index = model.FindLink(link);
       if (index < 0) continue;

@@ -27,6 +27,9 @@ struct CheckStats {
   /// Groups of links carrying the same typed-in numbers whose assemblies were measured
   /// (units-suspect's copied placeholders).
   std::size_t copied_groups = 0;
+  /// Links whose whole geometry was measured (hull, support function, bounding ellipsoid) for
+  /// the bounds of density_realizable.cc.
+  std::size_t link_measures = 0;
 };
 
 /// CheckModel(model, options), and what it measured in `*stats` (set, not added to; nullptr:

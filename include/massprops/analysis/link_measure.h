@@ -49,8 +49,11 @@ struct LinkMeasure {
 double HalfWidthAlong(const Geometry& g, const Eigen::Vector3d& v);
 
 /// The measurement of `link` from its primitives and, for its meshes, `points` (the posed mesh
-/// positions of MakeLinkPointsFunction; nullopt when not read). Never throws.
-LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints>& points);
+/// positions of MakeLinkPointsFunction; nullopt when not read). `ellipsoid` false: no bounding
+/// ellipsoid (Khachiyan's iterations, the measurement's largest cost; has_ellipsoid false).
+/// Never throws.
+LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints>& points,
+                        bool ellipsoid = true);
 
 /// The direction along which a second-moment matrix most exceeds the Bhatia–Davis bound
 /// uᵀΣu <= m·(h(u) − u·c)·(u·c + h(−u)) of a body K grown `scale` times about its box's center.

@@ -30,6 +30,8 @@ const RuleInfo& ProductsSignSuspectRule();        // products_sign_suspect.cc
 const RuleInfo& UnitsSuspectRule();               // units_suspect.cc
 const RuleInfo& InertiaAboutOriginSuspectRule();  // inertia_about_origin_suspect.cc
 const RuleInfo& InertiaExceedsGeometryRule();     // inertia_exceeds_geometry.cc
+const RuleInfo& InertiaBeyondHullRule();          // density_realizable.cc
+const RuleInfo& InertiaTooCompactRule();          // inertia_too_compact.cc
 const RuleInfo& ComOutsideGeometryRule();         // com_outside_geometry.cc
 const RuleInfo& InertiaNearBoundaryRule();        // inertia_not_physical.cc (its note)
 // The rules whose findings the readers make (ReadResult::findings): reader_rules.cc.
@@ -70,6 +72,12 @@ bool CheckInertiaFitsGeometry(RuleContext& ctx, const JudgedLink& judged);
 // direction by their widths (CheckInertiaFitsPrimitives).
 void CheckInertiaFitsHull(RuleContext& ctx, const JudgedLink& judged);
 void CheckInertiaFitsPrimitives(RuleContext& ctx, const JudgedLink& judged);
+// inertia-beyond-hull by the bounds a density inside the convex hull of the link's whole geometry
+// puts on its inertia (direction by direction, and the bounding ellipsoid), and
+// density-implausible by its mass over the hull's volume (density_realizable.cc).
+void CheckDensityRealizable(RuleContext& ctx, const JudgedLink& judged);
+// inertia-too-compact: a trace below that of a ball of the densest material of its mass.
+void CheckInertiaTooCompact(RuleContext& ctx, const JudgedLink& judged);
 // com-outside-geometry.
 void CheckComInsideGeometry(RuleContext& ctx, const JudgedLink& judged);
 
