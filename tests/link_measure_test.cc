@@ -236,3 +236,42 @@ TEST(LinkMeasureTest, NoUniformBoxIsMoreCompactThanABallOfItsDensity) {
 
 }  // namespace
 }  // namespace massprops
+
+namespace massprops {
+namespace {
+
+// InnerVolume is a volume inside the hull: at most MeasureLink's hull volume for random clouds
+// (qhull's), equal to it for a box whose 26 extreme points are its 8 corners (the 0.1 x 0.2 x 0.3
+// box: 0.006 m³), and a primitive's own exact volume (a cylinder r 0.05, l 0.4: π r² l).
+TEST(LinkMeasureTest, TheInnerVolumeIsAtMostTheHullsAndExactForABox) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Eigen::Vector3d> cloud;
+    for (int i = 0; i < 200; ++i) cloud.emplace_back(unit(rng), 0.3 * unit(rng), 2 * unit(rng));
+    const Eigen::Matrix3d R = RandomRotation(rng);
+    for (Eigen::Vector3d& p : cloud) p = R * p;
+    const MeshLink made = MakeMeshLink(cloud);
+    const LinkMeasure measure = MeasureLink(made.link, made.points, false);
+    ASSERT_TRUE(measure.whole);
+    const double inner = InnerVolume(made.link, made.points);
+    EXPECT_GT(inner, 0);
+    EXPECT_LE(inner, measure.volume * (1 + 1e-12)) << trial;
+  }
+  std::vector<Eigen::Vector3d> box;
+  for (int corner = 0; corner < 8; ++corner) {
+    box.emplace_back((corner & 1) ? 0.1 : 0, (corner & 2) ? 0.2 : 0, (corner & 4) ? 0.3 : 0);
+  }
+  const MeshLink made = MakeMeshLink(box);
+  EXPECT_NEAR(InnerVolume(made.link, made.points), 0.006, 1e-15);
+  Link cylinder;
+  Geometry g;
+  g.type = Geometry::Type::kCylinder;
+  g.radius = 0.05;
+  g.length = 0.4;
+  cylinder.geometries.push_back(g);
+  EXPECT_NEAR(InnerVolume(cylinder, std::nullopt), M_PI * 0.0025 * 0.4, 1e-15);
+}
+
+}  // namespace
+}  // namespace massprops

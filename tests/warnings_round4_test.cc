@@ -135,25 +135,38 @@ TEST(WarningsRound4Test, RealPartsThatLookLikeTheDefectsAreQuiet) {
   EXPECT_TRUE(findings.empty()) << Dump(findings);
 }
 
-// Off by default, inertia-beyond-hull says nothing; with density-implausible off too, no link's
-// geometry is measured (a disabled rule costs nothing: issue 50).
-TEST(WarningsRound4Test, TheHullIsMeasuredOnlyForARuleThatIsOn) {
-  const std::string file = kDir + "com-on-face.urdf";
-  EXPECT_TRUE(Select(test_support::CheckAsTheTool(file), "inertia-beyond-hull").empty());
+// What each link's hull costs: built only for a rule that is on and may speak. Off by default,
+// inertia-beyond-hull says nothing; density-implausible builds the hull only where the mass over
+// a volume inside it (InnerVolume: each primitive's own, the hull of the meshes' extreme points)
+// is already beyond its threshold (issue 50: a rule that cannot fire costs one pass).
+std::size_t Measured(const std::string& name, const std::vector<std::string>& on) {
+  const std::string file = kDir + name + ".urdf";
   const ReadResult read = ReadModelFile(file);
-  ASSERT_FALSE(read.models.empty());
+  EXPECT_FALSE(read.models.empty());
+  if (read.models.empty()) return 0;
   MeshResolveOptions resolve;
   resolve.model_file = file;
   resolve.use_environment = false;
   CheckOptions options;
   options.box = MakeLinkBoxFunction(resolve);
   options.points = MakeLinkPointsFunction(resolve);
-  CheckStats on, off;
-  CheckModel(read.models[0], options, &on);
-  EXPECT_EQ(on.link_measures, 2u);  // box_on_face and box_centred
-  options.overrides["density-implausible"] = std::nullopt;
-  CheckModel(read.models[0], options, &off);
-  EXPECT_EQ(off.link_measures, 0u);
+  for (const std::string& rule : on) options.overrides[rule] = Severity::kWarning;
+  CheckStats stats;
+  CheckModel(read.models[0], options, &stats);
+  return stats.link_measures;
+}
+
+TEST(WarningsRound4Test, TheHullIsMeasuredOnlyWhereARuleThatIsOnMaySpeak) {
+  EXPECT_TRUE(Select(test_support::CheckAsTheTool(kDir + "com-on-face.urdf"), "inertia-beyond-hull")
+                  .empty());
+  // com-on-face: 2 kg over its box mesh, 0.006 m³ (its 26 extreme points are its corners),
+  // 333 kg/m³, far below 1.1 times lead: no hull built by default; both boxes with
+  // inertia-beyond-hull on.
+  EXPECT_EQ(Measured("com-on-face", {}), 0u);
+  EXPECT_EQ(Measured("com-on-face", {"inertia-beyond-hull"}), 2u);
+  // heavier-than-osmium: cube (62 500 kg/m³) and finger (13 889) over their boxes; not the lead
+  // counterweight, 11 340 kg/m³ over its own box, which is inside its hull.
+  EXPECT_EQ(Measured("heavier-than-osmium", {}), 2u);
 }
 
 }  // namespace

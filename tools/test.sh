@@ -54,7 +54,7 @@ if [[ -z ${MASSPROPS_SKIP_SANITIZERS:-} ]]; then
   mkdir -p "$asan"
   # In a process group of its own (setsid), so that a failure of the Release pass stops it whole.
   CC=clang-14 CXX=clang++-14 BUILD_DIR="$asan" BUILD_TYPE=Debug setsid "$here/tools/setup.sh" \
-    -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_FUZZ=ON \
+    -DMASSPROPS_WERROR=ON -DMASSPROPS_BUILD_BENCH=OFF -DMASSPROPS_FUZZ=ON -DMASSPROPS_UNITY=ON \
     -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" >"$asan/build.log" 2>&1 &
   asan_pid=$!
 fi

@@ -184,6 +184,73 @@ double LinkMeasure::Support(const Eigen::Vector3d& u) const {
   return h;
 }
 
+namespace {
+
+// The volume of a primitive (exact; 0 for a mesh or an unknown type).
+double PrimitiveVolume(const Geometry& g) {
+  Eigen::Vector3d h;
+  if (!HalfSizes(g, &h)) return 0;
+  switch (g.type) {
+    case Geometry::Type::kBox:
+      return 8 * h.prod();
+    case Geometry::Type::kCylinder:
+      return M_PI * g.radius * g.radius * g.length;
+    case Geometry::Type::kCapsule:
+      return M_PI * g.radius * g.radius * (g.length + 4 * g.radius / 3);
+    case Geometry::Type::kSphere:
+      return 4 * M_PI * g.radius * g.radius * g.radius / 3;
+    case Geometry::Type::kEllipsoid:
+      return 4 * M_PI * h.prod() / 3;
+    default:
+      return 0;
+  }
+}
+
+}  // namespace
+
+double InnerVolume(const Link& link, const std::optional<LinkGeometryPoints>& points) {
+  double volume = 0;
+  for (const Geometry& g : link.geometries) volume = std::max(volume, PrimitiveVolume(g));
+  if (!points || points->posed.empty()) return volume;
+  // 13 axes: the frame's 3, the 6 face diagonals and the 4 body diagonals.
+  std::array<Eigen::Vector3d, 13> axes;
+  int k = 0;
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        const Eigen::Vector3d a(x, y, z);
+        // One of each pair ±a: the first nonzero component positive.
+        const bool first = x > 0 || (x == 0 && (y > 0 || (y == 0 && z > 0)));
+        if (first) axes[k++] = a;
+      }
+    }
+  }
+  std::array<double, 13> low, high;
+  low.fill(HUGE_VAL);
+  high.fill(-HUGE_VAL);
+  std::array<Eigen::Vector3d, 26> extreme;
+  bool finite = true;
+  for (const LinkGeometryPoints::PosedPositions& mesh : points->posed) {
+    for (const Eigen::Vector3d& v : *mesh.positions) {
+      const Eigen::Vector3d p = mesh.X_BG.p_AB + mesh.X_BG.R_AB * v.cwiseProduct(mesh.scale);
+      finite = finite && p.allFinite();
+      for (int i = 0; i < 13; ++i) {
+        const double t = axes[i].dot(p);
+        if (t < low[i]) low[i] = t, extreme[2 * i] = p;
+        if (t > high[i]) high[i] = t, extreme[2 * i + 1] = p;
+      }
+    }
+  }
+  if (!finite || !(high[0] >= low[0])) return volume;
+  std::vector<Eigen::Vector3d> vertices, normals;
+  double hull_volume = 0;
+  if (Hull(std::vector<Eigen::Vector3d>(extreme.begin(), extreme.end()), &vertices, &hull_volume,
+           &normals)) {
+    volume = std::max(volume, hull_volume);
+  }
+  return volume;
+}
+
 LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints>& points,
                         bool ellipsoid) {
   LinkMeasure measure;

@@ -55,6 +55,13 @@ double HalfWidthAlong(const Geometry& g, const Eigen::Vector3d& v);
 LinkMeasure MeasureLink(const Link& link, const std::optional<LinkGeometryPoints>& points,
                         bool ellipsoid = true);
 
+/// A volume inside the convex hull K of `link`'s whole geometry (metres³; 0 when unknown): the
+/// largest of each primitive's own volume and the volume of the hull of the meshes' extreme
+/// points along 13 axes (the frame's, its face and body diagonals), all points of K. One pass over
+/// the meshes' positions and a hull of at most 26 points: a lower bound that lets a rule that
+/// needs volume(K) only above a threshold skip the whole hull (MeasureLink) below it.
+double InnerVolume(const Link& link, const std::optional<LinkGeometryPoints>& points);
+
 /// The direction along which a second-moment matrix most exceeds the Bhatia–Davis bound
 /// uᵀΣu <= m·(h(u) − u·c)·(u·c + h(−u)) of a body K grown `scale` times about its box's center.
 struct DirectionBound {

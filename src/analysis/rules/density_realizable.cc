@@ -141,6 +141,19 @@ bool CheckMassFitsVolume(RuleContext& ctx, const JudgedLink& judged, const LinkM
   return true;
 }
 
+// Whether the mass over the hull of the link's geometry may exceed CheckMassFitsVolume's
+// thresholds: false when it does not even over a volume inside the hull (InnerVolume), so that
+// the hull itself is built only for the few links that may be too dense.
+bool MayBeTooDense(const Link& link, const std::optional<LinkGeometryPoints>& points) {
+  const bool has_mesh =
+      std::any_of(link.geometries.begin(), link.geometries.end(),
+                  [](const Geometry& g) { return g.type == Geometry::Type::kMesh; });
+  const double growth = has_mesh ? 1 : kGeometryMargin * kGeometryMargin * kGeometryMargin;
+  const double threshold = has_mesh ? kDenseMargin * kLeadDensity : kOsmiumDensity;
+  const double inner = growth * InnerVolume(link, points);
+  return !(inner > 0) || link.inertial->mass / inner > threshold;
+}
+
 }  // namespace
 
 void CheckDensityRealizable(RuleContext& ctx, const JudgedLink& judged) {
@@ -157,6 +170,7 @@ void CheckDensityRealizable(RuleContext& ctx, const JudgedLink& judged) {
   const Link& link = *judged.link;
   std::optional<LinkGeometryPoints> points;
   if (ctx.options.points) points = ctx.options.points(link);
+  if (!inertia_on && !MayBeTooDense(link, points)) return;
   const LinkMeasure measure = MeasureLink(link, points, /*ellipsoid=*/inertia_on);
   if (!measure.whole) return;
   ++ctx.stats.link_measures;
