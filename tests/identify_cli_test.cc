@@ -19,26 +19,16 @@
 #include <string>
 
 #include "massprops/io/model_reader.h"
+#include "tool_runner.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kTool = MASSPROPS_TOOL_PATH;
 const std::string kDir = std::string(MASSPROPS_TESTDATA_DIR) + "/identify/";
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-struct ToolRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using massprops::test_support::ReadWholeFile;
+using ToolRun = massprops::test_support::SplitToolRun;
 
 class IdentifyCliTest : public ::testing::Test {
  protected:
@@ -53,17 +43,7 @@ class IdentifyCliTest : public ::testing::Test {
     fs::remove_all(dir_, ec);
   }
 
-  ToolRun Run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        "'" + kTool + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    ToolRun run;
-    run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = ReadFile(out);
-    run.err = ReadFile(err);
-    return run;
-  }
+  ToolRun Run(const std::string& args) { return massprops::test_support::RunToolSplit(args, dir_); }
 
   std::string Robot() const { return (dir_ / "planar_arm.urdf").string(); }
   std::string Csv(const std::string& text) {
@@ -118,7 +98,8 @@ TEST_F(IdentifyCliTest, WriteChangesOnlyInertialNumbersToTheTrueArmsOnes) {
   const ToolRun run =
       Run("identify '" + Robot() + "' '" + kDir + "planar_arm.csv' --write '" + out + "'");
   ASSERT_EQ(run.code, 0) << run.err;
-  EXPECT_EQ(ReadFile(Robot()), ReadFile(kDir + "planar_arm.urdf"));  // the input is untouched
+  EXPECT_EQ(ReadWholeFile(Robot()),
+            ReadWholeFile(kDir + "planar_arm.urdf"));  // the input is untouched
   const massprops::ReadResult read = massprops::ReadModelFile(out);
   ASSERT_TRUE(read.ok() && read.models.size() == 1);
   const massprops::Model& model = read.models[0];
@@ -129,7 +110,7 @@ TEST_F(IdentifyCliTest, WriteChangesOnlyInertialNumbersToTheTrueArmsOnes) {
   EXPECT_NEAR(fore.iyy + fore.mass * (cx * cx + fore.X_BBi.p_AB.z() * fore.X_BBi.p_AB.z()), 0.0696,
               0.0696 * 0.02);
   // Only lines inside <inertial> changed: the others are byte for byte the same.
-  std::istringstream before(ReadFile(kDir + "planar_arm.urdf")), after(ReadFile(out));
+  std::istringstream before(ReadWholeFile(kDir + "planar_arm.urdf")), after(ReadWholeFile(out));
   std::string a, b;
   bool inside = false;
   while (std::getline(before, a) && std::getline(after, b)) {
