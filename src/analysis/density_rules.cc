@@ -90,7 +90,6 @@ Finding MakeFinding(const char* rule, Severity severity, const Model& model, std
 // only tungsten alloys (17 000-19 300) and the precious metals are; a link's mesh reported denser
 // must be beyond lead by kDenseMargin (a tessellated mesh's chord error and a rounded mass move a
 // lead counterweight's density by well under 10%).
-constexpr double kDenseMargin = 1.1;
 constexpr double kSteelDensity = 7850;  // what the part would weigh in steel, for the evidence
 // The written inertial is the closed meshes' own uniform solid at the written mass when every
 // principal moment is within kSolidMatch of the solid's trace and the center of mass within

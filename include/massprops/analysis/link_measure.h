@@ -96,5 +96,9 @@ constexpr int kMaxFaceNormals = 64;
 /// and Physics): no body is more compact than a ball of osmium, and no robot part than one of lead.
 constexpr double kOsmiumDensity = 22590;
 constexpr double kLeadDensity = 11340;
+/// A density reported as denser than lead must pass lead's by this factor: a tessellated mesh's
+/// chord error and a rounded mass move a lead counterweight's density by well under 10%
+/// (density-implausible, over closed meshes and over the hull).
+constexpr double kDenseMargin = 1.1;
 
 }  // namespace massprops

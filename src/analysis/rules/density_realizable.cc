@@ -40,9 +40,6 @@ namespace {
 
 constexpr const char* kInertiaBeyondHull = "inertia-beyond-hull";
 constexpr const char* kDensityImplausible = "density-implausible";
-// A mass over the hull volume denser than this many times lead: the same margin as the closed
-// mesh rule of density_rules.cc (a tessellated mesh's chord error and a rounded mass).
-constexpr double kDenseMargin = 1.1;
 // Where the center of mass is within this share of K's width of a face along u, the help says it
 // sits on that face (the bound there is near 0 whatever the spread).
 constexpr double kOnFaceShare = 0.05;
