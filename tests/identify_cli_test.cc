@@ -19,6 +19,8 @@
 #include <string>
 
 #include "massprops/io/model_reader.h"
+#include "massprops/io/trajectory_csv.h"
+#include "rosbag_writer.h"
 #include "tool_runner.h"
 
 namespace {
@@ -145,6 +147,74 @@ TEST_F(IdentifyCliTest, AMissingColumnIsAnErrorAndNothingIsWritten) {
   EXPECT_EQ(run.code, 2);
   EXPECT_NE(run.err.find("shoulder"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// planar_arm.csv's samples as a rosbag2 file: one sensor_msgs/msg/JointState per row (position,
+// velocity, effort; the recording's accelerations are not in a JointState, so the reader derives
+// them from the velocities), stamped with the row's time, the joints in reversed order on every
+// other message; with a /tf topic beside it.
+std::string PlanarArmBag(const fs::path& path) {
+  const massprops::TrajectoryReadResult csv =
+      massprops::ReadTrajectoryCsvFile(kDir + "planar_arm.csv");
+  EXPECT_TRUE(csv.ok());
+  const massprops::JointTrajectory& t = *csv.trajectory;
+  std::vector<massprops::test_support::TestBagMessage> messages;
+  for (Eigen::Index k = 0; k < t.q.rows(); ++k) {
+    massprops::test_support::TestJointState m;
+    const std::int64_t ns = std::llround(t.time(k) * 1e9);
+    m.sec = static_cast<std::int32_t>(100 + ns / 1000000000);
+    m.nanosec = static_cast<std::uint32_t>(ns % 1000000000);
+    for (Eigen::Index j = 0; j < 2; ++j) {
+      const Eigen::Index at = k % 2 == 0 ? j : 1 - j;
+      m.name.push_back(t.joints[static_cast<std::size_t>(at)]);
+      m.position.push_back(t.q(k, at));
+      m.velocity.push_back(t.dq(k, at));
+      m.effort.push_back(t.tau(k, at));
+    }
+    messages.push_back({"/joint_states", 100000000000 + ns, EncodeJointState(m)});
+    messages.push_back({"/tf", 100000000000 + ns, {0, 1, 0, 0}});
+  }
+  EXPECT_EQ(massprops::test_support::WriteTestBag(path.string(),
+                                                  {{"/tf", "tf2_msgs/msg/TFMessage"},
+                                                   {"/joint_states", "sensor_msgs/msg/JointState"}},
+                                                  messages),
+            "");
+  return path.string();
+}
+
+TEST_F(IdentifyCliTest, ReadsARosbagFileAndABagFolder) {
+  fs::create_directory(dir_ / "bag");
+  std::ofstream(dir_ / "bag" / "metadata.yaml") << "rosbag2_bagfile_information:\n  version: 5\n";
+  const std::string db3 = PlanarArmBag(dir_ / "bag" / "bag_0.db3");
+  for (const std::string& data : {db3, (dir_ / "bag").string()}) {
+    const ToolRun run = Run("identify --format json '" + Robot() + "' '" + data + "'");
+    ASSERT_EQ(run.code, 0) << run.err;
+    EXPECT_NE(run.err.find("ddq derived from dq"), std::string::npos) << run.err;
+    const nlohmann::json doc = nlohmann::json::parse(run.out);
+    EXPECT_EQ(doc["identifiability"]["rank"], 12);  // as from the CSV (Khalil and Dombre §12.4)
+    EXPECT_EQ(doc["training_samples"], 560);        // 800 messages, 0.3 held out
+    for (const auto& joint : doc["joints"]) {
+      // The recording's noise is 0.01 N·m; accelerations derived (10 Hz low-pass of a motion
+      // below 2 Hz) add little: 1.5 times the noise bounds it, the file's values are 5 times off.
+      EXPECT_LT(joint["rms_identified"].get<double>(), 0.015) << joint.dump();
+      EXPECT_GT(joint["rms_file"].get<double>(), 0.05) << joint.dump();
+    }
+  }
+}
+
+TEST_F(IdentifyCliTest, ABagWithoutJointStatesIsAnErrorAndNothingIsWritten) {
+  const std::string db3 = (dir_ / "tf_only.db3").string();
+  ASSERT_EQ(massprops::test_support::WriteTestBag(db3, {{"/tf", "tf2_msgs/msg/TFMessage"}},
+                                                  {{"/tf", 1, {0, 1, 0, 0}}}),
+            "");
+  const std::string out = (dir_ / "never.urdf").string();
+  const ToolRun run = Run("identify '" + Robot() + "' '" + db3 + "' --write '" + out + "'");
+  EXPECT_EQ(run.code, 2);
+  EXPECT_NE(run.err.find(db3 + ": the bag has no topic of type sensor_msgs/msg/JointState"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(run.out.empty());
 }
 
 TEST_F(IdentifyCliTest, WritingAnSdfIsAClearError) {

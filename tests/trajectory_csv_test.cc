@@ -137,6 +137,35 @@ TEST(TrajectoryCsvTest, ACutoffAboveHalfTheSamplingRateIsAnError) {
   EXPECT_NE(Messages(r).find("cutoff 60"), std::string::npos) << Messages(r);
 }
 
+// testdata/identify/plotjuggler_joint_states.csv has the columns PlotJuggler's CSV export writes
+// for a sensor_msgs/JointState topic /joint_states (its ROS parsers name each joint's series
+// `<topic>/<joint>/position`, `/velocity`, `/effort`; the export's time column is `__time`), with
+// values set by hand: row k at 1764660000 + k/100 s, shoulder q = 0.1·k, dq = 10, effort 1.5·k;
+// elbow q = 0.02·k, dq = 2, effort −0.5·k; and the header stamp column, which is not a joint.
+TEST(TrajectoryCsvTest, ReadsPlotJugglersJointStateColumns) {
+  const TrajectoryReadResult r = ReadTrajectoryCsvFile(std::string(MASSPROPS_TESTDATA_DIR) +
+                                                       "/identify/plotjuggler_joint_states.csv");
+  ASSERT_TRUE(r.ok()) << Messages(r);
+  const JointTrajectory& t = *r.trajectory;
+  EXPECT_EQ(t.joints, (std::vector<std::string>{"elbow", "shoulder"}));  // column order
+  ASSERT_EQ(t.q.rows(), 12);
+  EXPECT_NEAR(t.time(11) - t.time(0), 0.11, 1e-6);
+  EXPECT_DOUBLE_EQ(t.q(7, 1), 0.7);
+  EXPECT_DOUBLE_EQ(t.dq(7, 1), 10);
+  EXPECT_DOUBLE_EQ(t.tau(7, 1), 10.5);
+  EXPECT_DOUBLE_EQ(t.q(7, 0), 0.14);
+  EXPECT_DOUBLE_EQ(t.tau(7, 0), -3.5);
+  // No accelerations in a JointState: derived from the velocities (constant, so 0).
+  ASSERT_EQ(t.notes.size(), 2u);
+  EXPECT_NE(t.notes[0].find("ddq derived from dq"), std::string::npos);
+  EXPECT_NEAR(t.ddq(5, 1), 0, 1e-9);
+  // Without the effort columns, the joint is named.
+  const TrajectoryReadResult bad =
+      ReadTrajectoryCsv("__time,/joint_states/elbow/position\n0,1\n", "pj.csv");
+  EXPECT_NE(Messages(bad).find("joint 'elbow' has no 'elbow.tau' column"), std::string::npos)
+      << Messages(bad);
+}
+
 TEST(TrajectoryCsvTest, AMissingFileIsAnError) {
   const TrajectoryReadResult r = ReadTrajectoryCsvFile("/nonexistent/massprops/log.csv");
   EXPECT_FALSE(r.ok());

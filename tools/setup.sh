@@ -13,6 +13,9 @@ packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev lib
           nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libjs-three)
 # The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
 packages+=(libyaml-cpp-dev)
+# rosbag2 recordings for `massprops identify` (src/io/trajectory_rosbag.cc): sqlite3.h at build
+# time; libsqlite3.so.0 is loaded when a bag is read (and the rosbag tests write bags with it).
+packages+=(libsqlite3-dev)
 if [[ -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]]; then
 # The Python module (python/).
 packages+=(pybind11-dev python3-dev python3-numpy)

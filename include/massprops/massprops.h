@@ -29,6 +29,7 @@
 #include "massprops/io/model_reader.h"
 #include "massprops/io/sdf_reader.h"
 #include "massprops/io/trajectory_csv.h"
+#include "massprops/io/trajectory_rosbag.h"
 #include "massprops/io/urdf_reader.h"
 #include "massprops/io/xacro_trace.h"
 

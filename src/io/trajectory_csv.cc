@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/trajectory_filter.h"
+#include "io/trajectory_derive.h"
 #include "massprops/io/model_reader.h"
 
 namespace massprops {
@@ -69,14 +69,42 @@ struct Columns {
   std::map<std::string, std::array<int, 4>> of;
 };
 
+// A PlotJuggler series name of a sensor_msgs/JointState topic, `<topic>/<J>/position` (also
+// `velocity`, `effort`): its joint and kind ("q", "dq", "tau"), or false. PlotJuggler's ROS parsers
+// (plotjuggler_plugins/ParserROS, JointStateMsgParser) name each joint's series so, and its CSV
+// export writes them as columns after `__time`.
+bool PlotJugglerColumn(const std::string& name, std::string* joint, std::string* kind) {
+  if (name.empty() || name[0] != '/') return false;
+  const std::size_t last = name.rfind('/');
+  const std::size_t before = last == 0 ? std::string::npos : name.rfind('/', last - 1);
+  if (before == std::string::npos || before == 0 || before + 1 == last) return false;
+  const std::string field = name.substr(last + 1);
+  if (field == "position")
+    *kind = "q";
+  else if (field == "velocity")
+    *kind = "dq";
+  else if (field == "effort")
+    *kind = "tau";
+  else
+    return false;
+  *joint = name.substr(before + 1, last - before - 1);
+  return true;
+}
+
 Columns FindColumns(const std::vector<std::string>& header) {
   Columns c;
+  int plotjuggler_time = -1;
   for (std::size_t i = 0; i < header.size(); ++i) {
     const std::string& name = header[i];
     if (name == "time") c.time = static_cast<int>(i);
-    const std::size_t dot = name.rfind('.');
-    if (dot == std::string::npos || dot == 0) continue;
-    const std::string joint = name.substr(0, dot), kind = name.substr(dot + 1);
+    if (name == "__time") plotjuggler_time = static_cast<int>(i);
+    std::string joint, kind;
+    if (!PlotJugglerColumn(name, &joint, &kind)) {
+      const std::size_t dot = name.rfind('.');
+      if (dot == std::string::npos || dot == 0) continue;
+      joint = name.substr(0, dot);
+      kind = name.substr(dot + 1);
+    }
     for (int k = 0; k < 4; ++k) {
       if (kind != kKinds[k]) continue;
       if (c.of.count(joint) == 0) {
@@ -86,6 +114,7 @@ Columns FindColumns(const std::vector<std::string>& header) {
       c.of[joint][static_cast<std::size_t>(k)] = static_cast<int>(i);
     }
   }
+  if (c.time < 0) c.time = plotjuggler_time;
   return c;
 }
 
@@ -98,7 +127,8 @@ class CsvReader {
     const Table table = SplitTable(text);
     if (table.header.empty()) return Fail(0, "the file has no header row");
     const Columns columns = FindColumns(table.header);
-    if (columns.time < 0) return Fail(table.header_line, "no 'time' column in the header");
+    if (columns.time < 0)
+      return Fail(table.header_line, "no 'time' column (nor PlotJuggler's '__time') in the header");
     if (columns.joints.empty()) return Fail(table.header_line, "no joint columns ('J.q', 'J.tau')");
     for (const std::string& joint : columns.joints) {
       const auto& of = columns.of.at(joint);
@@ -116,8 +146,12 @@ class CsvReader {
     }
     JointTrajectory t = Fill(table, columns);
     if (!result_.errors.empty()) return std::move(result_);
-    Derive(columns, &t);
-    if (result_.errors.empty()) result_.trajectory = std::move(t);
+    std::vector<io_internal::RecordedDerivatives> recorded;
+    for (const std::string& joint : t.joints)
+      recorded.push_back({columns.of.at(joint)[1] >= 0, columns.of.at(joint)[2] >= 0});
+    const std::string error = io_internal::DeriveMissingDerivatives(recorded, options_, &t);
+    if (!error.empty()) return Fail(0, error);
+    result_.trajectory = std::move(t);
     return std::move(result_);
   }
 
@@ -175,64 +209,6 @@ class CsvReader {
       return 0;
     }
     return value;
-  }
-
-  // dq from q and ddq from dq where the file has none.
-  void Derive(const Columns& columns, JointTrajectory* t) {
-    double rate = 0;
-    for (std::size_t j = 0; j < t->joints.size(); ++j) {
-      const auto& of = columns.of.at(t->joints[j]);
-      if (of[1] >= 0 && of[2] >= 0) continue;
-      if (rate == 0 && !(rate = SampleRate(t->time))) return;
-      const Eigen::Index col = static_cast<Eigen::Index>(j);
-      using io_internal::CentralDifference;
-      using io_internal::LowPassZeroPhase;
-      if (of[1] < 0) {
-        t->dq.col(col) =
-            CentralDifference(t->time, LowPassZeroPhase(t->q.col(col), rate, options_.cutoff_hz));
-      }
-      if (of[2] < 0) {
-        const Eigen::VectorXd dq = of[1] < 0
-                                       ? Eigen::VectorXd(t->dq.col(col))
-                                       : LowPassZeroPhase(t->dq.col(col), rate, options_.cutoff_hz);
-        t->ddq.col(col) = CentralDifference(t->time, dq);
-      }
-      const char* what = of[1] >= 0   ? "ddq derived from dq"
-                         : of[2] >= 0 ? "dq derived from q"
-                                      : "dq and ddq derived from q";
-      std::ostringstream note;
-      note << "joint '" << t->joints[j] << "': " << what << " (zero-phase low-pass "
-           << options_.cutoff_hz << " Hz, central differences)";
-      t->notes.push_back(note.str());
-    }
-  }
-
-  // The sampling rate from the median interval; 0 (with an error) when it varies by more than
-  // 10% or the cutoff is not below half of it.
-  double SampleRate(const Eigen::VectorXd& time) {
-    std::vector<double> dt(static_cast<std::size_t>(time.size() - 1));
-    for (std::size_t i = 0; i < dt.size(); ++i)
-      dt[i] = time(static_cast<Eigen::Index>(i + 1)) - time(static_cast<Eigen::Index>(i));
-    std::vector<double> sorted = dt;
-    const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-    std::nth_element(sorted.begin(), middle, sorted.end());
-    const double median = sorted[sorted.size() / 2];
-    const auto [lo, hi] = std::minmax_element(dt.begin(), dt.end());
-    if (*hi > 1.1 * median || *lo < 0.9 * median) {
-      Error(0, "the sampling interval varies from " + std::to_string(*lo) + " to " +
-                   std::to_string(*hi) +
-                   " s: velocities and accelerations can be derived only "
-                   "from a constant rate (give the 'J.dq' and 'J.ddq' columns)");
-      return 0;
-    }
-    const double rate = 1 / median;
-    if (!(options_.cutoff_hz > 0 && options_.cutoff_hz < rate / 2)) {
-      Error(0, "the filter cutoff " + std::to_string(options_.cutoff_hz) +
-                   " Hz is not between 0 and half the sampling rate (" + std::to_string(rate) +
-                   " Hz)");
-      return 0;
-    }
-    return rate;
   }
 
   std::string file_;

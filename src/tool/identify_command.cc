@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -23,6 +22,7 @@
 #include "massprops/core/rotational_inertia.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/io/trajectory_csv.h"
+#include "massprops/io/trajectory_rosbag.h"
 #include "massprops/output/xml_patch.h"
 #include "safe_write.h"
 
@@ -304,13 +304,6 @@ int RunIdentify(const IdentifyArgs& args) {
     std::cerr << "massprops: error: --write and --in-place exclude each other\n";
     return kExitError;
   }
-  if (std::filesystem::is_directory(args.data) ||
-      (args.data.size() >= 4 && args.data.substr(args.data.size() - 4) == ".db3")) {
-    std::cerr << args.data
-              << ": error: rosbag2 recordings are not read yet; export the joint states to CSV "
-                 "(docs/identify.md)\n";
-    return kExitError;
-  }
   Model model;
   std::optional<KinematicTree> tree;
   if (!ReadRobot(args.robot, &model, &tree)) return kExitError;
@@ -319,7 +312,8 @@ int RunIdentify(const IdentifyArgs& args) {
               << ToString(model.format) << " is read, not written); nothing written\n";
     return kExitError;
   }
-  const TrajectoryReadResult log = ReadTrajectoryCsvFile(args.data);
+  const TrajectoryReadResult log =
+      IsRosbagPath(args.data) ? ReadTrajectoryRosbag(args.data) : ReadTrajectoryCsvFile(args.data);
   for (const ReadError& e : log.errors) std::cerr << e.ToString() << "\n";
   if (!log.ok()) return kExitError;
   for (const std::string& n : log.trajectory->notes)
@@ -360,7 +354,9 @@ void AddIdentifyCommands(CLI::App& app, std::function<int()>* run) {
       ->required();
   identify
       ->add_option("DATA", args->data,
-                   "The recording: CSV with time and, per joint J, J.q, J.tau (J.dq, J.ddq)")
+                   "The recording: CSV with time and, per joint J, J.q, J.tau (J.dq, J.ddq), or "
+                   "PlotJuggler's CSV of /joint_states, or a rosbag2 folder or .db3 file "
+                   "(sensor_msgs/msg/JointState)")
       ->required();
   identify
       ->add_option("--validate", args->validate,

@@ -7,6 +7,11 @@
 /// accelerations from its velocities, by a zero-phase low-pass filter (a second-order Butterworth
 /// run forward and backward, so its phase cancels: a fourth-order magnitude response, -6 dB at
 /// the cutoff) followed by central differences. Columns of other names are ignored.
+///
+/// PlotJuggler's CSV export of a sensor_msgs/JointState topic is read too: its `__time` column as
+/// `time` (when there is no `time`), and `<topic>/J/position`, `<topic>/J/velocity`,
+/// `<topic>/J/effort` (any topic name, e.g. `/joint_states/shoulder/position`) as `J.q`, `J.dq`,
+/// `J.tau`.
 
 #include <Eigen/Core>
 #include <optional>
