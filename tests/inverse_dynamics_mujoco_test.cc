@@ -23,7 +23,6 @@
 #include <tinyxml2.h>
 #include <unistd.h>
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <filesystem>
@@ -34,12 +33,16 @@
 
 #include "massprops/dynamics/inverse_dynamics.h"
 #include "massprops/io/model_reader.h"
+#include "mujoco_dynamics_support.h"
 #include "shared_data.h"
 
 namespace massprops {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::Loaded;
+using test_support::MapToMujoco;
+using test_support::SetInertias;
 
 // Measured (00:33 UTC, 2026-12-02): iiwa 14 and H1 agree to 1.3e-15 and 1.6e-15. NOT yet
 // explained, so not in this list: example-robot-data's panda.urdf differs by 7.2e-6 and its
@@ -67,67 +70,6 @@ std::string WithoutGeometry(const std::string& path, const std::string& name) {
   const std::string out = (dir / name).string();
   EXPECT_EQ(doc.SaveFile(out.c_str()), tinyxml2::XML_SUCCESS);
   return out;
-}
-
-struct Loaded {
-  mjModel* m = nullptr;
-  std::vector<int> dof, qpos, body;  // per joint of the tree
-};
-
-// Maps the tree's joints and bodies to MuJoCo's; checks MuJoCo's compiled mass properties.
-Loaded MapToMujoco(mjModel* m, const KinematicTree& tree) {
-  Loaded out;
-  out.m = m;
-  EXPECT_EQ(m->nv, tree.size()) << "MuJoCo has other joints than the tree";
-  for (const MovingBody& b : tree.bodies) {
-    const int joint = mj_name2id(m, mjOBJ_JOINT, b.joint.c_str());
-    const int body = mj_name2id(m, mjOBJ_BODY, b.link.c_str());
-    EXPECT_GE(joint, 0) << b.joint;
-    EXPECT_GE(body, 0) << b.link;
-    if (joint < 0 || body < 0) return out;
-    EXPECT_EQ(m->jnt_bodyid[joint], body);
-    out.dof.push_back(m->jnt_dofadr[joint]);
-    out.qpos.push_back(m->jnt_qposadr[joint]);
-    out.body.push_back(body);
-    const double mass = b.pi_BBo_B(0);
-    const Eigen::Vector3d c = b.pi_BBo_B.segment<3>(1) / mass;
-    EXPECT_NEAR(m->body_mass[body], mass, 1e-9 * mass) << b.link;
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(m->body_ipos[3 * body + k], c(k), 1e-9) << b.link;
-  }
-  EXPECT_EQ(static_cast<int>(out.body.size()) + 1, m->nbody) << "bodies besides the tree's";
-  return out;
-}
-
-// Sets MuJoCo's mass properties of each body from the tree's parameters, diagonalized to
-// round-off; checks MuJoCo's own principal moments first (to mju_eig3's accuracy).
-void SetInertias(const Loaded& loaded, const KinematicTree& tree) {
-  mjModel* m = loaded.m;
-  for (std::size_t i = 0; i < tree.bodies.size(); ++i) {
-    const InertialParameters& p = tree.bodies[i].pi_BBo_B;
-    const int body = loaded.body[i];
-    const double mass = p(0);
-    const Eigen::Vector3d c = p.segment<3>(1) / mass;
-    Eigen::Matrix3d I_O;
-    I_O << p(4), p(5), p(7), p(5), p(6), p(8), p(7), p(8), p(9);
-    const Eigen::Matrix3d I_c =
-        I_O - mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(I_c);
-    Eigen::Matrix3d R = eig.eigenvectors();
-    if (R.determinant() < 0) R.col(2) *= -1;
-    const Eigen::Quaterniond quat(R);
-    const double scale = eig.eigenvalues().maxCoeff();
-    Eigen::Vector3d mujoco(m->body_inertia[3 * body], m->body_inertia[3 * body + 1],
-                           m->body_inertia[3 * body + 2]);
-    std::sort(mujoco.data(), mujoco.data() + 3);
-    EXPECT_LT((mujoco - eig.eigenvalues()).norm(), 1e-5 * scale) << tree.bodies[i].link;
-    m->body_mass[body] = mass;
-    for (int k = 0; k < 3; ++k) {
-      m->body_ipos[3 * body + k] = c(k);
-      m->body_inertia[3 * body + k] = eig.eigenvalues()(k);
-    }
-    const double q[4] = {quat.w(), quat.x(), quat.y(), quat.z()};
-    for (int k = 0; k < 4; ++k) m->body_iquat[4 * body + k] = q[k];
-  }
 }
 
 // The largest |τ_ours − τ_mujoco| / |τ_mujoco|∞ over random states.
