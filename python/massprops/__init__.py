@@ -55,7 +55,8 @@ __all__ = [
     "CheckOptions", "CompositeInertia", "DEFAULT_VALIDITY_TOLERANCE", "FieldChange", "Finding",
     "FixResult", "Geometry", "Inertial", "Joint", "Link", "Model", "PatchError", "Pose",
     "PrincipalSolver", "ReadError", "Repair", "RotationalInertia", "SourceLocation",
-    "SpatialInertia", "UnitInertia", "WeldedGroup", "check", "diff", "fix", "is_physically_valid",
+    "SpatialInertia", "UnitInertia", "WeldedGroup", "check", "diff", "fix", "identify",
+    "is_physically_valid",
     "principal_moments", "read", "read_all", "repair_inertia", "report", "rules",
 ]
 
@@ -191,6 +192,31 @@ def diff(a: Union[str, "os.PathLike[str]"], b: Union[str, "os.PathLike[str]"], *
     """
     return _massprops._diff(os.fspath(a), os.fspath(b), float(tolerance), target,
                             _strings(model_paths, "model_paths"))
+
+
+def identify(robot: Union[str, "os.PathLike[str]"], data: Union[str, "os.PathLike[str]"], *,
+             validate: float = 0.3) -> dict:
+    """The mass properties a recorded trajectory proves, physically consistent: `massprops
+    identify ROBOT DATA --validate V --format json` as Python data (equal to json.loads of its
+    output; fields in docs/identify.md).
+
+    robot: a URDF, SDF or MJCF file with a fixed base. data: the recording, a CSV file (`time`
+    and per joint `J.q`, `J.tau`, optionally `J.dq`, `J.ddq`; or PlotJuggler's export of
+    /joint_states), or a ROS 2 bag (a rosbag2 folder or .db3 file). validate: the last fraction
+    of the samples held out to judge the fit, 0 to 0.9.
+
+    Returns {"identifiability": {"rank", "parameters", "condition_number", "unexcited_links",
+    "base_parameters"}, "training_samples", "validation_samples", "joints": [{"joint",
+    "rms_file", "rms_least_squares", "rms_identified"}], "links": [{"link", "file",
+    "identified", "least_squares_consistent", "identified_consistent"}],
+    "inconsistent_least_squares_links", "solver"}. Raises ReadError (a file that cannot be read:
+    the model, a missing column, NaN, time going back, a bag without JointState), ValueError (not
+    a fixed-base tree, joints missing on either side, validate out of range, too few samples).
+
+    >>> r = massprops.identify("arm.urdf", "log.csv")
+    >>> [(j["joint"], j["rms_file"], j["rms_identified"]) for j in r["joints"]]
+    """
+    return _massprops._identify(os.fspath(robot), os.fspath(data), float(validate))
 
 
 def _write_atomically(path: str, text: str, mode: Optional[int]) -> None:

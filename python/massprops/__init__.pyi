@@ -321,6 +321,11 @@ def diff(a: Union[str, os.PathLike[str]], b: Union[str, os.PathLike[str]], *,
          tolerance: float = 1e-6, target: Optional[str] = None,
          model_paths: Sequence[str] = ()) -> Dict[str, Any]: ...
 
+# ---------- identification: the report as Python data (identify_bindings.cc; in __init__.py)
+
+def identify(robot: Union[str, os.PathLike[str]], data: Union[str, os.PathLike[str]], *,
+             validate: float = 0.3) -> Dict[str, Any]: ...
+
 # ------------------- fixing: repairs and fixed files (fixing_bindings.cc; fix() in __init__.py)
 
 class FieldChange:

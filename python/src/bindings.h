@@ -26,6 +26,9 @@ void BindFixing(pybind11::module_& m);
 /// The engine of report (reporting_bindings.cc).
 void BindReporting(pybind11::module_& m);
 
+/// The engine of identify (identify_bindings.cc).
+void BindIdentify(pybind11::module_& m);
+
 /// The solver named by `solver`: a PrincipalSolver value or the string "accurate" / "fast".
 /// Throws pybind11::value_error (unknown name) or pybind11::type_error (another type).
 PrincipalSolver ToSolver(const pybind11::handle& solver);

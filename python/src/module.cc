@@ -26,4 +26,5 @@ PYBIND11_MODULE(_massprops, m) {
   massprops::python::BindChecking(m);
   massprops::python::BindFixing(m);
   massprops::python::BindReporting(m);
+  massprops::python::BindIdentify(m);
 }

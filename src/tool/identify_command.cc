@@ -11,7 +11,6 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "massprops/io/model_reader.h"
 #include "massprops/io/trajectory_csv.h"
 #include "massprops/io/trajectory_rosbag.h"
+#include "massprops/output/identify_report.h"
 #include "massprops/output/xml_patch.h"
 #include "safe_write.h"
 
@@ -53,29 +53,6 @@ std::string Triple(Eigen::Vector3d v) {
     if (std::abs(v[k]) < 1e-9 * largest) v[k] = 0;
   }
   return "(" + Number(v[0]) + ", " + Number(v[1]) + ", " + Number(v[2]) + ")";
-}
-
-// A body's mass, center of mass, central inertia (in B) and principal moments, from π.
-struct CentralProperties {
-  double mass = 0;
-  Eigen::Vector3d com = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d I_BBcm_B = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d principal = Eigen::Vector3d::Zero();
-};
-
-CentralProperties Central(const InertialParameters& pi) {
-  CentralProperties out;
-  out.mass = pi[0];
-  if (!(pi[0] > 0) || !pi.allFinite()) return out;
-  out.com = pi.segment<3>(1) / pi[0];
-  Eigen::Matrix3d I;
-  I << pi[4], pi[5], pi[7], pi[5], pi[6], pi[8], pi[7], pi[8], pi[9];
-  const Eigen::Vector3d& c = out.com;
-  out.I_BBcm_B = I - pi[0] * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-  const Eigen::Matrix3d& J = out.I_BBcm_B;
-  out.principal = internal::ScaledPrincipalMoments<double>(
-      J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(0, 2), J(1, 2), PrincipalSolver::kAccurate);
-  return out;
 }
 
 void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const IdentifyResult& r) {
@@ -121,7 +98,8 @@ void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const Identi
   std::cout << "; the consistent fit " << r.solver_status << " in " << r.solver_iterations
             << " iterations\n\nlinks (with the links welded to them), file -> identified:\n";
   for (const BodyEstimate& b : r.bodies) {
-    const CentralProperties before = Central(b.file), after = Central(b.identified);
+    const BodyCentralProperties before = CentralPropertiesOf(b.file),
+                                after = CentralPropertiesOf(b.identified);
     std::cout << "  link '" << b.link << "':\n    mass " << Number(before.mass) << " -> "
               << Number(after.mass) << " kg\n    center of mass " << Triple(before.com) << " -> "
               << Triple(after.com) << " m\n    principal moments " << Triple(before.principal)
@@ -129,62 +107,8 @@ void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const Identi
   }
 }
 
-nlohmann::json Vector(const Eigen::VectorXd& v) {
-  nlohmann::json out = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(v[i]);
-  return out;
-}
-
-nlohmann::json BodyJson(const InertialParameters& pi) {
-  const CentralProperties p = Central(pi);
-  return {{"mass", p.mass},
-          {"com", Vector(p.com)},
-          {"principal_moments", Vector(p.principal)},
-          {"parameters", Vector(pi)}};
-}
-
 void WriteJson(const KinematicTree& tree, const IdentifyResult& r) {
-  const Identifiability& id = r.identifiability;
-  nlohmann::json base = nlohmann::json::array();
-  for (std::size_t i = 0; i < id.base.size(); ++i) {
-    const Eigen::Index k = static_cast<Eigen::Index>(i);
-    base.push_back({{"name", id.base[i].ToString()},
-                    {"file", r.base_file[k]},
-                    {"least_squares", r.base_least_squares[k]},
-                    {"identified", r.base_identified[k]},
-                    {"standard_error", r.base_standard_error[k]}});
-  }
-  nlohmann::json joints = nlohmann::json::array();
-  for (int j = 0; j < tree.size(); ++j) {
-    joints.push_back({{"joint", tree.bodies[j].joint},
-                      {"rms_file", r.rms_file[j]},
-                      {"rms_least_squares", r.rms_least_squares[j]},
-                      {"rms_identified", r.rms_identified[j]}});
-  }
-  nlohmann::json links = nlohmann::json::array();
-  for (const BodyEstimate& b : r.bodies) {
-    links.push_back({{"link", b.link},
-                     {"file", BodyJson(b.file)},
-                     {"identified", BodyJson(b.identified)},
-                     {"least_squares_consistent", b.least_squares_consistent},
-                     {"identified_consistent", b.identified_consistent}});
-  }
-  const nlohmann::json out = {
-      {"identifiability",
-       {{"rank", id.rank},
-        {"parameters", r.column_names.size()},
-        {"condition_number", std::isfinite(id.condition_number)
-                                 ? nlohmann::json(id.condition_number)
-                                 : nlohmann::json(nullptr)},
-        {"unexcited_links", r.unexcited_links},
-        {"base_parameters", base}}},
-      {"training_samples", r.training_samples},
-      {"validation_samples", r.validation_samples},
-      {"joints", joints},
-      {"links", links},
-      {"inconsistent_least_squares_links", r.inconsistent_least_squares_links},
-      {"solver", {{"status", r.solver_status}, {"iterations", r.solver_iterations}}}};
-  std::cout << out.dump(2) << "\n";
+  std::cout << RenderIdentifyJson(tree, r);
 }
 
 // x to `digits` significant digits, or 0 when below 1e-9 of `scale` (round-off of a value the
@@ -199,7 +123,7 @@ double Rounded(double x, double scale, int digits) {
 // The <inertial> of central properties p, its inertia expressed in the inertial frame Bi whose
 // rotation R_BBi is kept from the file, with the fewest significant digits (6 at least) whose
 // inertia is still valid: a fit whose constraint is active sits on the triangle inequality.
-Inertial RoundedInertial(const CentralProperties& p, const Eigen::Matrix3d& R_BBi) {
+Inertial RoundedInertial(const BodyCentralProperties& p, const Eigen::Matrix3d& R_BBi) {
   Inertial a;
   a.X_BBi.R_AB = R_BBi;
   const Eigen::Matrix3d I = R_BBi.transpose() * p.I_BBcm_B * R_BBi;
@@ -239,7 +163,8 @@ std::vector<Repair> PlanWrites(const Model& model, const KinematicTree& tree,
     const int i = model.FindLink(body.link);
     if (i < 0) continue;
     const Link& link = model.links[i];
-    const CentralProperties p = Central(r.bodies[static_cast<std::size_t>(b)].identified);
+    const BodyCentralProperties p =
+        CentralPropertiesOf(r.bodies[static_cast<std::size_t>(b)].identified);
     Repair repair;
     repair.rule = "identify";
     repair.method = "identify";
