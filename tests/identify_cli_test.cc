@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -215,6 +216,37 @@ TEST_F(IdentifyCliTest, ABagWithoutJointStatesIsAnErrorAndNothingIsWritten) {
       << run.err;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_TRUE(run.out.empty());
+}
+
+// The page of --html: Chart.js embedded, and its data block the held-out torques, whose RMS of
+// measured minus identified (computed here) is the report's.
+TEST_F(IdentifyCliTest, HtmlPlotsTheHeldOutTorquesTheReportMeasures) {
+  const std::string page = (dir_ / "identify.html").string();
+  const ToolRun run = Run("identify --format json '" + Robot() + "' '" + kDir +
+                          "planar_arm.csv' --html '" + page + "'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const nlohmann::json report = nlohmann::json::parse(run.out);
+  const std::string html = ReadWholeFile(page);
+  EXPECT_NE(html.find("Chart.js v3.9"), std::string::npos);
+  const std::string open = "<script id=\"identify-data\" type=\"application/json\">";
+  const std::size_t from = html.find(open);
+  ASSERT_NE(from, std::string::npos);
+  const std::size_t to = html.find("</script>", from);
+  const nlohmann::json data =
+      nlohmann::json::parse(html.substr(from + open.size(), to - from - open.size()));
+  EXPECT_EQ(data["first_sample"], 560);  // 800 samples, the last 30% held out
+  ASSERT_EQ(data["joints"].size(), 2u);
+  for (std::size_t j = 0; j < 2; ++j) {
+    const nlohmann::json& joint = data["joints"][j];
+    ASSERT_EQ(joint["measured"].size(), 240u);
+    double sum = 0;
+    for (std::size_t k = 0; k < 240; ++k) {
+      const double e = joint["measured"][k].get<double>() - joint["identified"][k].get<double>();
+      sum += e * e;
+    }
+    const double rms = std::sqrt(sum / 240);
+    EXPECT_NEAR(rms, report["joints"][j]["rms_identified"].get<double>(), 1e-9 * rms);
+  }
 }
 
 TEST_F(IdentifyCliTest, WritingAnSdfIsAClearError) {

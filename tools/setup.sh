@@ -11,6 +11,8 @@ build_dir=${BUILD_DIR:-$here/build}
 
 packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev libcli11-dev
           nlohmann-json3-dev libtomlplusplus-dev libassimp-dev libqhull-dev libjs-three)
+# `massprops identify --html`: Chart.js 3.9, embedded into the tool at build time.
+packages+=(libjs-chart.js)
 # The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
 packages+=(libyaml-cpp-dev)
 # rosbag2 recordings for `massprops identify` (src/io/trajectory_rosbag.cc): sqlite3.h at build

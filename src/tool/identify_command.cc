@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "identify_html.h"
 #include "massprops/analysis/identify.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/core/rotational_inertia.h"
@@ -38,6 +39,7 @@ struct IdentifyArgs {
   std::string write;
   bool in_place = false;
   std::string format = "text";
+  std::string html;
 };
 
 std::string Number(double value) {
@@ -229,6 +231,11 @@ int RunIdentify(const IdentifyArgs& args) {
     std::cerr << "massprops: error: --write and --in-place exclude each other\n";
     return kExitError;
   }
+  if (!args.html.empty() && !IdentifyHtmlAvailable()) {
+    std::cerr << "massprops: error: this massprops was built without Chart.js (Debian package "
+                 "libjs-chart.js), which --html needs\n";
+    return kExitError;
+  }
   Model model;
   std::optional<KinematicTree> tree;
   if (!ReadRobot(args.robot, &model, &tree)) return kExitError;
@@ -262,7 +269,17 @@ int RunIdentify(const IdentifyArgs& args) {
   } else {
     WriteText(args, *tree, result);
   }
-  const int code = writes ? WriteIdentified(args, model, *tree, result) : kExitOk;
+  int code = writes ? WriteIdentified(args, model, *tree, result) : kExitOk;
+  if (!args.html.empty()) {
+    std::vector<std::string> notes;
+    const std::string page =
+        RenderIdentifyHtml(args.robot, args.data, *tree, data, options, result);
+    if (auto error = WriteFileSafely(args.html, page, &notes)) {
+      std::cerr << "massprops: error: " << *error << "\n";
+      code = kExitError;
+    }
+    for (const std::string& n : notes) std::cerr << args.html << ": note: " << n << "\n";
+  }
   return FinishStandardOutput(code);
 }
 
@@ -289,6 +306,9 @@ void AddIdentifyCommands(CLI::App& app, std::function<int()>* run) {
       ->check(CLI::Range(0.0, 0.9));
   identify->add_option("--write", args->write, "Write the identified values into OUT (URDF)");
   identify->add_flag("--in-place", args->in_place, "Write the identified values into ROBOT");
+  identify->add_option("--html", args->html,
+                       "Also write an HTML page of the measured against the predicted torques "
+                       "per joint (held-out samples; Chart.js embedded)");
   identify->add_option("--format", args->format, "Output format")
       ->check(CLI::IsMember({"text", "json"}));
   identify->callback([args, run]() { *run = [args]() { return RunIdentify(*args); }; });
