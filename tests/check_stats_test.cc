@@ -97,19 +97,24 @@ TEST(CheckStatsTest, CopiedPlaceholdersMeasureAssembliesOnlyWhenUnitsSuspectIsOn
 
 // The chain of tools/gen_chain.py (a 1.5 kg box 0.04 x 0.04 x 0.1 m per link, revolute joints
 // 0.1 m apart along z), n links.
-std::string ChainUrdf(int n) {
+// tools/gen_chain.py's chain: joints of `joint_type`; with `massless`, every link but the last
+// has mass 0 and a zero inertia.
+std::string ChainUrdf(int n, const std::string& joint_type = "revolute", bool massless = false) {
   std::string text = "<robot name=\"chain\">\n";
   for (int k = 0; k < n; ++k) {
     const std::string name = "link" + std::to_string(k);
-    text += "<link name=\"" + name +
-            "\"><inertial><origin xyz=\"0 0 0.05\"/><mass value=\"1.5\"/>"
-            "<inertia ixx=\"0.00145\" ixy=\"0\" ixz=\"0\" iyy=\"0.00145\" iyz=\"0\" "
-            "izz=\"0.0004\"/></inertial><collision><origin xyz=\"0 0 0.05\"/><geometry>"
+    const bool light = massless && k < n - 1;
+    text += "<link name=\"" + name + "\"><inertial><origin xyz=\"0 0 0.05\"/>" +
+            (light ? "<mass value=\"0\"/><inertia ixx=\"0\" ixy=\"0\" ixz=\"0\" iyy=\"0\" "
+                     "iyz=\"0\" izz=\"0\"/>"
+                   : "<mass value=\"1.5\"/><inertia ixx=\"0.00145\" ixy=\"0\" ixz=\"0\" "
+                     "iyy=\"0.00145\" iyz=\"0\" izz=\"0.0004\"/>") +
+            "</inertial><collision><origin xyz=\"0 0 0.05\"/><geometry>"
             "<box size=\"0.04 0.04 0.1\"/></geometry></collision></link>\n";
     if (k > 0) {
-      text += "<joint name=\"joint" + std::to_string(k) +
-              "\" type=\"revolute\"><origin xyz=\"0 0 0.1\"/><parent link=\"link" +
-              std::to_string(k - 1) + "\"/><child link=\"" + name +
+      text += "<joint name=\"joint" + std::to_string(k) + "\" type=\"" + joint_type +
+              "\"><origin xyz=\"0 0 0.1\"/><parent link=\"link" + std::to_string(k - 1) +
+              "\"/><child link=\"" + name +
               "\"/><axis xyz=\"0 1 0\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" "
               "velocity=\"1\"/></joint>\n";
     }
@@ -131,6 +136,45 @@ TEST(CheckStatsTest, EachLinkIsMeasuredAgainstTheModelInFarFewerThanAllItsCorner
   // A scan would evaluate all 8 * 2000 corners per link; the index a few leaves of 8 (the
   // farthest corner lies at one end of the chain).
   EXPECT_LT(stats.model_reach_distances, 100u * kLinks);
+}
+
+// A welded chain: every link of the one group asks for the group's composite (whether it
+// weighs in its group), and the composite is composed once, not once per member (issue 50: a
+// group of n links cost n^2).
+TEST(CheckStatsTest, AWeldedGroupIsComposedOnceWhateverItsMembersAsk) {
+  constexpr int kLinks = 300;
+  const ReadResult read = ReadUrdfString(ChainUrdf(kLinks, "fixed"), "welded.urdf");
+  ASSERT_TRUE(read.ok());
+  CheckStats stats;
+  CheckModel(read.models[0], CheckOptions(), &stats);
+  EXPECT_GE(stats.group_composite_questions, static_cast<std::size_t>(kLinks));
+  EXPECT_EQ(stats.group_composites, 1u);
+}
+
+// Massless links carrying the last: each massless link is a moving body that asks what is
+// outboard of it; each link's subtree is composed once, from its child's (n, not n^2 / 2).
+TEST(CheckStatsTest, WhatIsOutboardIsComposedOncePerLink) {
+  constexpr int kLinks = 300;
+  const ReadResult read =
+      ReadUrdfString(ChainUrdf(kLinks, "revolute", /*massless=*/true), "massless.urdf");
+  ASSERT_TRUE(read.ok());
+  CheckStats stats;
+  const std::vector<Finding> found = CheckModel(read.models[0], CheckOptions(), &stats);
+  EXPECT_GE(stats.outboard_questions, static_cast<std::size_t>(kLinks - 1));
+  EXPECT_EQ(stats.subtree_composites, static_cast<std::size_t>(kLinks));
+  // link1 moves on joint1 (about y, at its origin) and carries only the last link, of 1.5 kg
+  // with its COM 0.1 * (299 - 1) + 0.05 = 29.85 m up: the moment about the joint axis is
+  // Iyy + m d^2 = 0.00145 + 1.5 * 29.85^2 (parallel axis theorem, by hand).
+  bool seen = false;
+  for (const Finding& f : found) {
+    if (f.link != "link1") continue;
+    for (const auto& [key, value] : f.values) {
+      if (key != "moment_outboard") continue;
+      EXPECT_NEAR(value, 0.00145 + 1.5 * 29.85 * 29.85, 1e-9) << f.rule;
+      seen = true;
+    }
+  }
+  EXPECT_TRUE(seen);
 }
 
 }  // namespace

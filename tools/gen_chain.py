@@ -1,13 +1,16 @@
 #!/usr/bin/env python3
 """Writes a synthetic serial chain of N links, for the reading benchmarks.
 
-Usage: gen_chain.py N OUT [--sdf | --world]
+Usage: gen_chain.py N OUT [--sdf | --world | --welded | --massless]
 
 Each link has an <inertial> (a 1.5 kg box 0.04 x 0.04 x 0.1 m about its center, which is 0.05 m
 up the link's z axis) and a matching collision box; link k-1 and link k are joined by a revolute
 joint about y, 0.1 m apart. URDF by default; --sdf writes the same chain as SDF 1.9; --world
 writes an SDF 1.9 world of N links in as many models as it takes: chains of WORLD_CHAIN links
 each (the last one shorter), standing 1 m apart on a square grid (a swarm, a multi-robot world).
+--welded writes the URDF chain with every joint fixed (one welded group of N links: what a
+per-link question over its group would make quadratic); --massless the URDF chain whose links
+have mass 0 and a zero inertia but the last (every moving body asks what is outboard of it).
 bench/read_bench.cc builds byte-identical URDF text in C++ (MakeChainUrdf), so its numbers hold
 for the files this script writes.
 """
@@ -18,15 +21,17 @@ IXX = "0.00145"
 IZZ = "0.0004"
 
 
-def urdf_chain(n):
+def urdf_chain(n, joint_type="revolute", massless=False):
     out = ['<?xml version="1.0"?>\n<robot name="chain">\n']
     for k in range(n):
+        light = massless and k < n - 1
+        mass, ixx, izz = ("0", "0", "0") if light else ("1.5", IXX, IZZ)
         out.append(
             f'  <link name="link{k}">\n'
             f'    <inertial>\n'
             f'      <origin xyz="0 0 0.05" rpy="0 0 0"/>\n'
-            f'      <mass value="1.5"/>\n'
-            f'      <inertia ixx="{IXX}" ixy="0" ixz="0" iyy="{IXX}" iyz="0" izz="{IZZ}"/>\n'
+            f'      <mass value="{mass}"/>\n'
+            f'      <inertia ixx="{ixx}" ixy="0" ixz="0" iyy="{ixx}" iyz="0" izz="{izz}"/>\n'
             f'    </inertial>\n'
             f'    <collision>\n'
             f'      <origin xyz="0 0 0.05" rpy="0 0 0"/>\n'
@@ -35,7 +40,7 @@ def urdf_chain(n):
             f'  </link>\n')
         if k > 0:
             out.append(
-                f'  <joint name="joint{k}" type="revolute">\n'
+                f'  <joint name="joint{k}" type="{joint_type}">\n'
                 f'    <origin xyz="0 0 0.1" rpy="0 0 0"/>\n'
                 f'    <parent link="link{k - 1}"/>\n'
                 f'    <child link="link{k}"/>\n'
@@ -104,7 +109,8 @@ def sdf_world(n):
 
 
 def main(argv):
-    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] not in ('--sdf', '--world')):
+    kinds = ('--sdf', '--world', '--welded', '--massless')
+    if len(argv) not in (3, 4) or (len(argv) == 4 and argv[3] not in kinds):
         sys.stderr.write(__doc__)
         return 2
     n = int(argv[1])
@@ -112,7 +118,9 @@ def main(argv):
         sys.stderr.write('N must be at least 1\n')
         return 2
     kind = argv[3] if len(argv) == 4 else '--urdf'
-    text = {'--sdf': sdf_chain, '--world': sdf_world, '--urdf': urdf_chain}[kind](n)
+    text = {'--sdf': sdf_chain, '--world': sdf_world, '--urdf': urdf_chain,
+            '--welded': lambda n: urdf_chain(n, joint_type="fixed"),
+            '--massless': lambda n: urdf_chain(n, massless=True)}[kind](n)
     with open(argv[2], 'w', encoding='utf-8', newline='\n') as f:
         f.write(text)
     return 0

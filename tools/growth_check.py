@@ -3,12 +3,15 @@
 
 CPU time (user + system of the process, best of RUNS: a loaded machine stretches wall time, much
 less the CPU time a process itself uses) and peak resident set of each process, on the synthetic
-chains of tools/gen_chain.py: a URDF chain, and an SDF world of 8-link robots (--world).
+chains of tools/gen_chain.py: a URDF chain, an SDF world of 8-link robots (--world), and
+`check` on two URDF chains that ask per-group and per-subtree questions of every link: one welded
+group of every link (--welded) and massless links carrying the last (--massless).
 
   tools/growth_check.py TOOL
       The CI growth check (ctest -L speed): 2 000 and 32 000 links, best of 3 runs each; fails
       (exit 1) when 16 times the links cost more than 24 times the CPU time (a linear tool costs
-      16 times, a quadratic one 256), for check and report on the URDF chain and the SDF world.
+      16 times, a quadratic one 256), for check and report on the URDF chain and the SDF world,
+      and check on the welded and the massless chain.
   tools/growth_check.py TOOL --curve 1000,10000,100000,1000000 [--runs R] [--check-urdf PATH]
       The table of docs/benchmarks.md (section 11): links against CPU time and peak memory, with
       urdfdom's check_urdf on the same URDF files when it is installed (liburdfdom-tools).
@@ -28,9 +31,9 @@ LIMIT = 24  # times the CPU time allowed for 16 times the links
 
 def generate(n, kind, folder):
     """The file of n links of `kind` ('urdf' or 'world'), written once into `folder`."""
-    path = os.path.join(folder, f"chain{n}.urdf" if kind == "urdf" else f"world{n}.sdf")
+    path = os.path.join(folder, f"world{n}.sdf" if kind == "world" else f"{kind}{n}.urdf")
     if not os.path.exists(path):
-        flags = [] if kind == "urdf" else ["--world"]
+        flags = [] if kind == "urdf" else [f"--{kind}"]
         subprocess.run([sys.executable, os.path.join(HERE, "gen_chain.py"), str(n), path] + flags,
                        check=True)
     return path
@@ -58,10 +61,16 @@ def measure(cmd, env, runs, good_enough=None):
     return best, peak
 
 
+# The files of the growth check: report only where its composites are the question.
+KINDS = ("urdf", "world", "welded", "massless")
+
+
 def commands(tool, kind, path):
     """(label, command) of each measured command on `path`."""
-    return [(f"check {kind}", [tool, "check", "--quiet", path]),
-            (f"report {kind}", [tool, "report", path])]
+    measured = [(f"check {kind}", [tool, "check", "--quiet", path])]
+    if kind in ("urdf", "world"):
+        measured.append((f"report {kind}", [tool, "report", path]))
+    return measured
 
 
 def environment(folder):
@@ -77,7 +86,7 @@ def growth_check(tool, runs):
         print(f"| command | {SMALL} links | {LARGE} links | CPU ratio | peak {SMALL} | "
               f"peak {LARGE} | memory ratio |")
         print("|---|---:|---:|---:|---:|---:|---:|")
-        for kind in ("urdf", "world"):
+        for kind in KINDS:
             small, large = generate(SMALL, kind, folder), generate(LARGE, kind, folder)
             for (label, cmd_small), (_, cmd_large) in zip(commands(tool, kind, small),
                                                           commands(tool, kind, large)):

@@ -90,7 +90,7 @@ void CheckGroup(RuleContext& ctx, const WeldedGroup& group) {
     if (model.links[i].inertial_unreadable) return;
   }
   const Link& root = model.links[group.links.front()];
-  const CompositeInertia composite = CalcCompositeInertia(model, group);
+  const CompositeInertia& composite = ctx.GroupComposite(ctx.group_of[group.links.front()]);
   bool all_massless = true;
   const int contributing = ctx.CountContributingMembers(group, &all_massless);
   const std::string who = group.links.size() > 1

@@ -30,6 +30,14 @@ struct CheckStats {
   /// Links whose whole geometry was measured (hull, support function, bounding ellipsoid) for
   /// the bounds of density_realizable.cc.
   std::size_t link_measures = 0;
+  /// Welded-group composites the rules asked for (each member of a group may ask), and those
+  /// composed: at most one per group.
+  std::size_t group_composite_questions = 0;
+  std::size_t group_composites = 0;
+  /// What is outboard of a link, asked (massless-moving-body) and composed: every link's subtree
+  /// at most once, from its children's, whatever the number of questions.
+  std::size_t outboard_questions = 0;
+  std::size_t subtree_composites = 0;
 };
 
 /// CheckModel(model, options), and what it measured in `*stats` (set, not added to; nullptr:

@@ -264,8 +264,7 @@ std::optional<WorstSpread> FindWorstSpread(const std::vector<const Geometry*>& s
 bool WeighsInItsGroup(const RuleContext& ctx, const JudgedLink& judged) {
   const WeldedGroup& group = ctx.GroupOf(judged.index);
   if (group.links.size() < 2) return true;
-  const CompositeInertia composite = CalcCompositeInertia(ctx.model, group);
-  const double total = composite.I_SScm_R.trace();
+  const double total = ctx.GroupComposite(ctx.group_of[judged.index]).I_SScm_R.trace();
   if (!std::isfinite(total) || !(total > 0)) return true;
   return judged.props.I_SScm_F.trace() >= kMadeUpInertiaShare * total;
 }

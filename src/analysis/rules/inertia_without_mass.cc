@@ -39,7 +39,7 @@ void CheckInertiaWithoutMass(RuleContext& ctx, int link_index, const std::string
   if (!(trace > 0) || !std::isfinite(trace)) return;
   const WeldedGroup& group = ctx.groups[ctx.group_of[link_index]];
   if (!group.is_moving) return;
-  const CompositeInertia composite = CalcCompositeInertia(ctx.model, group);
+  const CompositeInertia& composite = ctx.GroupComposite(ctx.group_of[link_index]);
   const double group_trace = composite.I_SScm_R.trace();
   const double share = group_trace > 0 ? trace / group_trace : 1;
   if (composite.mass > 0 && !(share >= kMadeUpInertiaShare)) return;

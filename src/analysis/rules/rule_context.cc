@@ -157,8 +157,12 @@ RuleContext::RuleContext(const Model& model_in, const CheckOptions& options_in)
     : model(model_in), options(options_in) {
   groups = FindWeldedGroups(model);
   group_of.assign(model.links.size(), -1);
+  index_in_group_.assign(model.links.size(), 0);
   for (std::size_t g = 0; g < groups.size(); ++g) {
-    for (int i : groups[g].links) group_of[i] = static_cast<int>(g);
+    for (std::size_t k = 0; k < groups[g].links.size(); ++k) {
+      group_of[groups[g].links[k]] = static_cast<int>(g);
+      index_in_group_[groups[g].links[k]] = static_cast<int>(k);
+    }
   }
   BuildJointTree();
   sdf_without_inertials = model.format == Model::Format::kSdf && !model.links.empty();
@@ -200,27 +204,60 @@ void RuleContext::BuildJointTree() {
 }
 
 std::optional<CompositeInertia> RuleContext::OutboardComposite(int child_link) const {
-  std::vector<MassProperties> parts;
-  std::vector<std::pair<int, Pose>> stack = {{child_link, Pose()}};
-  std::vector<bool> seen(model.links.size(), false);
-  while (!stack.empty()) {
-    const auto [l, X_CL] = stack.back();
-    stack.pop_back();
-    if (seen[l]) continue;
-    seen[l] = true;
-    const Link& link = model.links[l];
-    if (link.inertial_unreadable) return std::nullopt;
-    const MassProperties props_L = LinkMassProperties(link, model.format);
-    if (props_L.mass != 0 || !props_L.I_SScm_F.isZero(0)) {
-      MassProperties props_C;
-      props_C.mass = props_L.mass;
-      props_C.p_FoScm_F = X_CL.p_AB + X_CL.R_AB * props_L.p_FoScm_F;
-      props_C.I_SScm_F = X_CL.R_AB * props_L.I_SScm_F * X_CL.R_AB.transpose();
-      parts.push_back(props_C);
+  ++stats.outboard_questions;
+  if (!subtrees_composed_) ComposeSubtrees();
+  return subtree_[child_link];
+}
+
+void RuleContext::ComposeSubtrees() const {
+  const std::size_t n = model.links.size();
+  subtree_.assign(n, std::nullopt);
+  subtrees_composed_ = true;
+  // 0: not reached, 1: its children pending, 2: composed (a link reached again while pending,
+  // which only a loop of parents can do, counts as a leaf of nothing, as a visited link did).
+  std::vector<char> state(n, 0);
+  for (std::size_t start = 0; start < n; ++start) {
+    if (state[start] != 0) continue;
+    std::vector<int> stack = {static_cast<int>(start)};
+    while (!stack.empty()) {
+      const int l = stack.back();
+      if (state[l] == 0) {
+        state[l] = 1;
+        for (const auto& [c, j] : children[l]) {
+          (void)j;
+          if (state[c] == 0) stack.push_back(c);
+        }
+        continue;
+      }
+      stack.pop_back();
+      if (state[l] == 2) continue;
+      state[l] = 2;
+      const Link& link = model.links[l];
+      if (link.inertial_unreadable) continue;  // nullopt: unknown
+      std::vector<MassProperties> parts;
+      const MassProperties props_L = LinkMassProperties(link, model.format);
+      if (props_L.mass != 0 || !props_L.I_SScm_F.isZero(0)) parts.push_back(props_L);
+      bool known = true;
+      for (const auto& [c, j] : children[l]) {
+        if (state[c] != 2 || c == l) continue;
+        const std::optional<CompositeInertia>& sub = subtree_[c];
+        if (!sub) {  // an unreadable <inertial> below: unknown
+          known = false;
+          break;
+        }
+        if (sub->mass == 0 && sub->I_SScm_R.isZero(0)) continue;
+        const Pose& X_LC = model.joints[j].X_PC;
+        MassProperties part;
+        part.mass = sub->mass;
+        part.p_FoScm_F = X_LC.p_AB + X_LC.R_AB * sub->p_RoScm_R;
+        part.I_SScm_F = X_LC.R_AB * sub->I_SScm_R * X_LC.R_AB.transpose();
+        parts.push_back(part);
+      }
+      if (!known) continue;
+      subtree_[l] = ComposeMassProperties(parts);
+      ++stats.subtree_composites;
     }
-    for (const auto& [c, j] : children[l]) stack.emplace_back(c, X_CL * model.joints[j].X_PC);
   }
-  return ComposeMassProperties(parts);
 }
 
 std::optional<Severity> RuleContext::SeverityOf(const std::string& rule) const {
@@ -365,7 +402,7 @@ const std::optional<GeometryBounds>& RuleContext::BoundsOfLink(int link_index) c
 std::string RuleContext::GroupNote(int link_index) const {
   const WeldedGroup& group = groups[group_of[link_index]];
   if (group.links.size() < 2) return "";
-  const CompositeInertia composite = CalcCompositeInertia(model, group);
+  const CompositeInertia& composite = GroupComposite(group_of[link_index]);
   if (composite.I_SScm_R.allFinite() && IsValid(composite.I_SScm_R, options.tolerance)) {
     return "; its welded group rooted at '" + group.root_link +
            "' is valid as a whole (as a simulator that merges fixed joints sees it)";
@@ -390,13 +427,15 @@ int RuleContext::CountContributingMembers(const WeldedGroup& group, bool* all_ma
   return contributing;
 }
 
-Pose RuleContext::GroupPoseOf(int link_index) const {
-  const WeldedGroup& group = GroupOf(link_index);
-  Pose X_RL;
-  for (std::size_t k = 0; k < group.links.size(); ++k) {
-    if (group.links[k] == link_index) X_RL = group.X_RL[k];
+const CompositeInertia& RuleContext::GroupComposite(int group_index) const {
+  if (composite_of_group_.empty()) composite_of_group_.resize(groups.size());
+  std::optional<CompositeInertia>& memo = composite_of_group_[group_index];
+  ++stats.group_composite_questions;
+  if (!memo) {
+    memo = CalcCompositeInertia(model, groups[group_index]);
+    ++stats.group_composites;
   }
-  return X_RL;
+  return *memo;
 }
 
 }  // namespace rules

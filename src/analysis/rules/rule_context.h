@@ -148,7 +148,8 @@ class RuleContext {
   bool sdf_without_inertials = false;  // an SDF model none of whose links has an <inertial>
   bool model_note_given = false;       // model-without-inertials said
   std::vector<Finding> findings;
-  CheckStats stats;  // the expensive measurements taken (CheckModel's stats)
+  // The expensive measurements taken (CheckModel's stats; the memos of const questions count too).
+  mutable CheckStats stats;
 
   // Whether `rule` is on in this run (its severity after the overrides): a rule that is off
   // is not computed (Emit would drop every finding of it anyway).
@@ -171,7 +172,9 @@ class RuleContext {
 
   // The composite of link `child_link` and everything outboard of it (its welded group and every
   // group attached below, through any joint, at the zero configuration), about and expressed in
-  // `child_link`'s frame; nullopt when a member's <inertial> could not be read.
+  // `child_link`'s frame; nullopt when a member's <inertial> could not be read. The first call
+  // composes every link's subtree once, leaves first (each from its own part and its children's
+  // composites), so that asking for every link of a chain costs the chain, not its square.
   std::optional<CompositeInertia> OutboardComposite(int child_link) const;
 
   // The known extent of link `link_index`'s geometry (primitives, and mesh boxes through
@@ -183,7 +186,14 @@ class RuleContext {
   JudgedLink JudgeAgainstGeometry(int link_index, const std::string& who, bool valid) const;
 
   // The pose of link `link_index` in the frame of its welded group's root.
-  Pose GroupPoseOf(int link_index) const;
+  const Pose& GroupPoseOf(int link_index) const {
+    return groups[group_of[link_index]].X_RL[index_in_group_[link_index]];
+  }
+
+  // The composite of welded group `group_index` (CalcCompositeInertia), computed once per group:
+  // each member asks for its group's (a per-link question over the group would make a welded
+  // group of n links cost n^2).
+  const CompositeInertia& GroupComposite(int group_index) const;
 
   // How many members of `group` contribute mass or inertia (SDF gives a link without <inertial>
   // mass 1); sets *all_massless to false when some member has a mass.
@@ -205,6 +215,11 @@ class RuleContext {
   std::optional<GeometryBounds> GroupBounds(int link_index, const GeometryBounds& bounds) const;
 
   mutable std::vector<std::optional<std::optional<GeometryBounds>>> bounds_of_link_;
+  std::vector<int> index_in_group_;  // link index -> its place in its group's links and X_RL
+  mutable std::vector<std::optional<CompositeInertia>> composite_of_group_;
+  void ComposeSubtrees() const;
+  mutable std::vector<std::optional<CompositeInertia>> subtree_;  // OutboardComposite's
+  mutable bool subtrees_composed_ = false;
 };
 
 }  // namespace rules

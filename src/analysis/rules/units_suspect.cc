@@ -408,7 +408,7 @@ bool CheckMadeUpInertia(RuleContext& ctx, const JudgedLink& judged) {
   const Link& link = *judged.link;
   const WeldedGroup& group = ctx.groups[ctx.group_of[judged.index]];
   if (group.links.size() < 2) return false;
-  const CompositeInertia composite = CalcCompositeInertia(ctx.model, group);
+  const CompositeInertia& composite = ctx.GroupComposite(ctx.group_of[judged.index]);
   const double total = composite.I_SScm_R.trace();
   if (!(composite.mass > link.inertial->mass) || !(total > 0)) return false;
   // The made-up inertias of a group add up: judge their sum (pr2's head carries eleven frames

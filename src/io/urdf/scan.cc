@@ -34,12 +34,14 @@ bool IsPlain(std::string_view value) {
 // Well below tinyxml2's limit (TINYXML2_MAX_ELEMENT_DEPTH, 100): URDF nests a few levels.
 constexpr std::size_t kMaxDepth = 40;
 
-struct Attribute {
+}  // namespace
+
+// An attribute of the element being scanned (outside the anonymous namespace: a member of
+// IndexScanner, which Reader befriends, may not have a type of internal linkage).
+struct ScannedAttribute {
   std::string_view name;
   std::string_view value;
 };
-
-}  // namespace
 
 class IndexScanner {
  public:
@@ -141,7 +143,7 @@ class IndexScanner {
       const void* close = std::memchr(p_, quote, static_cast<std::size_t>(end_ - p_));
       if (close == nullptr) return false;
       const char* value_end = static_cast<const char*>(close);
-      for (const Attribute& a : attributes_) {
+      for (const ScannedAttribute& a : attributes_) {
         if (a.name == name) return false;  // tinyxml2: XML_ERROR_PARSING_ATTRIBUTE
       }
       attributes_.push_back({name, std::string_view(p_, static_cast<std::size_t>(value_end - p_))});
@@ -215,7 +217,7 @@ class IndexScanner {
     *line = Line(at);
     for (std::size_t k = 0; k < std::size(kInertialNumbers); ++k) {
       if (name != kInertialNumbers[k].element) continue;
-      const Attribute* a = Find(kInertialNumbers[k].attribute);
+      const ScannedAttribute* a = Find(kInertialNumbers[k].attribute);
       if (a == nullptr) continue;
       if (!IsPlain(a->value)) return false;
       numbers_[k] = {true, *line, a->value};
@@ -244,8 +246,8 @@ class IndexScanner {
     }
   }
 
-  const Attribute* Find(std::string_view name) const {
-    for (const Attribute& a : attributes_) {
+  const ScannedAttribute* Find(std::string_view name) const {
+    for (const ScannedAttribute& a : attributes_) {
       if (a.name == name) return &a;
     }
     return nullptr;
@@ -253,7 +255,7 @@ class IndexScanner {
 
   // The attribute `name`, if present, into *out (*present true); false when it is not plain.
   bool Take(std::string_view name, std::string* out, bool* present) const {
-    const Attribute* a = Find(name);
+    const ScannedAttribute* a = Find(name);
     if (a == nullptr) return true;
     if (!IsPlain(a->value)) return false;
     out->assign(a->value);
@@ -305,8 +307,8 @@ class IndexScanner {
   int line_ = 1;
   Reader& reader_;
   UrdfIndex& index_;
-  std::vector<std::string_view> open_;  // the names of the open elements, the root first
-  std::vector<Attribute> attributes_;   // of the element being read
+  std::vector<std::string_view> open_;        // the names of the open elements, the root first
+  std::vector<ScannedAttribute> attributes_;  // of the element being read
   bool in_link_ = false, in_joint_ = false, in_first_inertial_ = false;
   IndexedLink link_;
   IndexedJoint joint_;
