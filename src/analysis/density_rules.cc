@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -322,32 +324,34 @@ void AddDensityFindings(const Model& model, const CheckOptions& options,
   }
   const std::size_t before = findings->size();
   if (implausible) {
+    // The links units-suspect found, and the first hull density finding of each link, looked up
+    // once (a scan of the findings per link would cost links x findings). Names copied: the
+    // findings grow below.
+    std::unordered_set<std::string> unit_slips;
+    std::unordered_map<std::string, std::size_t> hull_finding;
+    for (std::size_t k = 0; k < before; ++k) {
+      const Finding& f = (*findings)[k];
+      if (f.rule == "units-suspect") unit_slips.insert(f.link);
+      if (f.rule == kDensityImplausibleRule) hull_finding.emplace(f.link, k);
+    }
     for (const LinkDensity& d : densities) {
       if (Ignores(model.links[d.index], kDensityImplausibleRule)) continue;
       // One finding per defect: where units-suspect already finds the link's radius of gyration
       // out of proportion with its geometry (a mass in grams, a mesh in millimetres), that
       // finding says it; the density would repeat the same unit slip.
       const std::string& name = model.links[d.index].name;
-      const auto first = findings->begin();
-      const auto last = findings->begin() + static_cast<std::ptrdiff_t>(before);
-      if (std::any_of(first, last, [&](const Finding& f) {
-            return f.link == name && f.rule == "units-suspect";
-          })) {
-        continue;
-      }
+      if (unit_slips.count(name) != 0) continue;
       std::optional<Finding> f = CheckDensity(model, d, *implausible);
       if (!f) continue;
       // The hull of the link's whole geometry may have found it too dense already
       // (rules/density_realizable.cc): this finding, about its closed meshes' own solid, says
       // more than the hull's denser-than-lead and takes its place; the hull's denser than osmium
       // (no body of that mass fits at all) says more than either and stays.
-      const auto hull = std::find_if(first, last, [&](const Finding& g) {
-        return g.link == name && g.rule == kDensityImplausibleRule;
-      });
-      if (hull == last) {
+      const auto hull = hull_finding.find(name);
+      if (hull == hull_finding.end()) {
         findings->push_back(std::move(*f));
-      } else if (!AboveOsmium(*hull)) {
-        *hull = std::move(*f);
+      } else if (!AboveOsmium((*findings)[hull->second])) {
+        (*findings)[hull->second] = std::move(*f);
       }
     }
   }
