@@ -34,7 +34,8 @@ export CCACHE_DIR=${CCACHE_DIR:-$here/build-ccache}
 # The benchmarks named too: tools/run.sh configures the same build/ without them. No precompiled
 # header for the library and the tool in the Release trees (MASSPROPS_PCH, its path differs in each
 # tree): the .deb's and colcon's compile commands equal build/'s, and they hit.
-release_args=(-DMASSPROPS_WERROR=ON -DMASSPROPS_PCH=OFF)
+# Nor a unity build (tools/run.sh configures build/ with one): unit by unit, as the others compile.
+release_args=(-DMASSPROPS_WERROR=ON -DMASSPROPS_PCH=OFF -DMASSPROPS_UNITY=OFF)
 BUILD_DIR="$here/build" "$here/tools/setup.sh" "${release_args[@]}" -DMASSPROPS_BUILD_TESTS=ON \
   -DMASSPROPS_BUILD_BENCH=ON
 phase_done "Release build"
