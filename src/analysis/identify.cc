@@ -98,40 +98,77 @@ std::string StatusInWords(Eigen::LevenbergMarquardtSpace::Status status) {
   }
 }
 
-// Per joint RMS of W·π − τ over the samples of W (rows: samples × joints).
-Eigen::VectorXd JointRms(const Eigen::Ref<const Eigen::MatrixXd>& W, const Eigen::VectorXd& pi,
-                         const Eigen::Ref<const Eigen::VectorXd>& tau, int joints) {
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(joints);
-  const Eigen::VectorXd e = W * pi - tau;
-  const Eigen::Index samples = e.size() / joints;
-  for (Eigen::Index k = 0; k < samples; ++k)
-    for (int j = 0; j < joints; ++j) sum[j] += e[k * joints + j] * e[k * joints + j];
-  return (sum / static_cast<double>(std::max<Eigen::Index>(samples, 1))).cwiseSqrt();
+// The samples [first, first + count) a block at a time: the stacked regressor W of the block's
+// samples (rows: samples × joints, as StackTorqueRegressor orders them) and their torques τ
+// stacked alike, passed to use(W, τ). No matrix of all the samples is made: 20 000 samples of a
+// 7-joint arm made one of 102 MB (and a copy of it beside τ), whose first touch alone cost more
+// CPU than the regressor's arithmetic; a block of 256 samples (1.3 MB there) stays in cache.
+template <typename Use>
+void ForEachSampleBlock(const KinematicTree& tree, const OrderedTrajectory& data,
+                        Eigen::Index first, Eigen::Index count, const RegressorOptions& options,
+                        Use use) {
+  constexpr Eigen::Index kSamplesPerBlock = 256;
+  const Eigen::Index n = tree.size();
+  Eigen::MatrixXd W(std::min(kSamplesPerBlock, count) * n, CountRegressorColumns(tree, options));
+  Eigen::VectorXd tau(W.rows());
+  for (Eigen::Index start = first; start < first + count; start += kSamplesPerBlock) {
+    const Eigen::Index samples = std::min(kSamplesPerBlock, first + count - start);
+    for (Eigen::Index k = 0; k < samples; ++k) {
+      const Eigen::Index s = start + k;
+      CalcTorqueRegressor(tree, data.q.row(s).transpose(), data.dq.row(s).transpose(),
+                          data.ddq.row(s).transpose(), options, W.middleRows(k * n, n));
+      tau.segment(k * n, n) = data.tau.row(s).transpose();
+    }
+    use(W.topRows(samples * n), tau.head(samples * n));
+  }
 }
 
-// Stacks the N × n torques sample by sample, as StackTorqueRegressor orders its rows.
-Eigen::VectorXd StackTorques(const Eigen::MatrixXd& tau) {
-  Eigen::VectorXd out(tau.size());
-  for (Eigen::Index k = 0; k < tau.rows(); ++k)
-    out.segment(k * tau.cols(), tau.cols()) = tau.row(k);
-  return out;
+// Per joint RMS of W·π − τ over the samples [first, first + count), for each π of `pis`.
+std::vector<Eigen::VectorXd> JointRms(const KinematicTree& tree, const OrderedTrajectory& data,
+                                      Eigen::Index first, Eigen::Index count,
+                                      const RegressorOptions& options,
+                                      const std::vector<const Eigen::VectorXd*>& pis) {
+  const int n = tree.size();
+  std::vector<Eigen::VectorXd> sums(pis.size(), Eigen::VectorXd::Zero(n));
+  ForEachSampleBlock(tree, data, first, count, options,
+                     [&](const Eigen::Ref<const Eigen::MatrixXd>& W,
+                         const Eigen::Ref<const Eigen::VectorXd>& tau) {
+                       for (std::size_t i = 0; i < pis.size(); ++i) {
+                         const Eigen::VectorXd e = W * *pis[i] - tau;
+                         for (Eigen::Index r = 0; r < e.size(); ++r) sums[i][r % n] += e[r] * e[r];
+                       }
+                     });
+  for (Eigen::VectorXd& sum : sums)
+    sum = (sum / static_cast<double>(std::max<Eigen::Index>(count, 1))).cwiseSqrt();
+  return sums;
 }
 
 // R of the QR of the fitted samples' [W τ] (min(rows, c + 1) × (c + 1)): ‖W·π − τ‖ = ‖R·[π; −1]‖
 // for every π and W = Q·R, so the rank, the base parameters, the singular values, least squares
-// and the consistent fit are all computed from R, after one QR of the data.
-Eigen::MatrixXd CompressData(const Eigen::Ref<const Eigen::MatrixXd>& W,
-                             const Eigen::Ref<const Eigen::VectorXd>& tau) {
-  const Eigen::Index c = W.cols();
-  Eigen::MatrixXd A(W.rows(), c + 1);
-  A << W, tau;
-  const Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(A);  // in place: no copy of A
-  const Eigen::Index rows = std::min<Eigen::Index>(W.rows(), c + 1);
-  return qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+// and the consistent fit are all computed from R. Computed a block of samples at a time: the R so
+// far stacked on the block's [W τ], decomposed in place, its R kept (the same R up to the signs of
+// its rows, which none of those uses sees: they depend on RᵀR only).
+Eigen::MatrixXd CompressSamples(const KinematicTree& tree, const OrderedTrajectory& data,
+                                Eigen::Index count, const RegressorOptions& options) {
+  const Eigen::Index c = CountRegressorColumns(tree, options);
+  Eigen::MatrixXd A;
+  Eigen::Index kept = 0;  // rows of R at the top of A
+  ForEachSampleBlock(tree, data, 0, count, options,
+                     [&](const Eigen::Ref<const Eigen::MatrixXd>& W,
+                         const Eigen::Ref<const Eigen::VectorXd>& tau) {
+                       if (A.rows() < c + 1 + W.rows()) A.resize(c + 1 + W.rows(), c + 1);
+                       A.middleRows(kept, W.rows()).leftCols(c) = W;
+                       A.middleRows(kept, W.rows()).col(c) = tau;
+                       Eigen::Ref<Eigen::MatrixXd> used = A.topRows(kept + W.rows());
+                       const Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(used);
+                       kept = std::min<Eigen::Index>(kept + W.rows(), c + 1);
+                       A.topRows(kept).triangularView<Eigen::StrictlyLower>().setZero();
+                     });
+  return A.topRows(kept);
 }
 
-// OLS through the base columns of the compressed data R (CompressData of `samples_rows` rows): β̂,
-// its standard errors, and a full π whose base parameters are β̂ and whose dependent parameters
+// OLS through the base columns of the compressed data R (CompressSamples of `samples_rows` rows):
+// β̂, its standard errors, and a full π whose base parameters are β̂ and whose dependent parameters
 // are the prior's (π_base = β̂ − K·π_dependent).
 void FitLeastSquares(const Eigen::MatrixXd& R, Eigen::Index samples_rows,
                      const Eigen::VectorXd& prior, IdentifyResult* out) {
@@ -252,17 +289,14 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
   out.training_samples = static_cast<int>(fit);
   out.validation_samples = static_cast<int>(held);
   out.column_names = RegressorColumnNames(tree, options.regressor);
-  const Eigen::MatrixXd W =
-      StackTorqueRegressor(tree, data.q, data.dq, data.ddq, options.regressor);
-  const Eigen::VectorXd tau = StackTorques(data.tau);
-  const Eigen::MatrixXd R = CompressData(W.topRows(fit * n), tau.head(fit * n));
+  const Eigen::MatrixXd R = CompressSamples(tree, data, fit, options.regressor);
   const Eigen::Index c = R.cols() - 1;
   out.identifiability =
       AnalyzeIdentifiability(R.leftCols(c), out.column_names, options.identifiability);
   out.unexcited_links = UnexcitedLinks(out.identifiability, out.column_names);
   out.file = RegressorParameters(tree, options.regressor);
   FitLeastSquares(R, fit * n, out.file, &out);
-  FitConsistent(tree, R, tau.head(fit * n).squaredNorm(), options, &out);
+  FitConsistent(tree, R, data.tau.topRows(fit).squaredNorm(), options, &out);
   const Eigen::MatrixXd& B = out.identifiability.base_from_full;
   out.base_file = B * out.file;
   out.base_identified = B * out.identified;
@@ -277,12 +311,12 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
     if (!e.least_squares_consistent) ++out.inconsistent_least_squares_links;
     out.bodies.push_back(e);
   }
-  const Eigen::Index first = held > 0 ? fit * n : 0, rows = held > 0 ? held * n : fit * n;
-  const auto W_check = W.middleRows(first, rows);
-  const auto tau_check = tau.segment(first, rows);
-  out.rms_file = JointRms(W_check, out.file, tau_check, n);
-  out.rms_least_squares = JointRms(W_check, out.least_squares, tau_check, n);
-  out.rms_identified = JointRms(W_check, out.identified, tau_check, n);
+  const std::vector<Eigen::VectorXd> rms =
+      JointRms(tree, data, held > 0 ? fit : 0, held > 0 ? held : fit, options.regressor,
+               {&out.file, &out.least_squares, &out.identified});
+  out.rms_file = rms[0];
+  out.rms_least_squares = rms[1];
+  out.rms_identified = rms[2];
   return out;
 }
 

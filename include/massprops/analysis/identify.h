@@ -106,10 +106,11 @@ struct IdentifyResult {
 /// Identifies the inertial parameters of `tree` from `data` (its columns in tree order:
 /// OrderTrajectory). The prior is the tree's own parameters (RegressorParameters). Throws
 /// std::invalid_argument when the shapes disagree with the tree, when validation_fraction is
-/// outside [0, 0.9], or when fewer than 2 samples remain to fit. Cost: the stacked regressor
-/// (docs/benchmarks.md section 12), one Householder QR of [W τ] (O(rows · columns²)); the
-/// identifiability, least squares and every iteration of the fit then work on its R, O(columns³)
-/// at most (the iiwa 14 with 20 000 samples: about 0.9 s of CPU, docs/identify.md).
+/// outside [0, 0.9], or when fewer than 2 samples remain to fit. Cost: the regressor of every
+/// sample (docs/benchmarks.md section 12) and a Householder QR of [W τ] (O(rows · columns²)),
+/// both a block of 256 samples at a time (memory O(256 · joints · columns), never the whole W);
+/// the identifiability, least squares and every iteration of the fit then work on its R,
+/// O(columns³) at most (the iiwa 14 with 20 000 samples: 0.23 s of CPU, docs/identify.md).
 IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data,
                         const IdentifyOptions& options = {});
 
