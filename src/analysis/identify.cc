@@ -156,7 +156,8 @@ Eigen::MatrixXd CompressSamples(const KinematicTree& tree, const OrderedTrajecto
   ForEachSampleBlock(tree, data, 0, count, options,
                      [&](const Eigen::Ref<const Eigen::MatrixXd>& W,
                          const Eigen::Ref<const Eigen::VectorXd>& tau) {
-                       if (A.rows() < c + 1 + W.rows()) A.resize(c + 1 + W.rows(), c + 1);
+                       if (A.rows() < c + 1 + W.rows())
+                         A.conservativeResize(c + 1 + W.rows(), c + 1);
                        A.middleRows(kept, W.rows()).leftCols(c) = W;
                        A.middleRows(kept, W.rows()).col(c) = tau;
                        Eigen::Ref<Eigen::MatrixXd> used = A.topRows(kept + W.rows());
