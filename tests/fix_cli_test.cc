@@ -14,43 +14,26 @@
 #include <vector>
 
 #include "massprops/output/xml_patch.h"
+#include "tool_runner.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kTool = MASSPROPS_TOOL_PATH;
 const std::string kFixDir = std::string(MASSPROPS_TESTDATA_DIR) + "/fix";
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string ReadFile(const fs::path& path) { return massprops::test_support::ReadWholeFile(path); }
 
 void WriteFile(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
 }
 
-struct ToolRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using ToolRun = massprops::test_support::SplitToolRun;
 
 // Runs the tool with `args` (shell words), capturing stdout and stderr.
 ToolRun RunTool(const std::string& args, const fs::path& scratch) {
-  const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string command =
-      "'" + kTool + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int status = std::system(command.c_str());
-  ToolRun run;
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = ReadFile(out);
-  run.err = ReadFile(err);
-  return run;
+  return massprops::test_support::RunToolSplit(args, scratch);
 }
 
 class FixCliTest : public ::testing::Test {

@@ -15,25 +15,17 @@
 #include <string>
 #include <utility>
 
+#include "tool_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kTool = MASSPROPS_TOOL_PATH;
 const std::string kMassDir = std::string(MASSPROPS_TESTDATA_DIR) + "/mass/";
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string ReadFile(const fs::path& path) { return massprops::test_support::ReadWholeFile(path); }
 
-struct ToolRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using ToolRun = massprops::test_support::SplitToolRun;
 
 class FixMassCliTest : public ::testing::Test {
  protected:
@@ -55,17 +47,7 @@ class FixMassCliTest : public ::testing::Test {
     fs::remove_all(dir_, ec);
   }
 
-  ToolRun Run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        "'" + kTool + "' " + args + " >'" + out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    ToolRun run;
-    run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = ReadFile(out);
-    run.err = ReadFile(err);
-    return run;
-  }
+  ToolRun Run(const std::string& args) { return massprops::test_support::RunToolSplit(args, dir_); }
 
   std::string Path(const std::string& name) const { return (dir_ / "mass" / name).string(); }
 
