@@ -43,6 +43,7 @@ namespace fs = std::filesystem;
 using test_support::Loaded;
 using test_support::MapToMujoco;
 using test_support::SetInertias;
+using test_support::WithoutGeometry;
 
 // Measured (00:33 UTC, 2026-12-02): iiwa 14 and H1 agree to 1.3e-15 and 1.6e-15. NOT yet
 // explained, so not in this list: example-robot-data's panda.urdf differs by 7.2e-6 and its
@@ -52,25 +53,6 @@ const char* const kRobots[] = {
     "drake-models/iiwa_description/urdf/iiwa14_no_collision.urdf",
     "unitree_ros/robots/h1_description/urdf/h1.urdf",
 };
-
-// The URDF without <visual> and <collision>, written to a temporary file; its path.
-std::string WithoutGeometry(const std::string& path, const std::string& name) {
-  tinyxml2::XMLDocument doc;
-  EXPECT_EQ(doc.LoadFile(path.c_str()), tinyxml2::XML_SUCCESS) << path;
-  tinyxml2::XMLElement* robot = doc.RootElement();
-  for (tinyxml2::XMLElement* link = robot->FirstChildElement("link"); link;
-       link = link->NextSiblingElement("link")) {
-    for (const char* tag : {"visual", "collision"}) {
-      while (tinyxml2::XMLElement* e = link->FirstChildElement(tag)) link->DeleteChild(e);
-    }
-  }
-  const fs::path dir =
-      fs::temp_directory_path() / ("massprops_id_mujoco_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  const std::string out = (dir / name).string();
-  EXPECT_EQ(doc.SaveFile(out.c_str()), tinyxml2::XML_SUCCESS);
-  return out;
-}
 
 // The largest |τ_ours − τ_mujoco| / |τ_mujoco|∞ over random states.
 double WorstRelativeDifference(const Loaded& loaded, const KinematicTree& tree,

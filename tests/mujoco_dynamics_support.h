@@ -1,6 +1,7 @@
 #pragma once
 // The bridge of the MuJoCo tests of the dynamics (tests/inverse_dynamics_mujoco_test.cc,
-// tests/identify_mujoco_test.cc): a libmujoco model of the same URDF mapped to a KinematicTree
+// tests/identify_mujoco_test.cc): a URDF without its geometry (whose meshes are not all in the
+// corpus) for libmujoco to load; the libmujoco model of the same URDF mapped to a KinematicTree
 // joint by joint and body by body, and its bodies' mass properties set from a tree's parameters.
 // Why each setting (tests/inverse_dynamics_mujoco_test.cc, top): MuJoCo's own compile
 // diagonalizes inertias with mju_eig3, which stops at about 1e-6 rad, so the bodies are set from
@@ -8,15 +9,38 @@
 
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
+#include <tinyxml2.h>
+#include <unistd.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "massprops/dynamics/kinematic_tree.h"
 
 namespace massprops::test_support {
+
+// The URDF without <visual> and <collision>, written to a temporary file; its path.
+inline std::string WithoutGeometry(const std::string& path, const std::string& name) {
+  tinyxml2::XMLDocument doc;
+  EXPECT_EQ(doc.LoadFile(path.c_str()), tinyxml2::XML_SUCCESS) << path;
+  tinyxml2::XMLElement* robot = doc.RootElement();
+  for (tinyxml2::XMLElement* link = robot->FirstChildElement("link"); link;
+       link = link->NextSiblingElement("link")) {
+    for (const char* tag : {"visual", "collision"}) {
+      while (tinyxml2::XMLElement* e = link->FirstChildElement(tag)) link->DeleteChild(e);
+    }
+  }
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("massprops_id_mujoco_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / name).string();
+  EXPECT_EQ(doc.SaveFile(out.c_str()), tinyxml2::XML_SUCCESS);
+  return out;
+}
 
 struct Loaded {
   mjModel* m = nullptr;
