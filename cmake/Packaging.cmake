@@ -86,8 +86,10 @@ file(WRITE "${PROJECT_BINARY_DIR}/debian-control/triggers" "activate-noawait ldc
 set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${PROJECT_BINARY_DIR}/debian-control/triggers")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 # What only some users need: Eigen's headers for find_package(massprops) (the one public
-# dependency), and the interpreter and numpy that `import massprops` runs in.
-set(recommends "libeigen3-dev")
+# dependency), the interpreter and numpy that `import massprops` runs in, and SQLite for
+# `identify` on ROS 2 bags (loaded with dlopen, so dpkg-shlibdeps does not see it:
+# src/io/sqlite_library.h).
+set(recommends "libeigen3-dev, libsqlite3-0")
 if(TARGET massprops-python)
   find_package(Python 3.7 QUIET COMPONENTS Interpreter)  # Python_EXECUTABLE: as python/ chose
   math(EXPR python_next "${Python_VERSION_MINOR} + 1")
