@@ -16,13 +16,33 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "io/joint_state_cdr.h"
+#include "io/sqlite_library.h"
 #include "rosbag_writer.h"
 
 namespace massprops {
 namespace {
+
+// The reader declares SQLite's C API itself (src/io/sqlite_library.h: no sqlite3.h needed to build
+// it); each declaration must be sqlite3.h's.
+using io_internal::SqliteApi;
+static_assert(std::is_same_v<decltype(&sqlite3_open_v2), decltype(SqliteApi::open_v2)>);
+static_assert(std::is_same_v<decltype(&sqlite3_close), decltype(SqliteApi::close)>);
+static_assert(std::is_same_v<decltype(&sqlite3_errmsg), decltype(SqliteApi::errmsg)>);
+static_assert(std::is_same_v<decltype(&sqlite3_prepare_v2), decltype(SqliteApi::prepare_v2)>);
+static_assert(std::is_same_v<decltype(&sqlite3_step), decltype(SqliteApi::step)>);
+static_assert(std::is_same_v<decltype(&sqlite3_finalize), decltype(SqliteApi::finalize)>);
+static_assert(std::is_same_v<decltype(&sqlite3_column_int64), decltype(SqliteApi::column_int64)>);
+static_assert(std::is_same_v<decltype(&sqlite3_column_text), decltype(SqliteApi::column_text)>);
+static_assert(std::is_same_v<decltype(&sqlite3_column_blob), decltype(SqliteApi::column_blob)>);
+static_assert(std::is_same_v<decltype(&sqlite3_column_bytes), decltype(SqliteApi::column_bytes)>);
+static_assert(std::is_same_v<decltype(&sqlite3_bind_int64), decltype(SqliteApi::bind_int64)>);
+static_assert(io_internal::kSqliteOk == SQLITE_OK && io_internal::kSqliteRow == SQLITE_ROW &&
+              io_internal::kSqliteDone == SQLITE_DONE &&
+              io_internal::kSqliteOpenReadOnly == SQLITE_OPEN_READONLY);
 
 namespace fs = std::filesystem;
 using test_support::EncodeJointState;

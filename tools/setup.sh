@@ -15,9 +15,6 @@ packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev lib
 packages+=(libjs-chart.js)
 # The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
 packages+=(libyaml-cpp-dev)
-# rosbag2 recordings for `massprops identify` (src/io/trajectory_rosbag.cc): sqlite3.h at build
-# time; libsqlite3.so.0 is loaded when a bag is read (and the rosbag tests write bags with it).
-packages+=(libsqlite3-dev)
 if [[ -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]]; then
 # The Python module (python/).
 packages+=(pybind11-dev python3-dev python3-numpy)
@@ -32,6 +29,10 @@ fi
 # MASSPROPS_SETUP_BUILD_ONLY=1 (tools/package.sh, action.yml): only what the build needs.
 if [[ -z ${MASSPROPS_SETUP_BUILD_ONLY:-} && -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]]; then
 packages+=(libgtest-dev libgmock-dev libbenchmark-dev libsdformat-dev python3-pytest)
+# The rosbag tests write ROS 2 bags with SQLite's C API (tests/rosbag_writer.h); `massprops
+# identify` itself loads libsqlite3.so.0 (libsqlite3-0) only when it reads a bag, and builds
+# without SQLite (src/io/sqlite_library.h).
+packages+=(libsqlite3-dev)
 # The MuJoCo differential test (tests/target_profile_mujoco_test.cc): libmujoco 2.2.2.
 packages+=(libmujoco-dev)
 # The HTML view (`massprops view`): three.js, embedded at build time; its browser test: headless

@@ -25,7 +25,8 @@ constexpr std::size_t kMaxBagErrors = 20;
 class BagDatabase {
  public:
   BagDatabase(const io_internal::SqliteApi* api, const std::string& file) : api_(api) {
-    if (api_->open_v2(file.c_str(), &db_, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
+    if (api_->open_v2(file.c_str(), &db_, io_internal::kSqliteOpenReadOnly, nullptr) !=
+        io_internal::kSqliteOk)
       error_ = db_ != nullptr ? api_->errmsg(db_) : "cannot be opened";
   }
   ~BagDatabase() {
@@ -40,15 +41,15 @@ class BagDatabase {
   bool Prepare(const char* sql) {
     if (statement_ != nullptr) api_->finalize(statement_);
     statement_ = nullptr;
-    if (api_->prepare_v2(db_, sql, -1, &statement_, nullptr) == SQLITE_OK) return true;
+    if (api_->prepare_v2(db_, sql, -1, &statement_, nullptr) == io_internal::kSqliteOk) return true;
     error_ = std::string("not a rosbag2 SQLite file (") + api_->errmsg(db_) + ")";
     return false;
   }
   // The next row: true while there is one; a failure sets error().
   bool Step() {
     const int rc = api_->step(statement_);
-    if (rc == SQLITE_ROW) return true;
-    if (rc != SQLITE_DONE) error_ = api_->errmsg(db_);
+    if (rc == io_internal::kSqliteRow) return true;
+    if (rc != io_internal::kSqliteDone) error_ = api_->errmsg(db_);
     return false;
   }
   void Bind(int index, std::int64_t value) { api_->bind_int64(statement_, index, value); }
