@@ -296,6 +296,36 @@ TEST_F(RosbagTest, DerivesVelocitiesWhenTheMessagesHaveNone) {
   }
 }
 
+// Several JointState topics: /joint_states is read; without it the choice is an error naming them.
+TEST_F(RosbagTest, PicksJointStatesAmongSeveralAndRefusesToGuess) {
+  std::vector<TestBagMessage> messages = Recording(12);
+  for (int k = 0; k < 12; ++k) {
+    TestJointState other = Sample(k);
+    other.effort = {7, 7};
+    messages.push_back(
+        {"/arm/joint_states", 20000000000 + std::int64_t{k}, EncodeJointState(other)});
+  }
+  const std::string both = (dir_ / "both.db3").string();
+  ASSERT_EQ(WriteTestBag(both, {{"/arm/joint_states", kJointState}, {"/joint_states", kJointState}},
+                         messages),
+            "");
+  const TrajectoryReadResult r = ReadTrajectoryRosbag(both);
+  ASSERT_TRUE(r.ok()) << Messages(r);
+  EXPECT_EQ(r.trajectory->tau(11, 0), 11);  // /joint_states' effort, not /arm/joint_states' 7
+  for (TestBagMessage& m : messages)
+    if (m.topic == "/joint_states") m.topic = "/leg/joint_states";
+  const std::string neither = (dir_ / "neither.db3").string();
+  ASSERT_EQ(WriteTestBag(neither,
+                         {{"/arm/joint_states", kJointState}, {"/leg/joint_states", kJointState}},
+                         messages),
+            "");
+  const std::string e = OnlyError(ReadTrajectoryRosbag(neither), neither);
+  EXPECT_NE(e.find("several sensor_msgs/msg/JointState topics ('/arm/joint_states', "
+                   "'/leg/joint_states') and none is /joint_states"),
+            std::string::npos)
+      << e;
+}
+
 TEST_F(RosbagTest, BadInputsAreErrorsNamingTheFileAndTheProblem) {
   // No JointState topic.
   std::string path = Bag(Recording(12), "no_joint_states.db3", false);
