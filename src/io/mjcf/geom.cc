@@ -16,14 +16,12 @@
 #include <string>
 #include <vector>
 
+#include "io/mjcf/mujoco_numbers.h"
 #include "massprops/mesh/mesh_loader.h"
 
 namespace massprops {
 namespace mjcf {
 namespace {
-
-constexpr double kMjMinVal = 1e-15;
-constexpr double kMjEps = 1e-14;
 
 Pose MakePose(const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
   return {p, q.toRotationMatrix()};

@@ -14,12 +14,13 @@
 #include <cmath>
 #include <vector>
 
+#include "io/mjcf/mujoco_numbers.h"
+
 namespace massprops {
 namespace mjcf {
 namespace {
 
-constexpr double kMjMinVal = 1e-15;  // MuJoCo's mjMINVAL.
-constexpr double kDensity = 1000;    // MuJoCo's default geom density (cancels out).
+constexpr double kDensity = 1000;  // MuJoCo's default geom density (cancels out).
 
 using Vertex = std::array<float, 3>;
 

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "io/mjcf/geom.h"
+#include "io/mjcf/mujoco_numbers.h"
 #include "io/mjcf/tree.h"
 #include "massprops/io/mjcf_reader.h"
 
@@ -16,9 +17,8 @@ namespace {
 
 using mjcf::Context;
 using mjcf::Element;
+using mjcf::kMjMinVal;
 using mjcf::Node;
-
-constexpr double kMjMinVal = 1e-15;
 
 // A body's mass properties as the compiler holds them: mass, the inertial frame (center and
 // principal axes) in the body frame, and the principal moments.

@@ -14,12 +14,13 @@
 #include <set>
 #include <sstream>
 
+#include "io/mjcf/mujoco_numbers.h"
+
 namespace massprops {
 namespace mjcf {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kMjEps = 1e-14;  // MuJoCo's mjEPS.
 
 struct Loader {
   Document* document;
