@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "massprops/io/model_reader.h"
 #include "massprops/io/trajectory_csv.h"
@@ -34,7 +36,7 @@ using massprops::test_support::ReadWholeFile;
 using ToolRun = massprops::test_support::SplitToolRun;
 
 class IdentifyCliTest : public ::testing::Test {
- protected:
+ public:
   void SetUp() override {
     std::string pattern = (fs::temp_directory_path() / "massprops-identify-XXXXXX").string();
     ASSERT_NE(mkdtemp(pattern.data()), nullptr);
@@ -47,6 +49,7 @@ class IdentifyCliTest : public ::testing::Test {
   }
 
   ToolRun Run(const std::string& args) { return massprops::test_support::RunToolSplit(args, dir_); }
+  const fs::path& dir() const { return dir_; }
 
   std::string Robot() const { return (dir_ / "planar_arm.urdf").string(); }
   std::string Csv(const std::string& text) {
@@ -249,13 +252,103 @@ TEST_F(IdentifyCliTest, HtmlPlotsTheHeldOutTorquesTheReportMeasures) {
   }
 }
 
-TEST_F(IdentifyCliTest, WritingAnSdfIsAClearError) {
-  const fs::path sdf = dir_ / "arm.sdf";
-  std::ofstream(sdf) << "<sdf version='1.9'><model name='m'><link name='a'/></model></sdf>";
-  const ToolRun run =
-      Run("identify '" + sdf.string() + "' '" + kDir + "planar_arm.csv' --in-place");
-  EXPECT_EQ(run.code, 2);
-  EXPECT_NE(run.err.find("writes URDF files only"), std::string::npos) << run.err;
+// The lines of `before` and `after` that differ (their count must match): identify --write may
+// change only numbers inside <inertial> elements, so every other line must be byte for byte the
+// same (checked line by line, independently of the writer's own diff).
+std::vector<std::string> ChangedLines(const std::string& before, const std::string& after) {
+  std::istringstream a(before), b(after);
+  std::string x, y;
+  std::vector<std::string> changed;
+  while (std::getline(a, x)) {
+    if (!std::getline(b, y)) return {"line count differs"};
+    if (x != y) changed.push_back(x);
+  }
+  if (std::getline(b, y)) return {"line count differs"};
+  return changed;
+}
+
+// The central rotational inertia, in the body frame, of the written <inertial> (R I R^T) and of
+// the report's parameters [m, m·c, I about the body origin] by the parallel-axis theorem
+// I_cm = I_o − m (|c|² 1 − c cᵀ) (e.g. Featherstone 2008, eq. 2.63).
+Eigen::Matrix3d WrittenCentral(const massprops::Inertial& a) {
+  Eigen::Matrix3d I;
+  I << a.ixx, a.ixy, a.ixz, a.ixy, a.iyy, a.iyz, a.ixz, a.iyz, a.izz;
+  return a.X_BBi.R_AB * I * a.X_BBi.R_AB.transpose();
+}
+Eigen::Matrix3d ReportedCentral(const nlohmann::json& pi) {
+  const double m = pi[0];
+  const Eigen::Vector3d c = Eigen::Vector3d(pi[1], pi[2], pi[3]) / m;
+  Eigen::Matrix3d I_o;
+  I_o << pi[4], pi[5], pi[7], pi[5], pi[6], pi[8], pi[7], pi[8], pi[9];
+  return I_o - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
+}
+
+// Writes the identified values into a copy of the twin `file` and checks them against the JSON
+// report: identify writes at least 6 significant digits (RoundedInertial), so mass, center of
+// mass and tensor agree to 1e-5 of their scale; returns the written text.
+std::string WriteTwinAndCompare(IdentifyCliTest* t, const std::string& file) {
+  const fs::path in = t->dir() / file, out = t->dir() / ("identified-" + file);
+  fs::copy_file(kDir + file, in);
+  const ToolRun run = t->Run("identify --format json '" + in.string() + "' '" + kDir +
+                             "planar_arm.csv' --write '" + out.string() + "'");
+  EXPECT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("identified values of 2 link(s) written"), std::string::npos) << run.err;
+  EXPECT_EQ(ReadWholeFile(in.string()), ReadWholeFile(kDir + file));  // the input is untouched
+  const nlohmann::json doc = nlohmann::json::parse(run.out);
+  const massprops::ReadResult read = massprops::ReadModelFile(out.string());
+  EXPECT_TRUE(read.ok() && read.models.size() == 1);
+  if (!read.ok() || read.models.size() != 1) return "";
+  const massprops::Model& model = read.models[0];
+  for (const nlohmann::json& link : doc["links"]) {
+    const int i = model.FindLink(link["link"].get<std::string>());
+    EXPECT_GE(i, 0) << link.dump();
+    if (i < 0 || !model.links[i].inertial) continue;
+    const massprops::Inertial& a = *model.links[i].inertial;
+    const nlohmann::json& id = link["identified"];
+    const double m = id["mass"];
+    EXPECT_NEAR(a.mass, m, 1e-5 * m) << file;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(a.X_BBi.p_AB[k], id["com"][k].get<double>(), 1e-5 * 0.5) << file << " " << k;
+    }
+    const Eigen::Matrix3d written = WrittenCentral(a), reported = ReportedCentral(id["parameters"]);
+    EXPECT_LT((written - reported).cwiseAbs().maxCoeff(), 1e-5 * reported.trace())
+        << file << "\n"
+        << written << "\n"
+        << reported;
+  }
+  return ReadWholeFile(out.string());
+}
+
+TEST_F(IdentifyCliTest, WritesTheSdfTwinOnlyInItsInertials) {
+  const std::string written = WriteTwinAndCompare(this, "planar_arm.sdf");
+  // Only <pose>, <mass> and tensor elements of the two <inertial> blocks change.
+  for (const std::string& line : ChangedLines(ReadWholeFile(kDir + "planar_arm.sdf"), written)) {
+    const bool inertial_number = line.find("<pose>0.2") != std::string::npos ||
+                                 line.find("<mass>") != std::string::npos ||
+                                 line.find("<i") != std::string::npos;
+    EXPECT_TRUE(inertial_number) << line;
+  }
+}
+
+TEST_F(IdentifyCliTest, WritesTheMjcfTwinKeepingFullinertiaAndQuatDiaginertia) {
+  const std::string written = WriteTwinAndCompare(this, "planar_arm.xml");
+  const std::vector<std::string> changed =
+      ChangedLines(ReadWholeFile(kDir + "planar_arm.xml"), written);
+  ASSERT_EQ(changed.size(), 2u) << written;  // the two <inertial> lines, nothing else
+  for (const std::string& line : changed) EXPECT_NE(line.find("<inertial"), std::string::npos);
+  // The upper arm's tensor stays fullinertia (body axes, MuJoCo's order ixx iyy izz ixy ixz iyz);
+  // the forearm's, written with an orientation, stays quat + diaginertia (principal axes).
+  std::istringstream lines(written);
+  std::string line, upper, fore;
+  while (std::getline(lines, line)) {
+    if (line.find("<inertial") == std::string::npos) continue;
+    (upper.empty() ? upper : fore) = line;
+  }
+  EXPECT_NE(upper.find("fullinertia=\""), std::string::npos) << upper;
+  EXPECT_EQ(upper.find("diaginertia"), std::string::npos) << upper;
+  EXPECT_NE(fore.find("quat=\""), std::string::npos) << fore;
+  EXPECT_NE(fore.find("diaginertia=\""), std::string::npos) << fore;
+  EXPECT_EQ(fore.find("fullinertia"), std::string::npos) << fore;
 }
 
 }  // namespace

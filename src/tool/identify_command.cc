@@ -1,6 +1,7 @@
 // `massprops identify ROBOT DATA` (docs/identify.md, issue 51): the inertial parameters that a
 // recorded trajectory proves, physically consistent (analysis/identify.h), reported per joint and
-// per link, and written back into a URDF with fix's minimal-diff writer. Exit codes:
+// per link, and written back into the URDF, SDF or MJCF file with fix's minimal-diff writer. Exit
+// codes:
 //   0  identified (and written, when asked);
 //   2  a file could not be read, the model is not a fixed-base tree, the data's joints do not
 //      match the model's, the output cannot be written, or the command line is wrong.
@@ -239,11 +240,6 @@ int RunIdentify(const IdentifyArgs& args) {
   Model model;
   std::optional<KinematicTree> tree;
   if (!ReadRobot(args.robot, &model, &tree)) return kExitError;
-  if (writes && model.format != Model::Format::kUrdf) {
-    std::cerr << args.robot << ": error: identify writes URDF files only for now ("
-              << ToString(model.format) << " is read, not written); nothing written\n";
-    return kExitError;
-  }
   const TrajectoryReadResult log =
       IsRosbagPath(args.data) ? ReadTrajectoryRosbag(args.data) : ReadTrajectoryCsvFile(args.data);
   for (const ReadError& e : log.errors) std::cerr << e.ToString() << "\n";
@@ -291,7 +287,8 @@ void AddIdentifyCommands(CLI::App& app, std::function<int()>* run) {
       "identify",
       "Identify the mass properties that recorded joint torques prove (physically consistent, "
       "regularised toward the file's values): identifiability, torque error on held-out samples "
-      "and each link before and after; --write or --in-place writes them into the URDF.");
+      "and each link before and after; --write or --in-place writes them into the URDF, SDF or "
+      "MJCF file.");
   identify->add_option("ROBOT", args->robot, "The model (URDF, SDF or MJCF; fixed base)")
       ->required();
   identify
@@ -304,7 +301,8 @@ void AddIdentifyCommands(CLI::App& app, std::function<int()>* run) {
       ->add_option("--validate", args->validate,
                    "The last FRACTION of the samples is held out to judge the fit (default 0.3)")
       ->check(CLI::Range(0.0, 0.9));
-  identify->add_option("--write", args->write, "Write the identified values into OUT (URDF)");
+  identify->add_option("--write", args->write,
+                       "Write the identified values into OUT (same format as ROBOT)");
   identify->add_flag("--in-place", args->in_place, "Write the identified values into ROBOT");
   identify->add_option("--html", args->html,
                        "Also write an HTML page of the measured against the predicted torques "
