@@ -179,6 +179,7 @@ const std::vector<RuleInfo>& AllRules() {
     all.insert(all.end(), DensityRules().begin(), DensityRules().end());  // density_rules.h
     all.insert(all.end(), TargetRules().begin(), TargetRules().end());    // --target (issue 16)
     all.insert(all.end(), GeometryRules().begin(), GeometryRules().end());
+    all.push_back(rules::InertiaContradictsDataRule());  // check --data LOG (data_contradiction.h)
     return all;
   }();
   return kAll;

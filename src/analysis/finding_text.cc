@@ -34,6 +34,7 @@ enum class Unit {
   kPercent,
   kRatio,
   kCount,
+  kTorque,
   kNone
 };
 
@@ -43,10 +44,10 @@ struct UnitSuffix {
 };
 
 constexpr UnitSuffix kSuffixes[] = {
-    {"_kg_m2", Unit::kInertia}, {"_kg_m3", Unit::kDensity}, {"_m3", Unit::kVolume},
-    {"_m2", Unit::kArea},       {"_kg", Unit::kMass},       {"_m", Unit::kLength},
-    {"_rad", Unit::kRadian},    {"_deg", Unit::kDegree},    {"_percent", Unit::kPercent},
-    {"_ratio", Unit::kRatio},   {"_count", Unit::kCount}};
+    {"_kg_m2", Unit::kInertia},   {"_kg_m3", Unit::kDensity}, {"_m3", Unit::kVolume},
+    {"_m2", Unit::kArea},         {"_kg", Unit::kMass},       {"_n_m", Unit::kTorque},
+    {"_m", Unit::kLength},        {"_rad", Unit::kRadian},    {"_deg", Unit::kDegree},
+    {"_percent", Unit::kPercent}, {"_ratio", Unit::kRatio},   {"_count", Unit::kCount}};
 
 // The unit of `name` and the length of its suffix.
 std::pair<Unit, std::size_t> UnitOf(std::string_view name) {
@@ -182,6 +183,8 @@ std::string FormatEvidenceValue(std::string_view name, double value) {
     case Unit::kCount:
       return std::isfinite(value) ? std::to_string(static_cast<long long>(std::llround(value)))
                                   : FormatSignificant(value);
+    case Unit::kTorque:  // joint torque (N·m; the force of a prismatic joint in N shares it)
+      return FormatSignificant(value) + " N·m";
     case Unit::kNone:
       break;
   }

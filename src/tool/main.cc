@@ -29,6 +29,7 @@
 #include <thread>
 #include <vector>
 
+#include "check_data.h"
 #include "check_pipeline.h"
 #include "commands.h"
 #include "geometry_cli.h"
@@ -72,6 +73,7 @@ struct CheckArgs {
   bool tolerance_given = false;
   std::string config;
   std::vector<std::string> model_paths;
+  std::string data;  // --data LOG (check_data.h)
   bool quiet = false;
   bool brief = false;       // --brief: headlines only
   bool explain = false;     // --explain: the full reasoning under each finding
@@ -442,12 +444,17 @@ int RunCheck(const CheckArgs& args, const char* argv0) {
                                    : ExpandInputs(args, InputsOrExample(args, argv0));
   const std::vector<std::string>& files = inputs.files;
   const std::vector<Settings> settings = LoadSettings(args, cli, explicit_config, files);
+  std::optional<massprops::JointTrajectory> data;
+  if (!args.data.empty() && !(data = massprops::cli::ReadCheckData(args.data))) return kExitError;
 
   std::vector<FileResult> results(files.size());
   massprops::cli::SetMeshJobs(args.jobs, JobCount(args.jobs, files));
   RunInParallel(files.size(), JobCount(args.jobs, files), [&](std::size_t i) {
     results[i] = CheckFile(files[i], settings[i]);
     results[i].fail_on = settings[i].fail_on;
+    if (data && results[i].errors.empty()) {
+      massprops::cli::AddDataFindings(files[i], *data, args.data, settings[i].options, &results[i]);
+    }
   });
   if (xacro) massprops::cli::FinishXacroRun(&*xacro, &results.front());
 
@@ -544,6 +551,7 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
         ->allow_extra_args(false);
   }
   if (wanted.Wants({"--target"})) massprops::cli::AddTargetOption(check, &args->target);
+  if (wanted.Wants({"--data"})) massprops::cli::AddCheckDataOption(check, &args->data);
   if (wanted.Wants({"-q", "--quiet"})) {
     check->add_flag("-q,--quiet", args->quiet, "Only the findings: no summary line, no notes");
   }

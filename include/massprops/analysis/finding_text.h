@@ -41,7 +41,7 @@ std::string FormatInertia(double kg_m2);
 std::string FormatExtents(double x_m, double y_m, double z_m);
 
 /// The value of a named number, by the unit its name ends in: `_kg_m2` kg·m², `_kg_m3` kg/m³,
-/// `_m3` m³, `_m2` m², `_kg` kg, `_m` a length (FormatLength), `_rad` rad, `_deg` °, `_percent`
+/// `_m3` m³, `_m2` m², `_kg` kg, `_n_m` N·m (a joint torque), `_m` a length (FormatLength), `_rad` rad, `_deg` °, `_percent`
 /// %, `ratio` / `_ratio` a ratio (FormatRatio), `_count` an integer; anything else a plain number.
 std::string FormatEvidenceValue(std::string_view name, double value);
 /// The name without its unit, underscores as spaces, the word "com" as "COM": the words a robot

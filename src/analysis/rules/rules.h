@@ -34,6 +34,8 @@ const RuleInfo& InertiaBeyondHullRule();          // density_realizable.cc
 const RuleInfo& InertiaTooCompactRule();          // inertia_too_compact.cc
 const RuleInfo& ComOutsideGeometryRule();         // com_outside_geometry.cc
 const RuleInfo& InertiaNearBoundaryRule();        // inertia_not_physical.cc (its note)
+// Only with `check --data LOG`; listed last (after the geometry rules): data_contradiction.cc.
+const RuleInfo& InertiaContradictsDataRule();
 // The rules whose findings the readers make (ReadResult::findings): reader_rules.cc.
 const RuleInfo& UrdfNotLoadableRule();
 const RuleInfo& InertialUnreadableRule();
