@@ -83,7 +83,19 @@ TEST_F(IdentifyCliTest, JsonReportsIdentifiabilityAndTheHeldOutError) {
               joint["rms_least_squares"].get<double>() * 1.02 + 1e-4)
         << joint.dump();
   }
-  for (const auto& link : doc["links"]) EXPECT_TRUE(link["identified_consistent"]) << link.dump();
+  for (const auto& link : doc["links"]) {
+    EXPECT_TRUE(link["identified_consistent"]) << link.dump();
+    // The standard errors of the consistent estimate (identify_test checks their values against
+    // the spread over noise seeds): present, one per center-of-mass coordinate, not negative.
+    EXPECT_GE(link["identified"]["mass_standard_error"].get<double>(), 0) << link.dump();
+    ASSERT_EQ(link["identified"]["com_standard_error"].size(), 3u) << link.dump();
+    // The forearm's x (along the link) is determined to well under a millimetre with σ 0.01 N·m.
+    if (link["link"] == "fore") {
+      const double se_x = link["identified"]["com_standard_error"][0];
+      EXPECT_GT(se_x, 0) << link.dump();
+      EXPECT_LT(se_x, 1e-3) << link.dump();
+    }
+  }
 }
 
 TEST_F(IdentifyCliTest, TextSaysIdentifiabilityFirstThenJointsThenLinks) {
@@ -97,6 +109,8 @@ TEST_F(IdentifyCliTest, TextSaysIdentifiabilityFirstThenJointsThenLinks) {
   ASSERT_NE(links, std::string::npos) << run.out;
   EXPECT_LT(id, joints);
   EXPECT_LT(joints, links);
+  EXPECT_NE(run.out.find(" kg\n", run.out.find("mass 1.2 -> ", links)), std::string::npos);
+  EXPECT_NE(run.out.find(" ± ", run.out.find("mass 1.2 -> ", links)), std::string::npos) << run.out;
 }
 
 TEST_F(IdentifyCliTest, WriteChangesOnlyInertialNumbersToTheTrueArmsOnes) {

@@ -200,10 +200,50 @@ void FitLeastSquares(const Eigen::MatrixXd& R, Eigen::Index samples_rows,
   out->least_squares = pi;
 }
 
+// The covariance of the consistent estimate over the recording's noise, to first order at the
+// solution x: with J = [J_d; J_p] the Jacobian of the data and prior residuals and H = JᵀJ, a
+// change ε of the torques moves x by −H⁻¹·J_dᵀ·ε, so Cov(x) = σ̂²·H⁻¹·J_dᵀJ_d·H⁻¹ (the sandwich
+// form: the prior shrinks what the data barely see, and the spread over noise with it). σ̂² is the
+// data residual over samples_rows − rank. Assumes independent noise of one variance on every
+// joint and sample, and a fit close to linear over ±σ̂ (no constraint active: the log-Cholesky
+// coordinates have none). Mapped per body to its mass and center of mass c = h/m through
+// dπ/dθ and the Jacobian [−h/m², 1/m] of c.
+void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::VectorXd& x,
+                          Eigen::Index samples_rows, IdentifyResult* out) {
+  Eigen::VectorXd f;
+  Eigen::MatrixXd J;
+  functor(x, f);
+  functor.df(x, J);
+  const Eigen::Index data_rows = functor.R_.rows();
+  const double dof =
+      static_cast<double>(std::max<Eigen::Index>(samples_rows - out->identifiability.rank, 1));
+  const double sigma2 = f.head(data_rows).squaredNorm() / dof;
+  const Eigen::MatrixXd Jd = J.topRows(data_rows);
+  const Eigen::MatrixXd Hinv =
+      (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse();
+  const Eigen::MatrixXd cov = sigma2 * Hinv * (Jd.transpose() * Jd) * Hinv;
+  out->mass_standard_error.resize(functor.bodies_);
+  out->com_standard_error.resize(3, functor.bodies_);
+  for (int b = 0; b < functor.bodies_; ++b) {
+    const Eigen::Matrix<double, 10, 10> D =
+        InertialParametersFromLogCholeskyJacobian(x.segment<10>(10 * b));
+    const Eigen::Matrix<double, 10, 10> cov_pi =
+        D * cov.block<10, 10>(10 * b, 10 * b) * D.transpose();
+    const InertialParameters pi = out->identified.segment<10>(10 * b);
+    const double m = pi[0];
+    Eigen::Matrix<double, 3, 4> G;
+    G.col(0) = -pi.segment<3>(1) / (m * m);
+    G.rightCols<3>() = Eigen::Matrix3d::Identity() / m;
+    const Eigen::Matrix3d cov_c = G * cov_pi.topLeftCorner<4, 4>() * G.transpose();
+    out->mass_standard_error[b] = std::sqrt(std::max(cov_pi(0, 0), 0.0));
+    out->com_standard_error.col(b) = cov_c.diagonal().cwiseMax(0.0).cwiseSqrt();
+  }
+}
+
 // The consistent fit on the compressed data R; sum_squares = Σ τ² of the fitted samples (the data
 // term's scale, which the prior weight is relative to).
 void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& R, double sum_squares,
-                   const IdentifyOptions& options, IdentifyResult* out) {
+                   Eigen::Index samples_rows, const IdentifyOptions& options, IdentifyResult* out) {
   const int n = tree.size();
   double mean_mass = 0;
   int massive = 0;
@@ -226,6 +266,7 @@ void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& R, double s
   out->solver_iterations = functor.jacobians;
   out->solver_status = StatusInWords(status);
   out->identified = functor.Parameters(x);
+  ConsistentCovariance(functor, x, samples_rows, out);
 }
 
 }  // namespace
@@ -297,7 +338,7 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
   out.unexcited_links = UnexcitedLinks(out.identifiability, out.column_names);
   out.file = RegressorParameters(tree, options.regressor);
   FitLeastSquares(R, fit * n, out.file, &out);
-  FitConsistent(tree, R, data.tau.topRows(fit).squaredNorm(), options, &out);
+  FitConsistent(tree, R, data.tau.topRows(fit).squaredNorm(), fit * n, options, &out);
   const Eigen::MatrixXd& B = out.identifiability.base_from_full;
   out.base_file = B * out.file;
   out.base_identified = B * out.identified;

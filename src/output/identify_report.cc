@@ -61,9 +61,15 @@ std::string RenderIdentifyJson(const KinematicTree& tree, const IdentifyResult& 
   }
   nlohmann::json links = nlohmann::json::array();
   for (const BodyEstimate& b : r.bodies) {
+    nlohmann::json identified = IdentifyBodyJson(b.identified);
+    if (r.mass_standard_error.size() == static_cast<Eigen::Index>(r.bodies.size())) {
+      const Eigen::Index k = static_cast<Eigen::Index>(&b - r.bodies.data());
+      identified["mass_standard_error"] = r.mass_standard_error[k];
+      identified["com_standard_error"] = IdentifyVectorJson(r.com_standard_error.col(k));
+    }
     links.push_back({{"link", b.link},
                      {"file", IdentifyBodyJson(b.file)},
-                     {"identified", IdentifyBodyJson(b.identified)},
+                     {"identified", identified},
                      {"least_squares_consistent", b.least_squares_consistent},
                      {"identified_consistent", b.identified_consistent}});
   }

@@ -99,14 +99,21 @@ void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const Identi
   }
   if (!names.empty()) std::cout << " (" << names << ")";
   std::cout << "; the consistent fit " << r.solver_status << " in " << r.solver_iterations
-            << " iterations\n\nlinks (with the links welded to them), file -> identified:\n";
-  for (const BodyEstimate& b : r.bodies) {
+            << " iterations\n\nlinks (with the links welded to them), file -> identified ± its "
+               "standard error over the noise:\n";
+  const bool errors = r.mass_standard_error.size() == static_cast<Eigen::Index>(r.bodies.size());
+  for (std::size_t k = 0; k < r.bodies.size(); ++k) {
+    const BodyEstimate& b = r.bodies[k];
+    const Eigen::Index i = static_cast<Eigen::Index>(k);
     const BodyCentralProperties before = CentralPropertiesOf(b.file),
                                 after = CentralPropertiesOf(b.identified);
     std::cout << "  link '" << b.link << "':\n    mass " << Number(before.mass) << " -> "
-              << Number(after.mass) << " kg\n    center of mass " << Triple(before.com) << " -> "
-              << Triple(after.com) << " m\n    principal moments " << Triple(before.principal)
-              << " -> " << Triple(after.principal) << " kg·m²\n";
+              << Number(after.mass)
+              << (errors ? " ± " + Number(r.mass_standard_error[i]) : std::string()) << " kg\n"
+              << "    center of mass " << Triple(before.com) << " -> " << Triple(after.com)
+              << (errors ? " ± " + Triple(r.com_standard_error.col(i)) : std::string())
+              << " m\n    principal moments " << Triple(before.principal) << " -> "
+              << Triple(after.principal) << " kg·m²\n";
   }
 }
 
