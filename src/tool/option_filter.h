@@ -24,9 +24,10 @@ inline const std::vector<std::string_view>& CheckOptionNames() {
   // clang-format off
   static const std::vector<std::string_view> kNames = {
       "--format", "--color", "--fail-on", "--disable", "--severity", "--tolerance", "--config",
-      "--model-path", "--target", "-q", "--quiet", "--brief", "--explain", "--statistics", "-j",
-      "--jobs", "--list-rules", "--geometry", "--no-geometry", "--geometry-factor", "--package-path",
-      "--no-cache", "--xacro-arg", "--xacro-command", "--expanded", "--source-root"};
+      "--model-path", "--target", "--data", "-q", "--quiet", "--brief", "--explain",
+      "--statistics", "-j", "--jobs", "--list-rules", "--geometry", "--no-geometry",
+      "--geometry-factor", "--package-path", "--no-cache", "--xacro-arg", "--xacro-command",
+      "--expanded", "--source-root"};
   // clang-format on
   return kNames;
 }
