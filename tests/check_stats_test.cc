@@ -99,7 +99,8 @@ TEST(CheckStatsTest, CopiedPlaceholdersMeasureAssembliesOnlyWhenUnitsSuspectIsOn
 // 0.1 m apart along z), n links.
 // tools/gen_chain.py's chain: joints of `joint_type`; with `massless`, every link but the last
 // has mass 0 and a zero inertia.
-std::string ChainUrdf(int n, const std::string& joint_type = "revolute", bool massless = false) {
+std::string ChainUrdf(int n, const std::string& joint_type = "revolute", bool massless = false,
+                      bool collision = true) {
   std::string text = "<robot name=\"chain\">\n";
   for (int k = 0; k < n; ++k) {
     const std::string name = "link" + std::to_string(k);
@@ -109,8 +110,11 @@ std::string ChainUrdf(int n, const std::string& joint_type = "revolute", bool ma
                      "iyz=\"0\" izz=\"0\"/>"
                    : "<mass value=\"1.5\"/><inertia ixx=\"0.00145\" ixy=\"0\" ixz=\"0\" "
                      "iyy=\"0.00145\" iyz=\"0\" izz=\"0.0004\"/>") +
-            "</inertial><collision><origin xyz=\"0 0 0.05\"/><geometry>"
-            "<box size=\"0.04 0.04 0.1\"/></geometry></collision></link>\n";
+            "</inertial>" +
+            (collision ? "<collision><origin xyz=\"0 0 0.05\"/><geometry><box size=\"0.04 "
+                         "0.04 0.1\"/></geometry></collision>"
+                       : "") +
+            "</link>\n";
     if (k > 0) {
       text += "<joint name=\"joint" + std::to_string(k) + "\" type=\"" + joint_type +
               "\"><origin xyz=\"0 0 0.1\"/><parent link=\"link" + std::to_string(k - 1) +
@@ -149,6 +153,19 @@ TEST(CheckStatsTest, AWeldedGroupIsComposedOnceWhateverItsMembersAsk) {
   CheckModel(read.models[0], CheckOptions(), &stats);
   EXPECT_GE(stats.group_composite_questions, static_cast<std::size_t>(kLinks));
   EXPECT_EQ(stats.group_composites, 1u);
+}
+
+// A welded chain with no geometry: no link's own geometry gives its size, so units-suspect asks
+// how far its welded group's geometry reaches from each link; the group's corners are indexed
+// once (none here: every link is a bare inertial), not gathered again per member.
+TEST(CheckStatsTest, AWeldedGroupsReachIsIndexedOnceWhateverItsMembersAsk) {
+  constexpr int kLinks = 300;
+  const ReadResult read = ReadUrdfString(ChainUrdf(kLinks, "fixed", false, false), "bare.urdf");
+  ASSERT_TRUE(read.ok());
+  CheckStats stats;
+  CheckModel(read.models[0], CheckOptions(), &stats);
+  EXPECT_GE(stats.group_reach_questions, static_cast<std::size_t>(kLinks - 1));
+  EXPECT_EQ(stats.group_corner_indexes, 1u);
 }
 
 // Massless links carrying the last: each massless link is a moving body that asks what is

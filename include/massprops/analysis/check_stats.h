@@ -38,6 +38,10 @@ struct CheckStats {
   /// at most once, from its children's, whatever the number of questions.
   std::size_t outboard_questions = 0;
   std::size_t subtree_composites = 0;
+  /// How far its welded group's geometry reaches from a link, asked (units-suspect, for a link
+  /// its own geometry does not size), and the groups whose corners were indexed for it: one each.
+  std::size_t group_reach_questions = 0;
+  std::size_t group_corner_indexes = 0;
 };
 
 /// CheckModel(model, options), and what it measured in `*stats` (set, not added to; nullptr:

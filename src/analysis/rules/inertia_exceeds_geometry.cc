@@ -379,8 +379,7 @@ bool PartOfTheWorld(const RuleContext& ctx, const JudgedLink& judged) {
   if (group.is_moving) return false;
   if (ctx.model.format == Model::Format::kMjcf) return true;
   if (ctx.model.format == Model::Format::kUrdf && group.root_link == "world") return true;
-  return std::any_of(group.links.begin(), group.links.end(),
-                     [&](int i) { return ctx.welded_to_world[i]; });
+  return ctx.GroupWeldedToWorld(ctx.group_of[judged.index]);
 }
 
 }  // namespace

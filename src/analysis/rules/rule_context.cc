@@ -165,6 +165,10 @@ RuleContext::RuleContext(const Model& model_in, const CheckOptions& options_in)
     }
   }
   BuildJointTree();
+  group_welded_to_world_.assign(groups.size(), false);
+  for (std::size_t i = 0; i < model.links.size(); ++i) {
+    if (welded_to_world[i] && group_of[i] >= 0) group_welded_to_world_[group_of[i]] = true;
+  }
   sdf_without_inertials = model.format == Model::Format::kSdf && !model.links.empty();
   for (const Link& link : model.links) {
     sdf_without_inertials = sdf_without_inertials && !link.inertial && !link.inertial_unreadable;
@@ -425,6 +429,32 @@ int RuleContext::CountContributingMembers(const WeldedGroup& group, bool* all_ma
     if (link.inertial->mass != 0 || !WrittenMatrix(*link.inertial).isZero(0)) ++contributing;
   }
   return contributing;
+}
+
+const RuleContext::GroupCorners& RuleContext::GroupCornersOf(int group_index) const {
+  if (corners_of_group_.empty()) corners_of_group_.resize(groups.size());
+  std::optional<GroupCorners>& memo = corners_of_group_[group_index];
+  ++stats.group_reach_questions;
+  if (memo) return *memo;
+  ++stats.group_corner_indexes;
+  const WeldedGroup& group = groups[group_index];
+  std::vector<Eigen::Vector3d> corners;
+  bool partial = false;
+  for (std::size_t k = 0; k < group.links.size(); ++k) {
+    const int j = group.links[k];
+    if (model.links[j].geometries.empty()) continue;
+    const std::optional<GeometryBounds>& b = BoundsOfLink(j);
+    if (!b || b->partial) partial = true;
+    if (!b) continue;
+    const Pose& X_RM = group.X_RL[k];
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3d p =
+          b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
+      corners.push_back(X_RM.p_AB + X_RM.R_AB * p);
+    }
+  }
+  memo.emplace(GroupCorners{FarthestPointIndex(std::move(corners)), partial});
+  return *memo;
 }
 
 const CompositeInertia& RuleContext::GroupComposite(int group_index) const {

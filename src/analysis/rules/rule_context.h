@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/rules/farthest_point.h"
 #include "massprops/analysis/check_stats.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/finding_text.h"
@@ -195,6 +196,20 @@ class RuleContext {
   // group of n links cost n^2).
   const CompositeInertia& GroupComposite(int group_index) const;
 
+  // Whether welded group `group_index` holds a link fixed to a parent outside the model (the
+  // world): welded_to_world of any member, answered once per group.
+  bool GroupWeldedToWorld(int group_index) const { return group_welded_to_world_[group_index]; }
+
+  // The known geometry of a welded group, as its members' box corners in the root's frame R
+  // (an index for the farthest of them from a point), and whether some member's geometry is of
+  // unknown or partly unknown size: built once per group, for every member that asks how far the
+  // group reaches from it.
+  struct GroupCorners {
+    FarthestPointIndex corners_R{{}};
+    bool partial = false;
+  };
+  const GroupCorners& GroupCornersOf(int group_index) const;
+
   // How many members of `group` contribute mass or inertia (SDF gives a link without <inertial>
   // mass 1); sets *all_massless to false when some member has a mass.
   int CountContributingMembers(const WeldedGroup& group, bool* all_massless) const;
@@ -216,6 +231,8 @@ class RuleContext {
 
   mutable std::vector<std::optional<std::optional<GeometryBounds>>> bounds_of_link_;
   std::vector<int> index_in_group_;  // link index -> its place in its group's links and X_RL
+  std::vector<bool> group_welded_to_world_;
+  mutable std::vector<std::optional<GroupCorners>> corners_of_group_;
   mutable std::vector<std::optional<CompositeInertia>> composite_of_group_;
   void ComposeSubtrees() const;
   mutable std::vector<std::optional<CompositeInertia>> subtree_;  // OutboardComposite's

@@ -242,22 +242,11 @@ KinematicScale KinematicScaleOf(const RuleContext& ctx, int link_index, const Ei
   double group_reach = 0;
   const Link& link = ctx.model.links[link_index];
   scale.partial = !link.geometries.empty() && !ctx.BoundsOfLink(link_index);
-  const WeldedGroup& group = ctx.groups[ctx.group_of[link_index]];
-  const Pose X_LR = ctx.GroupPoseOf(link_index).Inverse();
-  for (std::size_t k = 0; k < group.links.size(); ++k) {
-    const int j = group.links[k];
-    const Link& member = ctx.model.links[j];
-    if (member.geometries.empty()) continue;
-    const std::optional<GeometryBounds>& b = ctx.BoundsOfLink(j);
-    if (!b || b->partial) scale.partial = true;
-    if (!b) continue;
-    const Pose X_LM = X_LR * group.X_RL[k];
-    for (int corner = 0; corner < 8; ++corner) {
-      const Eigen::Vector3d p =
-          b->box_B.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner));
-      group_reach = std::max(group_reach, (X_LM.p_AB + X_LM.R_AB * p).norm());
-    }
-  }
+  // The farthest corner of the group's boxes from the link's origin, both in the root's frame
+  // (the group's corners indexed once per group: every member of a welded group asks).
+  const RuleContext::GroupCorners& group = ctx.GroupCornersOf(ctx.group_of[link_index]);
+  scale.partial = scale.partial || group.partial;
+  group_reach = group.corners_R.MaxDistance(ctx.GroupPoseOf(link_index).p_AB);
   // A link with no joint at all (a single free body) has no kinematic tree to give it a size.
   if (ctx.children[link_index].empty() && parent < 0) return scale;
   const double com = c.norm();
