@@ -15,6 +15,8 @@ packages=(build-essential cmake libeigen3-dev liburdfdom-dev libtinyxml2-dev lib
 packages+=(libjs-chart.js)
 # The xacro trace (src/io/xacro_source.cc): YAML with the line of each scalar.
 packages+=(libyaml-cpp-dev)
+# Ninja: tools/run.sh builds a new build folder with it (the tool's units beside the library's).
+packages+=(ninja-build)
 if [[ -z ${MASSPROPS_SETUP_TOOL_ONLY:-} ]]; then
 # The Python module (python/).
 packages+=(pybind11-dev python3-dev python3-numpy)
