@@ -154,8 +154,9 @@ TEST(ChecksTest, EveryRuleIsListedOnceWithItsSeverity) {
   // 43, inertia-beyond-hull and inertia-too-compact by issue 49) + 4 rules whose findings
   // the readers make (ReadResult::findings, inertial-auto from the SDF reader) + 9 target-profile
   // rules (target_profile.h, reported only with --target) + 2 geometry rules (geometry_checks.h),
-  // off unless --geometry + 2 density rules (density_rules.h).
-  EXPECT_EQ(ids.size(), 27u + TargetRules().size());
+  // off unless --geometry + 2 density rules (density_rules.h) + inertia-contradicts-data
+  // (data_contradiction.h, issue 51: off unless check --data).
+  EXPECT_EQ(ids.size(), 28u + TargetRules().size());
   EXPECT_EQ(TargetRules().size(), 9u);
   EXPECT_FALSE(AllRules().back().enabled_by_default);
   EXPECT_EQ(AllRules().front().default_severity, Severity::kError);

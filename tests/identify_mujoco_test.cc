@@ -18,6 +18,7 @@
 #include <random>
 #include <string>
 
+#include "exciting_motion.h"
 #include "massprops/analysis/identify.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/output/identify_report.h"
@@ -55,23 +56,17 @@ KinematicTree TrueArm(const KinematicTree& file) {
 OrderedTrajectory Simulate(const test_support::Loaded& loaded, int n, int N, double sigma,
                            unsigned seed) {
   mjData* d = mj_makeData(loaded.m);
-  OrderedTrajectory data;
-  data.q.setZero(N, n);
-  data.dq.setZero(N, n);
-  data.ddq.setZero(N, n);
-  data.tau.resize(N, n);
+  test_support::ExcitingMotion motion;
+  motion.harmonics = 4;
+  motion.amplitude = 1.0;
+  motion.a = 0.9;
+  motion.b = 1.1;
+  motion.c = 0.3;
+  OrderedTrajectory data = test_support::SumOfSines(motion, n, N);
   std::mt19937 rng(seed);
   std::normal_distribution<double> noise(0, sigma);
   for (int k = 0; k < N; ++k) {
-    const double t = 0.01 * k;
     for (int j = 0; j < n; ++j) {
-      for (int h = 1; h <= 4; ++h) {
-        const double w = 2 * M_PI * 0.2 * h, phase = 0.9 * j + 1.1 * h * j + 0.3 * h;
-        const double a = 1.0 / h;
-        data.q(k, j) += a * std::sin(w * t + phase);
-        data.dq(k, j) += a * w * std::cos(w * t + phase);
-        data.ddq(k, j) -= a * w * w * std::sin(w * t + phase);
-      }
       const std::size_t jj = static_cast<std::size_t>(j);
       d->qpos[loaded.qpos[jj]] = data.q(k, j);
       d->qvel[loaded.dof[jj]] = data.dq(k, j);

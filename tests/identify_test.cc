@@ -13,13 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "exciting_motion.h"
 #include "massprops/dynamics/inverse_dynamics.h"
 #include "massprops/io/model_reader.h"
 
 namespace massprops {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 KinematicTree FileArm() {
   const ReadResult read =
@@ -54,29 +53,15 @@ KinematicTree TrueArm(bool forearm_point = false) {
   return tree;
 }
 
-// N samples at 100 Hz of q_j(t) = Σ_k a·sin(ω_k·t + φ_jk) (ω_k = 2π·0.2·k, k = 1..3) with its
-// analytic velocities and accelerations, and τ of `truth` plus Gaussian noise (σ = noise N·m,
+// N samples at 100 Hz of exciting_motion.h's sum of three sines per joint with its analytic
+// velocities and accelerations, and τ of `truth` plus Gaussian noise (σ = noise N·m,
 // std::mt19937 seeded).
 OrderedTrajectory Simulate(const KinematicTree& truth, int N, double noise, unsigned seed) {
   const int n = truth.size();
-  OrderedTrajectory data;
-  data.q.setZero(N, n);
-  data.dq.setZero(N, n);
-  data.ddq.setZero(N, n);
-  data.tau.resize(N, n);
+  OrderedTrajectory data = test_support::SumOfSines(test_support::ExcitingMotion(), n, N);
   std::mt19937 rng(seed);
   std::normal_distribution<double> gauss(0, noise);
   for (int k = 0; k < N; ++k) {
-    const double t = 0.01 * k;
-    for (int j = 0; j < n; ++j) {
-      for (int h = 1; h <= 3; ++h) {
-        const double w = 2 * kPi * 0.2 * h, phase = 0.7 * j + 1.3 * h * j + 0.4 * h;
-        const double a = 0.9 / h;
-        data.q(k, j) += a * std::sin(w * t + phase);
-        data.dq(k, j) += a * w * std::cos(w * t + phase);
-        data.ddq(k, j) -= a * w * w * std::sin(w * t + phase);
-      }
-    }
     const Eigen::VectorXd tau = CalcInverseDynamics(
         truth, data.q.row(k).transpose(), data.dq.row(k).transpose(), data.ddq.row(k).transpose());
     for (int j = 0; j < n; ++j) data.tau(k, j) = tau[j] + gauss(rng);

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "html_text.h"
 #include "massprops/dynamics/torque_regressor.h"
 #include "view_assets.h"
 
@@ -11,39 +12,6 @@ namespace massprops::cli {
 namespace {
 
 constexpr Eigen::Index kIdentifyHtmlMaxPoints = 4000;
-
-std::string IdentifyHtmlEscape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-// Text placed inside a <script> element: "</script" (only in a string, a comment or a regular
-// expression of valid script, where "<\/script" means the same) cannot end it early.
-std::string IdentifyHtmlScript(std::string script) {
-  for (std::size_t at = script.find("</script"); at != std::string::npos;
-       at = script.find("</script", at)) {
-    script.insert(at + 1, "\\");
-  }
-  return script;
-}
 
 // The page's own script: one line chart per joint from the data block; the charts are left in
 // window.identifyCharts (the browser test reads them).
@@ -125,7 +93,7 @@ std::string RenderIdentifyHtml(const std::string& robot, const std::string& data
   std::string data_text = block.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   std::string escaped;  // '<' only occurs inside JSON strings: escaped, nothing ends the block
   for (const char c : data_text) escaped += c == '<' ? std::string("\\u003c") : std::string(1, c);
-  const std::string title = IdentifyHtmlEscape(robot + " with " + data);
+  const std::string title = EscapeHtml(robot + " with " + data);
   std::string page = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<title>massprops identify: " + title + "</title>\n";
   page +=
@@ -136,11 +104,11 @@ std::string RenderIdentifyHtml(const std::string& robot, const std::string& data
           " samples against those the file's values and the identified ones predict.</p>\n";
   page += "<div id=\"charts\"></div>\n";
   page += "<script id=\"identify-data\" type=\"application/json\">" + escaped + "</script>\n";
-  page += "<script>" +
-          IdentifyHtmlScript(
-              std::string(embedded::AsText(embedded::kChartJs, embedded::kChartJsSize))) +
-          "</script>\n";
-  page += "<script>" + IdentifyHtmlScript(kIdentifyPageJs) + "</script>\n</body>\n</html>\n";
+  page +=
+      "<script>" +
+      ScriptElementText(std::string(embedded::AsText(embedded::kChartJs, embedded::kChartJsSize))) +
+      "</script>\n";
+  page += "<script>" + ScriptElementText(kIdentifyPageJs) + "</script>\n</body>\n</html>\n";
   return page;
 }
 

@@ -29,6 +29,7 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
+#include "html_text.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
 #include "massprops/analysis/finding_text.h"
@@ -457,29 +458,6 @@ json ModelJson(const Model& model, const std::vector<Finding>& reader_findings,
           {"findings", std::move(model_findings)}};
 }
 
-std::string EscapeHtml(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 // The template with each {{NAME}} replaced once by its text (inserted text is not scanned again).
 std::string FillTemplate(std::string_view page, const std::map<std::string, std::string>& parts) {
   std::string out;
@@ -592,12 +570,7 @@ int RunView(const ViewArgs& args) {
   script += embedded::AsText(embedded::kOrbitControlsJs, embedded::kOrbitControlsJsSize);
   script += "\n";
   script += embedded::AsText(embedded::kViewJs, embedded::kViewJsSize);
-  // "</script" can only stand in a string, a comment or a regular expression of valid script,
-  // where "<\/script" means the same; the element cannot end early.
-  for (std::size_t at = script.find("</script"); at != std::string::npos;
-       at = script.find("</script", at)) {
-    script.insert(at + 1, "\\");
-  }
+  script = ScriptElementText(std::move(script));
   const std::string page = FillTemplate(
       embedded::AsText(embedded::kViewHtml, embedded::kViewHtmlSize),
       {{"TITLE", EscapeHtml(title)},
