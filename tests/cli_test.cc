@@ -253,6 +253,28 @@ TEST(CliTest, AMissingFileExitsTwoAndTheOtherFilesAreStillReported) {
   EXPECT_TRUE(Contains(run.out, "[inertia-not-physical]")) << run.out;
 }
 
+// --max-input-size on check and report: clean.urdf is 1 449 bytes and clean.sdf is larger than
+// 100 (`wc -c`), so a limit of 100 bytes refuses both with exit 2 and a message naming the option;
+// 1K (1 024 bytes, a power of 1024) still refuses clean.urdf and 2K reads it.
+TEST(CliTest, MaxInputSizeSetsTheLargestFileRead) {
+  for (const std::string command : {"check", "report"}) {
+    for (const std::string file : {"clean.urdf", "clean.sdf"}) {
+      const RunResult refused = RunTool(command + " --max-input-size 100 " + file);
+      EXPECT_EQ(refused.exit_code, 2) << command << " " << file;
+      EXPECT_TRUE(Contains(refused.out + refused.err, "limit of 100 bytes"))
+          << refused.out << refused.err;
+      EXPECT_TRUE(Contains(refused.out + refused.err, "--max-input-size"))
+          << refused.out << refused.err;
+      EXPECT_EQ(RunTool(command + " --max-input-size 1M " + file).exit_code, 0)
+          << command << " " << file;
+    }
+  }
+  EXPECT_EQ(RunTool("check --max-input-size 1K clean.urdf").exit_code, 2);
+  EXPECT_EQ(RunTool("check --max-input-size 2K clean.urdf").exit_code, 0);
+  EXPECT_EQ(RunTool("check --max-input-size 0 clean.urdf").exit_code, 2);     // usage error
+  EXPECT_EQ(RunTool("check --max-input-size lots clean.urdf").exit_code, 2);  // usage error
+}
+
 TEST(CliTest, AMalformedFileIsAReadErrorWithALine) {
   const RunResult run = RunTool("check malformed.urdf");
   EXPECT_EQ(run.exit_code, 2);

@@ -110,6 +110,47 @@ TEST(ModelReaderTest, FilesLargerThanTheLimitAreRefused) {
   EXPECT_EQ(contents, Slurp(kFeatures));
 }
 
+// ReadOptions::max_file_bytes reaches the readers of text already in memory and every file an
+// SDF includes, not only the first file read: a limit one byte below a text's length refuses it,
+// a limit equal to it reads it (the lengths are those of the texts written here).
+TEST(ModelReaderTest, TheLimitReachesTheReadersAndTheSdfIncludes) {
+  const std::string urdf = Slurp(kFeatures);
+  ReadOptions options;
+  options.max_file_bytes = urdf.size() - 1;
+  const ReadResult refused = ReadModelString(urdf, "features.urdf", options);
+  ASSERT_EQ(refused.errors.size(), 1u);
+  EXPECT_NE(
+      refused.errors[0].message.find("more than the limit of " + std::to_string(urdf.size() - 1)),
+      std::string::npos)
+      << refused.errors[0].message;
+  options.max_file_bytes = urdf.size();
+  EXPECT_TRUE(ReadModelString(urdf, "features.urdf", options).ok());
+
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / "model_reader_limit_test";
+  std::filesystem::create_directories(dir);
+  const std::string part =
+      "<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n  <model name=\"part\">\n"
+      "    <link name=\"a\"><inertial><mass>1</mass></inertial></link>\n  </model>\n</sdf>\n";
+  std::ofstream(dir / "part.sdf") << part;
+  const std::string world =
+      "<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n  <world name=\"w\">\n"
+      "    <include><uri>part.sdf</uri></include>\n  </world>\n</sdf>\n";
+  ASSERT_LT(world.size(), part.size());  // so that a limit between them judges the include
+  options.max_file_bytes = part.size() - 1;
+  const ReadResult include_refused = ReadModelString(world, (dir / "world.sdf").string(), options);
+  ASSERT_FALSE(include_refused.errors.empty());
+  EXPECT_NE(include_refused.errors[0].message.find("more than the limit of " +
+                                                   std::to_string(part.size() - 1)),
+            std::string::npos)
+      << include_refused.errors[0].message;
+  options.max_file_bytes = part.size();
+  const ReadResult included = ReadModelString(world, (dir / "world.sdf").string(), options);
+  ASSERT_TRUE(included.ok()) << included.errors[0].ToString();
+  ASSERT_EQ(included.models.size(), 1u);
+  EXPECT_EQ(included.models[0].links.size(), 1u);
+}
+
 TEST(ModelReaderTest, ReadsStandardInputWhenThePathIsADash) {
   // Standard input of this test process is replaced by the fixture, as `massprops check - <f`.
   ASSERT_NE(std::freopen(kFeatures.c_str(), "rb", stdin), nullptr);

@@ -15,7 +15,9 @@ namespace {
 
 constexpr const char* kStdinName = "<stdin>";
 
+// "1.5 MiB", or "1000 bytes" below 1 MiB (a limit set that low would print as 0.0 MiB).
 std::string MebibytesText(std::size_t bytes) {
+  if (bytes < (std::size_t{1} << 20)) return std::to_string(bytes) + " bytes";
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.1f MiB", static_cast<double>(bytes) / (1 << 20));
   return buffer;
@@ -40,7 +42,9 @@ std::optional<ReadError> ReadStream(std::FILE* stream, const std::string& shown_
         contents->clear();
         contents->shrink_to_fit();
         return FileError(shown_name, "input is larger than the limit of " +
-                                         MebibytesText(max_bytes) + "; refusing to read it");
+                                         MebibytesText(max_bytes) +
+                                         "; refusing to read it (the command line's "
+                                         "--max-input-size raises the limit)");
       }
       contents->append(chunk.get(), got);
     }
@@ -116,7 +120,8 @@ std::optional<ReadError> ReadInputFile(const std::string& path, std::size_t max_
     if (!ec && size > max_bytes) {
       return FileError(path, "file is " + MebibytesText(static_cast<std::size_t>(size)) +
                                  ", larger than the limit of " + MebibytesText(max_bytes) +
-                                 "; refusing to read it");
+                                 "; refusing to read it (the command line's "
+                                 "--max-input-size raises the limit)");
     }
   }
   std::FILE* stream = std::fopen(path.c_str(), "rb");
@@ -149,16 +154,22 @@ const char* Utf16Or32(std::string_view t) {
 ReadResult ReadModelString(const std::string& xml, const std::string& file_name,
                            const ReadOptions& options) {
   const std::optional<Model::Format> format = DetectModelFormat(xml);
-  if (format == Model::Format::kUrdf) return ReadUrdfString(xml, file_name);
-  if (format == Model::Format::kSdf) return ReadSdfString(xml, file_name, options.sdf);
+  if (format == Model::Format::kUrdf) return ReadUrdfString(xml, file_name, options.max_file_bytes);
+  if (format == Model::Format::kSdf) {
+    SdfReadOptions sdf = options.sdf;
+    sdf.max_file_bytes = options.max_file_bytes;
+    return ReadSdfString(xml, file_name, sdf);
+  }
   if (format == Model::Format::kMjcf) return ReadMjcfString(xml, file_name, options.mjcf);
   ReadResult result;
   ReadError error;
   error.location.file = file_name;
   error.location.line = 1;
   error.element = "document";
-  error.message = xml.empty() ? "the file is empty"
-                              : "neither URDF, SDF nor MJCF: the first element is not <robot>, <sdf> or <mujoco>";
+  error.message =
+      xml.empty()
+          ? "the file is empty"
+          : "neither URDF, SDF nor MJCF: the first element is not <robot>, <sdf> or <mujoco>";
   if (const char* encoding = Utf16Or32(xml)) {
     error.message = std::string("the file is encoded in ") + encoding +
                     "; massprops reads UTF-8 (convert it, e.g. iconv -f " + encoding + " -t UTF-8)";

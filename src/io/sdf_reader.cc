@@ -25,11 +25,11 @@ namespace internal::sdf_reader {
 
 ReadResult Reader::Read(const std::string& xml, const std::string& file_name,
                         std::vector<SdfModelFrames>* frames) {
-  if (xml.size() > kMaxSdfFileBytes) {
+  if (xml.size() > options_.max_file_bytes) {
     result_.errors.push_back(MakeReadError(file_name, 0, "<sdf>",
                                            "the input has " + std::to_string(xml.size()) +
                                                " bytes, more than the limit of " +
-                                               std::to_string(kMaxSdfFileBytes)));
+                                               std::to_string(options_.max_file_bytes)));
     return std::move(result_);
   }
   auto doc = std::make_unique<XMLDocument>();
@@ -105,7 +105,7 @@ ReadResult ReadSdfFile(const std::string& path, const SdfReadOptions& options,
                        std::vector<SdfModelFrames>* frames) {
   std::string text;
   std::string why;
-  if (!internal::sdf_reader::ReadWholeFile(path, &text, &why)) {
+  if (!internal::sdf_reader::ReadWholeFile(path, options.max_file_bytes, &text, &why)) {
     ReadResult result;
     result.errors.push_back(MakeReadError(path, 0, "<sdf>", why));
     return result;

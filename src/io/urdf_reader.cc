@@ -14,9 +14,11 @@
 namespace massprops {
 namespace internal::urdf_reader {
 
-ReadResult Reader::Read(const std::string& xml) {
-  if (xml.size() > kMaxUrdfFileBytes) {
-    Error(0, "file", "the input is larger than the limit of 256 MiB");
+ReadResult Reader::Read(const std::string& xml, std::size_t max_bytes) {
+  if (xml.size() > max_bytes) {
+    Error(0, "file",
+          "the input has " + std::to_string(xml.size()) + " bytes, more than the limit of " +
+              std::to_string(max_bytes));
     return std::move(result_);
   }
   if (const void* nul = std::memchr(xml.data(), '\0', xml.size())) {
@@ -47,8 +49,9 @@ ReadResult Reader::Read(const std::string& xml) {
 
 }  // namespace internal::urdf_reader
 
-ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name) {
-  return internal::urdf_reader::Reader(file_name).Read(xml);
+ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name,
+                          std::size_t max_file_bytes) {
+  return internal::urdf_reader::Reader(file_name).Read(xml, max_file_bytes);
 }
 
 ReadResult ReadUrdfFile(const std::string& path) {

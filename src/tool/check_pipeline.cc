@@ -28,6 +28,7 @@ ReadOptions CheckReadOptions(const CheckSettings& settings) {
   ReadOptions read_options;
   read_options.sdf.model_paths = settings.model_paths;
   read_options.mjcf.mujoco_mesh_inertia = settings.target == Target::kMujoco;
+  read_options.max_file_bytes = settings.max_input_bytes;
   return read_options;
 }
 

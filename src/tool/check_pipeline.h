@@ -4,6 +4,7 @@
 // it reads; the language server (lsp_server.cc) runs it on an editor's unsaved buffer, named by
 // the file's path so that meshes, package:// URIs and SDF includes resolve from the file's place.
 // Defined in src/tool/check_pipeline.cc.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,7 +23,8 @@ struct CheckSettings {
   CheckOptions options;
   Severity fail_on = Severity::kError;
   std::vector<std::string> model_paths;
-  std::vector<std::string> package_paths;  // the configuration's, after --package-path
+  std::vector<std::string> package_paths;            // the configuration's, after --package-path
+  std::size_t max_input_bytes = kMaxModelFileBytes;  // --max-input-size
 };
 
 /// The settings of a file from its target profile (`target`), then its configuration (`config`,

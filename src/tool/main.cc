@@ -33,6 +33,7 @@
 #include "check_pipeline.h"
 #include "commands.h"
 #include "geometry_cli.h"
+#include "input_size_cli.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/config.h"
 #include "massprops/analysis/target_profile.h"
@@ -79,9 +80,10 @@ struct CheckArgs {
   bool explain = false;     // --explain: the full reasoning under each finding
   bool statistics = false;  // --statistics: counts per rule
   bool list_rules = false;
-  int jobs = 0;                        // 0: one per core
-  std::string target;                  // --target; "" when not given
-  massprops::cli::XacroOptions xacro;  // a xacro package (docs/xacro.md)
+  int jobs = 0;                                                 // 0: one per core
+  std::size_t max_input_bytes = massprops::kMaxModelFileBytes;  // --max-input-size
+  std::string target;                                           // --target; "" when not given
+  massprops::cli::XacroOptions xacro;                           // a xacro package (docs/xacro.md)
 };
 
 // A command-line mistake found after CLI11 has parsed the arguments.
@@ -313,6 +315,7 @@ Settings SettingsFor(const CheckArgs& args, const CliOverrides& cli, const Confi
   if (cli.fail_on) settings.fail_on = *cli.fail_on;
   settings.model_paths.insert(settings.model_paths.begin(), args.model_paths.begin(),
                               args.model_paths.end());
+  settings.max_input_bytes = args.max_input_bytes;
   return settings;
 }
 
@@ -551,6 +554,9 @@ CheckOptionsGiven AddCheckCommand(CLI::App& app, CheckArgs* args,
         ->allow_extra_args(false);
   }
   if (wanted.Wants({"--target"})) massprops::cli::AddTargetOption(check, &args->target);
+  if (wanted.Wants({"--max-input-size"})) {
+    massprops::cli::AddMaxInputSizeOption(check, &args->max_input_bytes);
+  }
   if (wanted.Wants({"--data"})) massprops::cli::AddCheckDataOption(check, &args->data);
   if (wanted.Wants({"-q", "--quiet"})) {
     check->add_flag("-q,--quiet", args->quiet, "Only the findings: no summary line, no notes");

@@ -27,7 +27,7 @@ inline const std::vector<std::string_view>& CheckOptionNames() {
       "--model-path", "--target", "--data", "-q", "--quiet", "--brief", "--explain",
       "--statistics", "-j", "--jobs", "--list-rules", "--geometry", "--no-geometry",
       "--geometry-factor", "--package-path", "--no-cache", "--xacro-arg", "--xacro-command",
-      "--expanded", "--source-root"};
+      "--expanded", "--source-root", "--max-input-size"};
   // clang-format on
   return kNames;
 }

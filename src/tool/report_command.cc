@@ -15,6 +15,7 @@
 
 #include "commands.h"
 #include "geometry_cli.h"
+#include "input_size_cli.h"
 #include "massprops/analysis/checks.h"
 #include "massprops/analysis/mass_report.h"
 #include "massprops/io/model_reader.h"
@@ -41,7 +42,8 @@ struct ReportArgs {
   std::vector<std::string> model_paths;
   bool geometry = false;
   std::vector<std::string> package_paths;
-  std::string target;  // --target ("" = generic)
+  std::string target;                                // --target ("" = generic)
+  std::size_t max_input_bytes = kMaxModelFileBytes;  // --max-input-size
 };
 
 // `report --target`: the bodies as the simulator sees them (text format).
@@ -190,6 +192,7 @@ int RunReport(const ReportArgs& args) {
   ReadOptions read_options;
   read_options.sdf.model_paths = args.model_paths;
   read_options.mjcf.mujoco_mesh_inertia = args.target == "mujoco";
+  read_options.max_file_bytes = args.max_input_bytes;
   std::vector<ModelMassReport> reports;
   std::vector<MassReportError> errors;
   MeshCache mesh_cache;
@@ -296,6 +299,7 @@ void AddReportCommands(CLI::App& app, std::function<int()>* run) {
                    "meshes read) implies for its declared mass, and how the declared one differs");
   AddPackagePathOption(report, &report_args->package_paths);
   AddTargetOption(report, &report_args->target);
+  AddMaxInputSizeOption(report, &report_args->max_input_bytes);
   report->callback(
       [run, report_args] { *run = [report_args] { return RunReport(*report_args); }; });
 

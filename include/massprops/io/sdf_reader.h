@@ -12,6 +12,10 @@
 
 namespace massprops {
 
+/// Files larger than this are refused with a ReadError by default (bounded memory on hostile
+/// input; SdfReadOptions::max_file_bytes changes it).
+inline constexpr std::size_t kMaxSdfFileBytes = std::size_t{256} << 20;  // 256 MiB
+
 /// Where <include><uri>model://NAME</uri> looks for the folder NAME.
 struct SdfReadOptions {
   /// Folders searched first, in order; each may hold a folder NAME with a model.config / model.sdf.
@@ -30,10 +34,10 @@ struct SdfReadOptions {
   /// them are read (relative to the file holding the link, model:// through model_paths).
   /// When false, such a link gets an inertial-unreadable finding instead.
   bool compute_auto_inertials = true;
+  /// The file read, and each file it includes, is refused with a ReadError when larger than this
+  /// many bytes (standard input too).
+  std::size_t max_file_bytes = kMaxSdfFileBytes;
 };
-
-/// Files larger than this are refused with a ReadError (bounded memory on hostile input).
-inline constexpr std::size_t kMaxSdfFileBytes = std::size_t{256} << 20;  // 256 MiB
 
 /// Reads the SDF file at `path` ("-": standard input, also bounded by kMaxSdfFileBytes).
 /// A <world> gives one Model per top-level <model>; a lone <model>

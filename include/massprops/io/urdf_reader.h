@@ -49,7 +49,9 @@ inline constexpr std::size_t kMaxUrdfFileBytes = std::size_t{256} << 20;  // 256
 ReadResult ReadUrdfFile(const std::string& path);
 
 /// Same as ReadUrdfFile for URDF text already in memory; `file_name` is used in SourceLocations.
-ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name);
+/// A text larger than `max_file_bytes` is refused with a ReadError.
+ReadResult ReadUrdfString(const std::string& xml, const std::string& file_name,
+                          std::size_t max_file_bytes = kMaxUrdfFileBytes);
 
 namespace internal {
 /// For tests: the reader's index of `xml` (each line it takes from the text, the ignore comments,

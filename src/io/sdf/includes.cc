@@ -22,15 +22,15 @@ Reader::Reader(const SdfReadOptions& options, std::string top_file)
   }
 }
 
-bool ReadWholeFile(const std::string& path, std::string* text, std::string* why) {
+bool ReadWholeFile(const std::string& path, std::size_t max_bytes, std::string* text,
+                   std::string* why) {
   if (path == "-") {
     std::string data;
     char buffer[65536];
     while (std::cin.read(buffer, sizeof buffer) || std::cin.gcount() > 0) {
       data.append(buffer, static_cast<size_t>(std::cin.gcount()));
-      if (data.size() > kMaxSdfFileBytes) {
-        *why = "standard input is larger than the limit of " + std::to_string(kMaxSdfFileBytes) +
-               " bytes";
+      if (data.size() > max_bytes) {
+        *why = "standard input is larger than the limit of " + std::to_string(max_bytes) + " bytes";
         return false;
       }
     }
@@ -47,9 +47,9 @@ bool ReadWholeFile(const std::string& path, std::string* text, std::string* why)
     *why = "cannot read the file: " + ec.message();
     return false;
   }
-  if (size > kMaxSdfFileBytes) {
+  if (size > max_bytes) {
     *why = "the file has " + std::to_string(size) + " bytes, more than the limit of " +
-           std::to_string(kMaxSdfFileBytes);
+           std::to_string(max_bytes);
     return false;
   }
   std::ifstream in(path, std::ios::binary);
@@ -58,8 +58,8 @@ bool ReadWholeFile(const std::string& path, std::string* text, std::string* why)
     return false;
   }
   text->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (text->size() > kMaxSdfFileBytes) {
-    *why = "the file is larger than the limit of " + std::to_string(kMaxSdfFileBytes) + " bytes";
+  if (text->size() > max_bytes) {
+    *why = "the file is larger than the limit of " + std::to_string(max_bytes) + " bytes";
     return false;
   }
   return true;
@@ -109,7 +109,7 @@ std::optional<std::string> Reader::FindModelFile(const std::string& uri_in,
       std::string config_why;
       XMLDocument doc;
       int line = 0;
-      if (ReadWholeFile(config.string(), &text, &config_why) &&
+      if (ReadWholeFile(config.string(), options_.max_file_bytes, &text, &config_why) &&
           ParseXml(text, &doc, &config_why, &line) && doc.RootElement() != nullptr) {
         std::string best;
         Version best_version{-1, -1};
@@ -203,7 +203,7 @@ int Reader::ReadInclude(const XMLElement* include, int scope, const Context& ctx
   auto doc_it = included_docs_.find(key);
   if (doc_it == included_docs_.end()) {
     std::string text;
-    if (!ReadWholeFile(*path, &text, &why)) {
+    if (!ReadWholeFile(*path, options_.max_file_bytes, &text, &why)) {
       Error(*path, nullptr, what, why);
       return kNotFound;
     }

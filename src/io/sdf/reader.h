@@ -92,7 +92,8 @@ bool ParseVersion(const std::string& text, Version* v);
 
 /// The bytes of the file at `path` ("-": standard input) into *text, at most kMaxSdfFileBytes;
 /// false with the reason in *why.
-bool ReadWholeFile(const std::string& path, std::string* text, std::string* why);
+bool ReadWholeFile(const std::string& path, std::size_t max_bytes, std::string* text,
+                   std::string* why);
 
 /// Parses `xml` into `doc`; on failure returns the error (line in `line`).
 bool ParseXml(const std::string& xml, XMLDocument* doc, std::string* why, int* line);

@@ -117,7 +117,8 @@ struct UrdfIndex {
 class Reader {
  public:
   explicit Reader(std::string file_name) : file_(std::move(file_name)) {}
-  ReadResult Read(const std::string& xml);
+  /// `max_bytes`: a longer text is refused with a ReadError.
+  ReadResult Read(const std::string& xml, std::size_t max_bytes = kMaxUrdfFileBytes);
   /// The index of `xml` (with no NUL byte) and its warnings as text, from the light scan or from
   /// tinyxml2; nullopt when that way gives no index (for tests: internal::DescribeUrdfIndex).
   std::optional<std::string> DescribeIndex(const std::string& xml, bool from_tinyxml2);
