@@ -45,13 +45,17 @@ using test_support::MapToMujoco;
 using test_support::SetInertias;
 using test_support::WithoutGeometry;
 
-// Measured (00:33 UTC, 2026-12-02): iiwa 14 and H1 agree to 1.3e-15 and 1.6e-15. NOT yet
-// explained, so not in this list: example-robot-data's panda.urdf differs by 7.2e-6 and its
-// ur5_robot.urdf / ur10_robot.urdf by 5.8e-3 / 4.0e-3 of the largest torque, though MuJoCo's
-// compiled masses and centers of mass equal the tree's to 1e-9 (docs/identify.md, "Open").
+// Measured (2026-12-02): every arm agrees to about 1e-15 of the largest torque. The UR5 and UR10
+// disagreed by 5.8e-3 / 4.0e-3 and the Panda by 7.2e-6 until SetInertias cleared MuJoCo's
+// body_sameframe (mujoco_dynamics_support.h): MuJoCo then ignored the inertial frame set for
+// the bodies it had compiled with an identity one (the UR shoulders' M(0,0) was off by exactly
+// ixx - izz = 0.0102675 - 0.00666 kg·m², the file's numbers).
 const char* const kRobots[] = {
     "drake-models/iiwa_description/urdf/iiwa14_no_collision.urdf",
     "unitree_ros/robots/h1_description/urdf/h1.urdf",
+    "example-robot-data/robots/panda_description/urdf/panda.urdf",
+    "example-robot-data/robots/ur_description/urdf/ur5_robot.urdf",
+    "example-robot-data/robots/ur_description/urdf/ur10_robot.urdf",
 };
 
 // The largest |τ_ours − τ_mujoco| / |τ_mujoco|∞ over random states.

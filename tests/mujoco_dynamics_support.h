@@ -5,7 +5,8 @@
 // joint by joint and body by body, and its bodies' mass properties set from a tree's parameters.
 // Why each setting (tests/inverse_dynamics_mujoco_test.cc, top): MuJoCo's own compile
 // diagonalizes inertias with mju_eig3, which stops at about 1e-6 rad, so the bodies are set from
-// the tree's parameters diagonalized by Eigen to round-off.
+// the tree's parameters diagonalized by Eigen to round-off (and body_sameframe cleared, so that
+// MuJoCo uses the inertial frame set).
 
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
@@ -105,6 +106,12 @@ inline void SetInertias(const Loaded& loaded, const KinematicTree& tree,
     }
     const double q[4] = {quat.w(), quat.x(), quat.y(), quat.z()};
     for (int k = 0; k < 4; ++k) m->body_iquat[4 * body + k] = q[k];
+    // MuJoCo's compiler marks a body whose inertial frame it found equal to the body frame
+    // (body_sameframe, mjmodel.h), and its kinematics then skip body_iquat and body_ipos for
+    // it. The frame set here is another (a diagonal inertia of ixx = iyy > izz, as the UR arms'
+    // shoulders have, is ordered ascending, so its iquat turns x onto z): left set, MuJoCo
+    // computed that body's inertia about the wrong axes, 5.8e-3 of the UR5's largest torque.
+    m->body_sameframe[body] = 0;
   }
 }
 
