@@ -54,8 +54,10 @@ struct TrajectoryReadResult {
 /// `.q` but no `.tau`; a row with another number of fields than the header; a field that is not
 /// a finite number (NaN included); a time not greater than the one before; fewer than
 /// options.min_samples rows; a derivative needed from a recording whose sampling interval varies
-/// by more than 10% (the filter assumes a constant rate), or a cutoff at or above half the
-/// sampling rate. Never throws for bad input. Cost: linear in the text.
+/// by more than 10% and reaches more than a quarter of the filter's period, 1 / (4·cutoff) (a
+/// gap: below it, such a recording is resampled linearly at its median interval, said in
+/// `notes`, since the filter assumes a constant rate), or a cutoff at or above half the sampling
+/// rate. Never throws for bad input. Cost: linear in the text.
 TrajectoryReadResult ReadTrajectoryCsv(const std::string& text, const std::string& file_name,
                                        const TrajectoryCsvOptions& options = {});
 
