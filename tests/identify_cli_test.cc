@@ -113,6 +113,72 @@ TEST_F(IdentifyCliTest, TextSaysIdentifiabilityFirstThenJointsThenLinks) {
   EXPECT_NE(run.out.find(" ± ", run.out.find("mass 1.2 -> ", links)), std::string::npos) << run.out;
 }
 
+// planar_arm_boxes.urdf: the same arm with a box per link. Each link's estimate is bounded by
+// its box's ellipsoid, reported per link with the ratio tr(Q⁻¹(Σ + m·d·dᵀ))/m, recomputed here
+// from the reported parameters and the hand ellipsoid of each box (semi-axes √3/2 times its
+// sides, identify_ellipsoid_test): at most 1, within Khachiyan's 2% of the tool's own ratio.
+// --no-geometry and the file without geometry impose nothing.
+TEST_F(IdentifyCliTest, BoxesBoundEachLinkAndTheReportSaysSo) {
+  fs::copy_file(kDir + "planar_arm_boxes.urdf", dir_ / "boxes.urdf");
+  const std::string boxes = (dir_ / "boxes.urdf").string();
+  const ToolRun run = Run("identify --format json '" + boxes + "' '" + kDir + "planar_arm.csv'");
+  ASSERT_EQ(run.code, 0) << run.err;
+  const nlohmann::json doc = nlohmann::json::parse(run.out);
+  EXPECT_EQ(doc["geometry_bound_links"], 2);
+  int outside = 0;
+  for (const auto& link : doc["links"]) {
+    ASSERT_TRUE(link["geometry_bound"]) << link.dump();
+    EXPECT_TRUE(link["identified_consistent"]) << link.dump();
+    const bool upper = link["link"] == "upper";
+    const Eigen::Vector3d x0(upper ? 0.25 : 0.225, 0, 0);
+    const Eigen::Vector3d semi =
+        std::sqrt(3.0) / 2 *
+        (upper ? Eigen::Vector3d(0.5, 0.12, 0.12) : Eigen::Vector3d(0.45, 0.1, 0.1));
+    // From the reported parameters [m, h, Ixx, Ixy, Iyy, Ixz, Iyz, Izz] about the origin:
+    // S = ½·tr(I)·1 − I = ∫p·pᵀ dm, and ∫(p − x0)(p − x0)ᵀ dm = S − h·x0ᵀ − x0·hᵀ + m·x0·x0ᵀ.
+    const auto& pi = link["identified"]["parameters"];
+    const double m = pi[0];
+    const Eigen::Vector3d h(pi[1].get<double>(), pi[2].get<double>(), pi[3].get<double>());
+    Eigen::Matrix3d I;
+    I << pi[4], pi[5], pi[7], pi[5], pi[6], pi[8], pi[7], pi[8], pi[9];
+    const Eigen::Matrix3d S = 0.5 * I.trace() * Eigen::Matrix3d::Identity() - I;
+    const Eigen::Matrix3d about =
+        S - h * x0.transpose() - x0 * h.transpose() + m * x0 * x0.transpose();
+    const double ratio = (semi.cwiseAbs2().cwiseInverse().asDiagonal() * about).trace() / m;
+    const double reported = link["ellipsoid_ratio"]["identified"];
+    EXPECT_LE(reported, 1) << link.dump();
+    EXPECT_NEAR(ratio, reported, 0.02 * reported) << link.dump();
+    if (!link["least_squares_within_geometry"].get<bool>()) ++outside;
+    EXPECT_EQ(link["least_squares_within_geometry"].get<bool>(),
+              link["ellipsoid_ratio"]["least_squares"].get<double>() <= 1 + 1e-9)
+        << link.dump();
+  }
+  EXPECT_EQ(doc["least_squares_outside_geometry_links"], outside);
+  const ToolRun text = Run("identify '" + boxes + "' '" + kDir + "planar_arm.csv'");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("geometry bound (a density inside the ellipsoid bounding the link's "
+                          "geometry): imposed on 2 of 2 links"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(
+      text.out.find("inside the ellipsoid bounding its geometry", text.out.find("link 'fore'")),
+      std::string::npos)
+      << text.out;
+  for (const std::string& args : {"--no-geometry '" + boxes + "'", "'" + Robot() + "'"}) {
+    const ToolRun off = Run("identify --format json " + args + " '" + kDir + "planar_arm.csv'");
+    ASSERT_EQ(off.code, 0) << off.err;
+    const nlohmann::json none = nlohmann::json::parse(off.out);
+    EXPECT_EQ(none["geometry_bound_links"], 0) << args;
+    for (const auto& link : none["links"]) {
+      EXPECT_FALSE(link["geometry_bound"]) << args;
+      EXPECT_TRUE(link["ellipsoid_ratio"].is_null()) << args;
+    }
+  }
+  const ToolRun text_off =
+      Run("identify --no-geometry '" + boxes + "' '" + kDir + "planar_arm.csv'");
+  EXPECT_NE(text_off.out.find("not imposed (--no-geometry)"), std::string::npos) << text_off.out;
+}
+
 TEST_F(IdentifyCliTest, WriteChangesOnlyInertialNumbersToTheTrueArmsOnes) {
   const std::string out = (dir_ / "identified.urdf").string();
   const ToolRun run =

@@ -208,10 +208,13 @@ def identify(robot: Union[str, "os.PathLike[str]"], data: Union[str, "os.PathLik
     Returns {"identifiability": {"rank", "parameters", "condition_number", "unexcited_links",
     "base_parameters"}, "training_samples", "validation_samples", "joints": [{"joint",
     "rms_file", "rms_least_squares", "rms_identified"}], "links": [{"link", "file",
-    "identified", "least_squares_consistent", "identified_consistent"}],
-    "inconsistent_least_squares_links", "solver"}. Raises ReadError (a file that cannot be read:
-    the model, a missing column, NaN, time going back, a bag without JointState), ValueError (not
-    a fixed-base tree, joints missing on either side, validate out of range, too few samples).
+    "identified", "least_squares_consistent", "identified_consistent", "geometry_bound",
+    "ellipsoid_ratio", "least_squares_within_geometry"}], "inconsistent_least_squares_links",
+    "geometry_bound_links", "least_squares_outside_geometry_links", "solver"}. Where a link's
+    geometry is known, its estimate lies inside the ellipsoid bounding it (docs/identify.md).
+    Raises ReadError (a file that cannot be read: the model, a missing column, NaN, time going
+    back, a bag without JointState), ValueError (not a fixed-base tree, joints missing on either
+    side, validate out of range, too few samples).
 
     >>> r = massprops.identify("arm.urdf", "log.csv")
     >>> [(j["joint"], j["rms_file"], j["rms_identified"]) for j in r["joints"]]

@@ -9,10 +9,12 @@
 
 #include "bindings.h"
 #include "file_bindings.h"
+#include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/identify.h"
 #include "massprops/io/model_reader.h"
 #include "massprops/io/trajectory_csv.h"
 #include "massprops/io/trajectory_rosbag.h"
+#include "massprops/mesh/mesh_loader.h"
 #include "massprops/output/identify_report.h"
 
 namespace py = pybind11;
@@ -22,7 +24,7 @@ namespace massprops::python {
 namespace {
 
 // The robot's first model as a fixed-base tree; ReadError or ValueError (not a fixed-base tree).
-KinematicTree IdentifyTree(const std::string& robot) {
+KinematicTree IdentifyTree(const std::string& robot, Model* model) {
   const ReadResult read = ReadModelFile(robot);
   if (!read.errors.empty()) RaiseReadError(read.errors);
   if (read.models.empty()) {
@@ -31,7 +33,8 @@ KinematicTree IdentifyTree(const std::string& robot) {
     error.message = "no model in the file";
     RaiseReadError({error});
   }
-  KinematicTreeResult made = MakeKinematicTree(read.models.front());
+  *model = read.models.front();
+  KinematicTreeResult made = MakeKinematicTree(*model);
   if (!made.tree) throw py::value_error("identify: " + robot + ": " + made.error);
   return *made.tree;
 }
@@ -40,7 +43,8 @@ KinematicTree IdentifyTree(const std::string& robot) {
 py::object Identify(const std::string& robot, const std::string& data, double validate) {
   if (!(validate >= 0 && validate <= 0.9))
     throw py::value_error("identify: validate must be between 0 and 0.9");
-  const KinematicTree tree = IdentifyTree(robot);
+  Model model;
+  const KinematicTree tree = IdentifyTree(robot, &model);
   const TrajectoryReadResult log =
       IsRosbagPath(data) ? ReadTrajectoryRosbag(data) : ReadTrajectoryCsvFile(data);
   if (!log.ok()) RaiseReadError(log.errors);
@@ -48,6 +52,13 @@ py::object Identify(const std::string& robot, const std::string& data, double va
   if (!ordered.ok()) throw py::value_error("identify: " + data + ": " + ordered.error);
   IdentifyOptions options;
   options.validation_fraction = validate;
+  // The bound of each body's geometry, its meshes found as the command finds them without
+  // --package-path (relative to the file, its package's folders, ROS_PACKAGE_PATH).
+  MeshCache cache;
+  MeshResolveOptions resolve;
+  resolve.model_file = robot;
+  resolve.cache = &cache;
+  options.ellipsoids = BodyBoundingEllipsoids(model, tree, MakeLinkPointsFunction(resolve));
   IdentifyResult result;
   try {
     result = massprops::Identify(tree, ordered, options);

@@ -34,11 +34,16 @@ def test_identify_reports_the_true_arms_fit(testdata):
     assert all(link["identified_consistent"] for link in r["links"])
 
 
-def test_identify_equals_the_commands_json(testdata, tool):
-    robot, data = planar(testdata)
+@pytest.mark.parametrize("model", ["planar_arm.urdf", "planar_arm_boxes.urdf"])
+def test_identify_equals_the_commands_json(testdata, tool, model):
+    # planar_arm_boxes.urdf: a box per link, so each link's estimate is bounded by its box's
+    # ellipsoid in both (geometry_bound true for both links).
+    robot, data = testdata / "identify" / model, planar(testdata)[1]
     out = subprocess.run([tool, "identify", "--format", "json", "--validate", "0.3", str(robot),
                           str(data)], check=True, capture_output=True, text=True).stdout
-    assert massprops.identify(str(robot), str(data)) == json.loads(out)
+    r = massprops.identify(str(robot), str(data))
+    assert r == json.loads(out)
+    assert r["geometry_bound_links"] == (2 if model == "planar_arm_boxes.urdf" else 0)
 
 
 def _cdr_joint_state(sec, nanosec, names, position, velocity, effort):

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <unsupported/Eigen/LevenbergMarquardt>
+#include <utility>
 #include <vector>
 
 namespace massprops {
@@ -32,20 +33,37 @@ Eigen::Matrix<double, 10, 1> PriorScales(const InertialParameters& pi, double fa
 
 // The residual of the consistent fit: the data (through R of the QR of [W τ]) and the prior.
 struct ConsistentFitFunctor : Eigen::DenseFunctor<double> {
+  // `ellipsoids`: per body, the ellipsoid its θ keep it inside (identify_ellipsoid.h), or null
+  // for the log-Cholesky coordinates.
   ConsistentFitFunctor(const Eigen::MatrixXd& R, int bodies, const Eigen::VectorXd& prior,
-                       const Eigen::VectorXd& prior_weights)
+                       const Eigen::VectorXd& prior_weights,
+                       std::vector<const BoundingEllipsoid*> ellipsoids)
       : Eigen::DenseFunctor<double>(static_cast<int>(R.cols() - 1),
                                     static_cast<int>(R.rows() + 10 * bodies)),
         R_(R),
         bodies_(bodies),
         prior_(prior),
-        weights_(prior_weights) {}
+        weights_(prior_weights),
+        ellipsoids_(std::move(ellipsoids)) {}
+
+  // Body b's π(θ) and dπ/dθ.
+  InertialParameters BodyParameters(int b, const Eigen::VectorXd& x) const {
+    const Eigen::Matrix<double, 10, 1> theta = x.segment<10>(10 * b);
+    const BoundingEllipsoid* e = ellipsoids_[static_cast<std::size_t>(b)];
+    return e ? InertialParametersFromEllipsoidParameters(theta, *e)
+             : InertialParametersFromLogCholesky(theta);
+  }
+  Eigen::Matrix<double, 10, 10> BodyJacobian(int b, const Eigen::VectorXd& x) const {
+    const Eigen::Matrix<double, 10, 1> theta = x.segment<10>(10 * b);
+    const BoundingEllipsoid* e = ellipsoids_[static_cast<std::size_t>(b)];
+    return e ? InertialParametersFromEllipsoidParametersJacobian(theta, *e)
+             : InertialParametersFromLogCholeskyJacobian(theta);
+  }
 
   // The full parameter vector π of x = [θ per body, friction].
   Eigen::VectorXd Parameters(const Eigen::VectorXd& x) const {
     Eigen::VectorXd pi = x;
-    for (int b = 0; b < bodies_; ++b)
-      pi.segment<10>(10 * b) = InertialParametersFromLogCholesky(x.segment<10>(10 * b));
+    for (int b = 0; b < bodies_; ++b) pi.segment<10>(10 * b) = BodyParameters(b, x);
     return pi;
   }
 
@@ -63,9 +81,7 @@ struct ConsistentFitFunctor : Eigen::DenseFunctor<double> {
     ++jacobians;  // once per iteration
     const Eigen::Index c = R_.cols() - 1;
     Eigen::MatrixXd D = Eigen::MatrixXd::Identity(c, c);
-    for (int b = 0; b < bodies_; ++b)
-      D.block<10, 10>(10 * b, 10 * b) =
-          InertialParametersFromLogCholeskyJacobian(x.segment<10>(10 * b));
+    for (int b = 0; b < bodies_; ++b) D.block<10, 10>(10 * b, 10 * b) = BodyJacobian(b, x);
     jac.resize(values(), inputs());
     jac.topRows(R_.rows()) = R_.leftCols(c) * D;
     const Eigen::Index inertial = 10 * bodies_;
@@ -76,6 +92,7 @@ struct ConsistentFitFunctor : Eigen::DenseFunctor<double> {
   const Eigen::MatrixXd& R_;
   int bodies_;
   Eigen::VectorXd prior_, weights_;
+  std::vector<const BoundingEllipsoid*> ellipsoids_;
   mutable int jacobians = 0;
 };
 
@@ -205,9 +222,10 @@ void FitLeastSquares(const Eigen::MatrixXd& R, Eigen::Index samples_rows,
 // change ε of the torques moves x by −H⁻¹·J_dᵀ·ε, so Cov(x) = σ̂²·H⁻¹·J_dᵀJ_d·H⁻¹ (the sandwich
 // form: the prior shrinks what the data barely see, and the spread over noise with it). σ̂² is the
 // data residual over samples_rows − rank. Assumes independent noise of one variance on every
-// joint and sample, and a fit close to linear over ±σ̂ (no constraint active: the log-Cholesky
-// coordinates have none). Mapped per body to its mass and center of mass c = h/m through
-// dπ/dθ and the Jacobian [−h/m², 1/m] of c.
+// joint and sample, and a fit close to linear over ±σ̂ (no constraint active: neither the
+// log-Cholesky nor the ellipsoid coordinates have one; near an ellipsoid's boundary the map bends).
+// Mapped per body to its mass and center of mass c = h/m through dπ/dθ and the Jacobian [−h/m²,
+// 1/m] of c.
 void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::VectorXd& x,
                           Eigen::Index samples_rows, IdentifyResult* out) {
   Eigen::VectorXd f;
@@ -225,8 +243,7 @@ void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::Vect
   out->mass_standard_error.resize(functor.bodies_);
   out->com_standard_error.resize(3, functor.bodies_);
   for (int b = 0; b < functor.bodies_; ++b) {
-    const Eigen::Matrix<double, 10, 10> D =
-        InertialParametersFromLogCholeskyJacobian(x.segment<10>(10 * b));
+    const Eigen::Matrix<double, 10, 10> D = functor.BodyJacobian(b, x);
     const Eigen::Matrix<double, 10, 10> cov_pi =
         D * cov.block<10, 10>(10 * b, 10 * b) * D.transpose();
     const InertialParameters pi = out->identified.segment<10>(10 * b);
@@ -240,8 +257,65 @@ void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::Vect
   }
 }
 
+// Levenberg–Marquardt from x, in rounds of at most 300 evaluations, up to
+// `evaluations` in all. A body whose fit reaches its ellipsoid's boundary has coordinates v of
+// unbounded size there (w = v/√(1 + ‖v‖²)), where every derivative shrinks like 1/‖v‖ and the
+// solver's scaling (which only grows) stalls it at the first point of the boundary it reaches.
+// So between rounds each such body (ratio above kBoundaryRatio) is mapped to coordinates again,
+// contracted about x0 to that ratio (a move of 1/2000 of its size), and the solver restarts with
+// a fresh scaling. Stops when a round converges with no body at a boundary, or when a round
+// lowered the residual by less than 1e-9 of it. Without ellipsoids: one run, as before.
+Eigen::LevenbergMarquardtSpace::Status MinimizeInRounds(ConsistentFitFunctor& functor,
+                                                        int evaluations, Eigen::VectorXd* x) {
+  const bool bounded = std::any_of(functor.ellipsoids_.begin(), functor.ellipsoids_.end(),
+                                   [](const BoundingEllipsoid* e) { return e != nullptr; });
+  // No ellipsoid: one run with the whole budget.
+  const int round_evaluations = bounded ? 300 : evaluations;
+  constexpr double kBoundaryRatio = 0.999;
+  Eigen::LevenbergMarquardtSpace::Status status =
+      Eigen::LevenbergMarquardtSpace::ImproperInputParameters;
+  double before = HUGE_VAL;
+  while (evaluations > 0) {
+    Eigen::LevenbergMarquardt<ConsistentFitFunctor> lm(functor);
+    lm.setMaxfev(std::min(evaluations, round_evaluations));
+    status = lm.minimize(*x);
+    evaluations -= std::max<int>(static_cast<int>(lm.nfev()), 1);
+    const double after = lm.fnorm();
+    if (!(after < before * (1 - 1e-9))) break;
+    before = after;
+    bool remapped = false;
+    for (int b = 0; b < functor.bodies_; ++b) {
+      const BoundingEllipsoid* e = functor.ellipsoids_[static_cast<std::size_t>(b)];
+      if (e == nullptr) continue;
+      const InertialParameters pi = functor.BodyParameters(b, *x);
+      if (!(EllipsoidRatioOf(pi, *e) > kBoundaryRatio)) continue;
+      x->segment<10>(10 * b) = EllipsoidParametersFromInertialParameters(pi, *e, kBoundaryRatio);
+      remapped = true;
+    }
+    if (!remapped && status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation) break;
+  }
+  return status;
+}
+
+// Per body, the ellipsoid the fit keeps it inside, or null: where options give a usable one and
+// the bound is on.
+std::vector<const BoundingEllipsoid*> ImposedEllipsoids(int bodies,
+                                                        const IdentifyOptions& options) {
+  std::vector<const BoundingEllipsoid*> out(static_cast<std::size_t>(bodies), nullptr);
+  if (!options.geometry_bound || options.ellipsoids.size() != out.size()) return out;
+  for (std::size_t b = 0; b < out.size(); ++b) {
+    const std::optional<BoundingEllipsoid>& e = options.ellipsoids[b];
+    if (e && IsUsableEllipsoid(*e)) out[b] = &*e;
+  }
+  return out;
+}
+
 // The consistent fit on the compressed data R; sum_squares = Σ τ² of the fitted samples (the data
-// term's scale, which the prior weight is relative to).
+// term's scale, which the prior weight is relative to). A body with an imposed ellipsoid whose
+// file values have a ratio above kEllipsoidPriorRatio (outside it, or within 1% of its boundary)
+// starts from, and is regularised toward, those values contracted about the ellipsoid's center
+// to that ratio (EllipsoidParametersFromInertialParameters: mass kept, center of mass moved
+// toward x0, central second moment scaled by the square of the factor).
 void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& R, double sum_squares,
                    Eigen::Index samples_rows, const IdentifyOptions& options, IdentifyResult* out) {
   const int n = tree.size();
@@ -251,18 +325,28 @@ void FitConsistent(const KinematicTree& tree, const Eigen::MatrixXd& R, double s
     if (b.pi_BBo_B[0] > 0) mean_mass += b.pi_BBo_B[0], ++massive;
   }
   mean_mass = massive > 0 ? mean_mass / massive : 1.0;
+  const std::vector<const BoundingEllipsoid*> ellipsoids = ImposedEllipsoids(n, options);
   Eigen::VectorXd weights(10 * n);
   Eigen::VectorXd x = out->file;
+  Eigen::VectorXd prior = out->file;
   for (int b = 0; b < n; ++b) {
-    const InertialParameters prior = out->file.segment<10>(10 * b);
-    weights.segment<10>(10 * b) = std::sqrt(options.prior_weight * sum_squares) *
-                                  PriorScales(prior, mean_mass).cwiseInverse();
-    x.segment<10>(10 * b) = LogCholeskyFromInertialParameters(prior);
+    const InertialParameters file = out->file.segment<10>(10 * b);
+    weights.segment<10>(10 * b) =
+        std::sqrt(options.prior_weight * sum_squares) * PriorScales(file, mean_mass).cwiseInverse();
+    const BoundingEllipsoid* e = ellipsoids[static_cast<std::size_t>(b)];
+    if (e == nullptr) {
+      x.segment<10>(10 * b) = LogCholeskyFromInertialParameters(file);
+      continue;
+    }
+    x.segment<10>(10 * b) = EllipsoidParametersFromInertialParameters(file, *e);
+    if (!(EllipsoidRatioOf(file, *e) <= kEllipsoidPriorRatio)) {
+      prior.segment<10>(10 * b) =
+          InertialParametersFromEllipsoidParameters(x.segment<10>(10 * b), *e);
+    }
   }
-  ConsistentFitFunctor functor(R, n, out->file, weights);
-  Eigen::LevenbergMarquardt<ConsistentFitFunctor> lm(functor);
-  lm.setMaxfev(options.max_function_evaluations);
-  const Eigen::LevenbergMarquardtSpace::Status status = lm.minimize(x);
+  ConsistentFitFunctor functor(R, n, prior, weights, ellipsoids);
+  const Eigen::LevenbergMarquardtSpace::Status status =
+      MinimizeInRounds(functor, options.max_function_evaluations, &x);
   out->solver_iterations = functor.jacobians;
   out->solver_status = StatusInWords(status);
   out->identified = functor.Parameters(x);
@@ -339,6 +423,7 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
   out.file = RegressorParameters(tree, options.regressor);
   FitLeastSquares(R, fit * n, out.file, &out);
   FitConsistent(tree, R, data.tau.topRows(fit).squaredNorm(), fit * n, options, &out);
+  const std::vector<const BoundingEllipsoid*> ellipsoids = ImposedEllipsoids(n, options);
   const Eigen::MatrixXd& B = out.identifiability.base_from_full;
   out.base_file = B * out.file;
   out.base_identified = B * out.identified;
@@ -351,6 +436,15 @@ IdentifyResult Identify(const KinematicTree& tree, const OrderedTrajectory& data
     e.least_squares_consistent = IsConsistentBody(e.least_squares);
     e.identified_consistent = IsConsistentBody(e.identified);
     if (!e.least_squares_consistent) ++out.inconsistent_least_squares_links;
+    if (const BoundingEllipsoid* bound = ellipsoids[static_cast<std::size_t>(b)]) {
+      e.geometry_bound = true;
+      e.file_ellipsoid_ratio = EllipsoidRatioOf(e.file, *bound);
+      e.least_squares_ellipsoid_ratio = EllipsoidRatioOf(e.least_squares, *bound);
+      e.identified_ellipsoid_ratio = EllipsoidRatioOf(e.identified, *bound);
+      e.least_squares_within_geometry = e.least_squares_ellipsoid_ratio <= 1 + 1e-9;
+      ++out.geometry_bound_links;
+      if (!e.least_squares_within_geometry) ++out.least_squares_outside_geometry_links;
+    }
     out.bodies.push_back(e);
   }
   const std::vector<Eigen::VectorXd> rms =

@@ -24,6 +24,26 @@ nlohmann::json IdentifyBodyJson(const InertialParameters& pi) {
           {"parameters", IdentifyVectorJson(pi)}};
 }
 
+// A ratio, or null where not finite (no bound imposed, or no positive mass).
+nlohmann::json RatioJson(double ratio) {
+  return std::isfinite(ratio) ? nlohmann::json(ratio) : nlohmann::json(nullptr);
+}
+
+// Whether the geometry bound was imposed, the ellipsoid ratio of each estimate and whether least
+// squares' lies inside (null where not imposed).
+void AddGeometryBoundJson(const BodyEstimate& b, nlohmann::json* link) {
+  (*link)["geometry_bound"] = b.geometry_bound;
+  if (!b.geometry_bound) {
+    (*link)["ellipsoid_ratio"] = nullptr;
+    (*link)["least_squares_within_geometry"] = nullptr;
+    return;
+  }
+  (*link)["ellipsoid_ratio"] = {{"file", RatioJson(b.file_ellipsoid_ratio)},
+                                {"least_squares", RatioJson(b.least_squares_ellipsoid_ratio)},
+                                {"identified", RatioJson(b.identified_ellipsoid_ratio)}};
+  (*link)["least_squares_within_geometry"] = b.least_squares_within_geometry;
+}
+
 }  // namespace
 
 BodyCentralProperties CentralPropertiesOf(const InertialParameters& pi) {
@@ -67,11 +87,13 @@ std::string RenderIdentifyJson(const KinematicTree& tree, const IdentifyResult& 
       identified["mass_standard_error"] = r.mass_standard_error[k];
       identified["com_standard_error"] = IdentifyVectorJson(r.com_standard_error.col(k));
     }
-    links.push_back({{"link", b.link},
-                     {"file", IdentifyBodyJson(b.file)},
-                     {"identified", identified},
-                     {"least_squares_consistent", b.least_squares_consistent},
-                     {"identified_consistent", b.identified_consistent}});
+    nlohmann::json link = {{"link", b.link},
+                           {"file", IdentifyBodyJson(b.file)},
+                           {"identified", identified},
+                           {"least_squares_consistent", b.least_squares_consistent},
+                           {"identified_consistent", b.identified_consistent}};
+    AddGeometryBoundJson(b, &link);
+    links.push_back(link);
   }
   const nlohmann::json out = {
       {"identifiability",
@@ -87,6 +109,8 @@ std::string RenderIdentifyJson(const KinematicTree& tree, const IdentifyResult& 
       {"joints", joints},
       {"links", links},
       {"inconsistent_least_squares_links", r.inconsistent_least_squares_links},
+      {"geometry_bound_links", r.geometry_bound_links},
+      {"least_squares_outside_geometry_links", r.least_squares_outside_geometry_links},
       {"solver", {{"status", r.solver_status}, {"iterations", r.solver_iterations}}}};
   return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

@@ -17,7 +17,9 @@
 #include <vector>
 
 #include "commands.h"
+#include "geometry_cli.h"
 #include "identify_html.h"
+#include "massprops/analysis/geometry_checks.h"
 #include "massprops/analysis/identify.h"
 #include "massprops/analysis/repair.h"
 #include "massprops/core/rotational_inertia.h"
@@ -41,6 +43,8 @@ struct IdentifyArgs {
   bool in_place = false;
   std::string format = "text";
   std::string html;
+  bool no_geometry = false;  // --no-geometry
+  std::vector<std::string> package_paths;
 };
 
 std::string Number(double value) {
@@ -56,6 +60,32 @@ std::string Triple(Eigen::Vector3d v) {
     if (std::abs(v[k]) < 1e-9 * largest) v[k] = 0;
   }
   return "(" + Number(v[0]) + ", " + Number(v[1]) + ", " + Number(v[2]) + ")";
+}
+
+// How many links the bounding-ellipsoid condition was imposed on, and those of them whose least
+// squares estimate lies outside their ellipsoid, named.
+void WriteGeometryBoundSummary(const IdentifyArgs& args, const IdentifyResult& r) {
+  std::cout << "geometry bound (a density inside the ellipsoid bounding the link's geometry): ";
+  if (args.no_geometry) {
+    std::cout << "not imposed (--no-geometry)\n";
+    return;
+  }
+  std::cout << "imposed on " << r.geometry_bound_links << " of " << r.bodies.size() << " links";
+  if (r.geometry_bound_links < static_cast<int>(r.bodies.size()))
+    std::cout << " (the others' geometry is not known)";
+  if (r.geometry_bound_links == 0) {
+    std::cout << "\n";
+    return;
+  }
+  std::cout << "; least squares lies outside it for " << r.least_squares_outside_geometry_links
+            << " of them";
+  std::string names;
+  for (const BodyEstimate& b : r.bodies) {
+    if (!b.least_squares_within_geometry)
+      names += (names.empty() ? "" : ", ") + ("'" + b.link + "'");
+  }
+  if (!names.empty()) std::cout << " (" << names << ")";
+  std::cout << "\n";
 }
 
 void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const IdentifyResult& r) {
@@ -98,7 +128,9 @@ void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const Identi
     if (!b.least_squares_consistent) names += (names.empty() ? "" : ", ") + ("'" + b.link + "'");
   }
   if (!names.empty()) std::cout << " (" << names << ")";
-  std::cout << "; the consistent fit " << r.solver_status << " in " << r.solver_iterations
+  std::cout << "\n";
+  WriteGeometryBoundSummary(args, r);
+  std::cout << "the consistent fit " << r.solver_status << " in " << r.solver_iterations
             << " iterations\n\nlinks (with the links welded to them), file -> identified ± its "
                "standard error over the noise:\n";
   const bool errors = r.mass_standard_error.size() == static_cast<Eigen::Index>(r.bodies.size());
@@ -114,6 +146,11 @@ void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const Identi
               << (errors ? " ± " + Triple(r.com_standard_error.col(i)) : std::string())
               << " m\n    principal moments " << Triple(before.principal) << " -> "
               << Triple(after.principal) << " kg·m²\n";
+    if (b.geometry_bound) {
+      std::cout << "    inside the ellipsoid bounding its geometry (ratio, at most 1 inside): "
+                << Number(b.file_ellipsoid_ratio) << " -> " << Number(b.identified_ellipsoid_ratio)
+                << " (least squares " << Number(b.least_squares_ellipsoid_ratio) << ")\n";
+    }
   }
 }
 
@@ -215,6 +252,29 @@ int WriteIdentified(const IdentifyArgs& args, const Model& model, const Kinemati
   return kExitOk;
 }
 
+// The bounding ellipsoid of each body's geometry (BodyBoundingEllipsoids), its meshes read as
+// `check` reads them (--package-path, then the configuration's package-paths; the mesh cache
+// kept between runs).
+std::vector<std::optional<BoundingEllipsoid>> ReadBodyEllipsoids(const IdentifyArgs& args,
+                                                                 const Model& model,
+                                                                 const KinematicTree& tree) {
+  static MeshCache cache;  // lives to the end of the run, when its entries are written
+  static const bool persistent = [] {
+    const std::string folder = DefaultMeshCacheFolder();
+    if (!folder.empty()) cache.UsePersistentCache(folder);
+    return true;
+  }();
+  (void)persistent;
+  std::vector<std::string> package_paths = args.package_paths;
+  try {
+    package_paths = WithConfigPackagePaths(package_paths, model.file);
+  } catch (const std::exception& e) {
+    std::cerr << "massprops: warning: " << e.what() << " (its package-paths are not searched)\n";
+  }
+  const MeshResolveOptions resolve = MakeResolveOptions(package_paths, {}, model.file, &cache);
+  return BodyBoundingEllipsoids(model, tree, MakeLinkPointsFunction(resolve));
+}
+
 // The model and its tree, or an error printed (false).
 bool ReadRobot(const std::string& file, Model* model, std::optional<KinematicTree>* tree) {
   const ReadResult read = ReadModelFile(file);
@@ -260,6 +320,8 @@ int RunIdentify(const IdentifyArgs& args) {
   }
   IdentifyOptions options;
   options.validation_fraction = args.validate;
+  options.geometry_bound = !args.no_geometry;
+  if (!args.no_geometry) options.ellipsoids = ReadBodyEllipsoids(args, model, *tree);
   IdentifyResult result;
   try {
     result = Identify(*tree, data, options);
@@ -314,6 +376,10 @@ void AddIdentifyCommands(CLI::App& app, std::function<int()>* run) {
   identify->add_option("--html", args->html,
                        "Also write an HTML page of the measured against the predicted torques "
                        "per joint (held-out samples; Chart.js embedded)");
+  identify->add_flag("--no-geometry", args->no_geometry,
+                     "Do not read the links' geometry: impose J ≻ 0 only, not the bounding "
+                     "ellipsoid of each link's geometry");
+  AddPackagePathOption(identify, &args->package_paths);
   identify->add_option("--format", args->format, "Output format")
       ->check(CLI::IsMember({"text", "json"}));
   identify->callback([args, run]() { *run = [args]() { return RunIdentify(*args); }; });

@@ -17,13 +17,19 @@
 /// prior: the file's values. S_b scales a body's mass, first moments and inertias by the prior's
 /// mass m0 and length L (m0, m0·L, m0·L²), and λ is relative to the mean squared torque, so that
 /// what the data do not see stays as the file has it.
+///
+/// Where a body's geometry is known (IdentifyOptions::ellipsoids, from BodyBoundingEllipsoids),
+/// its θ are instead the coordinates of identify_ellipsoid.h: every θ is a density inside the
+/// ellipsoid that bounds that geometry (Wensing, Kim and Slotine, RA-L 2018), still unconstrained.
 
 #include <Eigen/Core>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "massprops/analysis/identifiability.h"
+#include "massprops/analysis/identify_ellipsoid.h"
 #include "massprops/dynamics/kinematic_tree.h"
 #include "massprops/dynamics/torque_regressor.h"
 #include "massprops/io/trajectory_csv.h"
@@ -73,6 +79,13 @@ struct IdentifyOptions {
   RegressorOptions regressor;  ///< Friction columns by default.
   IdentifiabilityOptions identifiability;
   int max_function_evaluations = 2000;
+  /// Per body (tree order): the ellipsoid bounding its geometry (BodyBoundingEllipsoids), or
+  /// nullopt where it is not known. Where one is given and usable (IsUsableEllipsoid), the body's
+  /// estimate is the moments of a density inside it by construction (identify_ellipsoid.h);
+  /// elsewhere J ≻ 0 only. Empty: no body's geometry is known.
+  std::vector<std::optional<BoundingEllipsoid>> ellipsoids;
+  /// false: the ellipsoids are neither imposed nor judged (`massprops identify --no-geometry`).
+  bool geometry_bound = true;
 };
 
 /// One body before and after.
@@ -83,6 +96,15 @@ struct BodyEstimate {
   InertialParameters identified;     ///< The consistent fit.
   bool least_squares_consistent = false;
   bool identified_consistent = false;
+  /// The bound of its geometry's ellipsoid was imposed (IdentifyOptions::ellipsoids).
+  bool geometry_bound = false;
+  /// Where imposed: EllipsoidRatioOf of the file's, least squares' and the identified values (at
+  /// most 1 for a density inside the ellipsoid); NaN elsewhere.
+  double file_ellipsoid_ratio = std::numeric_limits<double>::quiet_NaN();
+  double least_squares_ellipsoid_ratio = std::numeric_limits<double>::quiet_NaN();
+  double identified_ellipsoid_ratio = std::numeric_limits<double>::quiet_NaN();
+  /// Where imposed: least squares' ratio is at most 1 + 1e-9 (true where not imposed).
+  bool least_squares_within_geometry = true;
 };
 
 struct IdentifyResult {
@@ -96,6 +118,10 @@ struct IdentifyResult {
   Eigen::VectorXd base_file, base_least_squares, base_identified, base_standard_error;
   std::vector<BodyEstimate> bodies;
   int inconsistent_least_squares_links = 0;
+  /// Bodies whose geometry bound was imposed, and those of them whose least squares estimate lies
+  /// outside their ellipsoid (BodyEstimate::least_squares_within_geometry false).
+  int geometry_bound_links = 0;
+  int least_squares_outside_geometry_links = 0;
   /// Torque RMS per joint on the held-out samples (on the training samples when none are held
   /// out: validation_samples == 0), N·m or N.
   Eigen::VectorXd rms_file, rms_least_squares, rms_identified;

@@ -27,8 +27,11 @@ BodyCentralProperties CentralPropertiesOf(const InertialParameters& pi);
 /// "standard_error"}]}, "training_samples", "validation_samples", "joints": [{"joint",
 /// "rms_file", "rms_least_squares", "rms_identified"}], "links": [{"link", "file" and
 /// "identified" (each {"mass", "com", "principal_moments", "parameters"}),
-/// "least_squares_consistent", "identified_consistent"}], "inconsistent_least_squares_links",
-/// "solver": {"status", "iterations"}}, indented by two spaces, ending in a newline. `r` must be
+/// "least_squares_consistent", "identified_consistent", "geometry_bound", "ellipsoid_ratio"
+/// ({"file", "least_squares", "identified"}, null where not imposed) and
+/// "least_squares_within_geometry" (null where not imposed)}], "inconsistent_least_squares_links",
+/// "geometry_bound_links", "least_squares_outside_geometry_links", "solver": {"status",
+/// "iterations"}}, indented by two spaces, ending in a newline. `r` must be
 /// Identify(tree, ...). Never throws.
 std::string RenderIdentifyJson(const KinematicTree& tree, const IdentifyResult& r);
 
