@@ -226,6 +226,11 @@ TEST(IdentifyTest, StandardErrorsMatchTheSpreadOverNoiseSeeds) {
     const OrderedTrajectory data = Simulate(truth, 800, 0.05, 100 + static_cast<unsigned>(seed));
     const IdentifyResult r = Identify(file, data, IdentifyOptions{});
     ASSERT_EQ(r.mass_standard_error.size(), 2);
+    // The principal moments' errors (identify_uncertainty_test holds their propagation to random
+    // draws; the forearm's two equal moments make each one's spread over seeds ill-defined here).
+    ASSERT_EQ(r.principal_moments_standard_error.cols(), 2);
+    EXPECT_TRUE(r.principal_moments_standard_error.allFinite());
+    EXPECT_GE(r.principal_moments_standard_error.minCoeff(), 0);
     Eigen::VectorXd v(8);
     for (int b = 0; b < 2; ++b) {
       const InertialParameters& pi = r.bodies[static_cast<std::size_t>(b)].identified;

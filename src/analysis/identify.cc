@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "massprops/analysis/identify_uncertainty.h"
+
 namespace massprops {
 
 namespace {
@@ -225,7 +227,8 @@ void FitLeastSquares(const Eigen::MatrixXd& R, Eigen::Index samples_rows,
 // joint and sample, and a fit close to linear over ±σ̂ (no constraint active: neither the
 // log-Cholesky nor the ellipsoid coordinates have one; near an ellipsoid's boundary the map bends).
 // Mapped per body to its mass and center of mass c = h/m through dπ/dθ and the Jacobian [−h/m²,
-// 1/m] of c.
+// 1/m] of c, and to its principal moments through their first-order Jacobian
+// (identify_uncertainty.h).
 void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::VectorXd& x,
                           Eigen::Index samples_rows, IdentifyResult* out) {
   Eigen::VectorXd f;
@@ -242,6 +245,7 @@ void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::Vect
   const Eigen::MatrixXd cov = sigma2 * Hinv * (Jd.transpose() * Jd) * Hinv;
   out->mass_standard_error.resize(functor.bodies_);
   out->com_standard_error.resize(3, functor.bodies_);
+  out->principal_moments_standard_error.resize(3, functor.bodies_);
   for (int b = 0; b < functor.bodies_; ++b) {
     const Eigen::Matrix<double, 10, 10> D = functor.BodyJacobian(b, x);
     const Eigen::Matrix<double, 10, 10> cov_pi =
@@ -254,6 +258,7 @@ void ConsistentCovariance(const ConsistentFitFunctor& functor, const Eigen::Vect
     const Eigen::Matrix3d cov_c = G * cov_pi.topLeftCorner<4, 4>() * G.transpose();
     out->mass_standard_error[b] = std::sqrt(std::max(cov_pi(0, 0), 0.0));
     out->com_standard_error.col(b) = cov_c.diagonal().cwiseMax(0.0).cwiseSqrt();
+    out->principal_moments_standard_error.col(b) = PrincipalMomentsStandardError(pi, cov_pi);
   }
 }
 

@@ -86,6 +86,8 @@ std::string RenderIdentifyJson(const KinematicTree& tree, const IdentifyResult& 
       const Eigen::Index k = static_cast<Eigen::Index>(&b - r.bodies.data());
       identified["mass_standard_error"] = r.mass_standard_error[k];
       identified["com_standard_error"] = IdentifyVectorJson(r.com_standard_error.col(k));
+      identified["principal_moments_standard_error"] =
+          IdentifyVectorJson(r.principal_moments_standard_error.col(k));
     }
     nlohmann::json link = {{"link", b.link},
                            {"file", IdentifyBodyJson(b.file)},

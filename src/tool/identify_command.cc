@@ -145,7 +145,10 @@ void WriteText(const IdentifyArgs& args, const KinematicTree& tree, const Identi
               << "    center of mass " << Triple(before.com) << " -> " << Triple(after.com)
               << (errors ? " ± " + Triple(r.com_standard_error.col(i)) : std::string())
               << " m\n    principal moments " << Triple(before.principal) << " -> "
-              << Triple(after.principal) << " kg·m²\n";
+              << Triple(after.principal)
+              << (errors ? " ± " + Triple(r.principal_moments_standard_error.col(i))
+                         : std::string())
+              << " kg·m²\n";
     if (b.geometry_bound) {
       std::cout << "    inside the ellipsoid bounding its geometry (ratio, at most 1 inside): "
                 << Number(b.file_ellipsoid_ratio) << " -> " << Number(b.identified_ellipsoid_ratio)

@@ -125,15 +125,17 @@ struct IdentifyResult {
   /// Torque RMS per joint on the held-out samples (on the training samples when none are held
   /// out: validation_samples == 0), N·m or N.
   Eigen::VectorXd rms_file, rms_least_squares, rms_identified;
-  /// Standard errors of the consistent estimate per body (tree order): of its mass (kg) and of
-  /// each coordinate of its center of mass (m, a 3 × bodies matrix). The first-order spread of
-  /// the estimate over the recording's noise, σ̂²·H⁻¹·J_dᵀJ_d·H⁻¹ at the solution (J_d the data
-  /// Jacobian, H = JᵀJ with the prior's rows), σ̂² the data residual per degree of freedom:
-  /// independent noise of one variance on every joint and sample. What the data do not
-  /// determine stays at the file's value with a small error here: that is not knowledge of it
-  /// (identifiability says which combinations the data determine).
+  /// Standard errors of the consistent estimate per body (tree order): of its mass (kg), of
+  /// each coordinate of its center of mass (m, a 3 × bodies matrix) and of each principal moment
+  /// (kg·m², ascending as BodyCentralProperties::principal; identify_uncertainty.h). The
+  /// first-order spread of the estimate over the recording's noise, σ̂²·H⁻¹·J_dᵀJ_d·H⁻¹ at the
+  /// solution (J_d the data Jacobian, H = JᵀJ with the prior's rows), σ̂² the data residual per
+  /// degree of freedom: independent noise of one variance on every joint and sample. What the data
+  /// do not determine stays at the file's value with a small error here: that is not knowledge of
+  /// it (identifiability says which combinations the data determine).
   Eigen::VectorXd mass_standard_error;
   Eigen::Matrix3Xd com_standard_error;
+  Eigen::Matrix3Xd principal_moments_standard_error;
   int solver_iterations = 0;
   std::string solver_status;  ///< Eigen's LevenbergMarquardt status, in words.
 };

@@ -26,7 +26,8 @@ BodyCentralProperties CentralPropertiesOf(const InertialParameters& pi);
 /// "unexcited_links", "base_parameters": [{"name", "file", "least_squares", "identified",
 /// "standard_error"}]}, "training_samples", "validation_samples", "joints": [{"joint",
 /// "rms_file", "rms_least_squares", "rms_identified"}], "links": [{"link", "file" and
-/// "identified" (each {"mass", "com", "principal_moments", "parameters"}),
+/// "identified" (each {"mass", "com", "principal_moments", "parameters"}; the identified one
+/// also "mass_standard_error", "com_standard_error", "principal_moments_standard_error"),
 /// "least_squares_consistent", "identified_consistent", "geometry_bound", "ellipsoid_ratio"
 /// ({"file", "least_squares", "identified"}, null where not imposed) and
 /// "least_squares_within_geometry" (null where not imposed)}], "inconsistent_least_squares_links",
