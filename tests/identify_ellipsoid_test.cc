@@ -23,6 +23,17 @@
 namespace massprops {
 namespace {
 
+// A URDF of one body of 1 kg on a revolute joint about z, whose <collision> holds `collision`.
+std::string OneBodyRobot(const std::string& collision) {
+  return "<robot name='r'><link name='base'/><link name='body'><inertial><mass value='1'/>"
+         "<inertia ixx='1e-3' iyy='1e-3' izz='1e-3' ixy='0' ixz='0' iyz='0'/></inertial>"
+         "<collision>" +
+         collision +
+         "</collision></link>"
+         "<joint name='j' type='revolute'><parent link='base'/><child link='body'/>"
+         "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint></robot>";
+}
+
 Eigen::Matrix3d Inertia(double xx, double yy, double zz, double xy, double xz, double yz) {
   Eigen::Matrix3d I;
   I << xx, xy, xz, xy, yy, yz, xz, yz, zz;
@@ -138,13 +149,7 @@ TEST(IdentifyEllipsoidTest, AUniformBoxLiesInsideItsBoundingEllipsoid) {
   std::snprintf(origin, sizeof origin, "<origin xyz='%.17g %.17g %.17g' rpy='%.17g %.17g %.17g'/>",
                 p[0], p[1], p[2], rpy[0], rpy[1], rpy[2]);
   const std::string urdf =
-      "<robot name='r'><link name='base'/><link name='body'><inertial><mass value='1'/>"
-      "<inertia ixx='1e-3' iyy='1e-3' izz='1e-3' ixy='0' ixz='0' iyz='0'/></inertial>"
-      "<collision>" +
-      std::string(origin) +
-      "<geometry><box size='0.4 0.1 0.06'/></geometry></collision></link>"
-      "<joint name='j' type='revolute'><parent link='base'/><child link='body'/>"
-      "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint></robot>";
+      OneBodyRobot(std::string(origin) + "<geometry><box size='0.4 0.1 0.06'/></geometry>");
   const ReadResult read = ReadModelString(urdf, "box.urdf");
   ASSERT_TRUE(read.ok() && read.models.size() == 1);
   const KinematicTreeResult made = MakeKinematicTree(read.models[0]);
@@ -241,13 +246,8 @@ TEST(IdentifyEllipsoidTest, WeldedLinksGeometryCountsAndUnknownGeometryIsNone) {
 // Without a points function the mesh is not read: no ellipsoid.
 TEST(IdentifyEllipsoidTest, AMeshIsReadThroughThePointsFunction) {
   const std::string urdf =
-      "<robot name='r'><link name='base'/><link name='body'><inertial><mass value='1'/>"
-      "<inertia ixx='1e-3' iyy='1e-3' izz='1e-3' ixy='0' ixz='0' iyz='0'/></inertial>"
-      "<collision><geometry><mesh filename='" +
-      std::string(MASSPROPS_TESTDATA_DIR) +
-      "/mesh/box_ascii.stl' scale='3 1 1'/></geometry></collision></link>"
-      "<joint name='j' type='revolute'><parent link='base'/><child link='body'/>"
-      "<axis xyz='0 0 1'/><limit lower='-1' upper='1' effort='1' velocity='1'/></joint></robot>";
+      OneBodyRobot("<geometry><mesh filename='" + std::string(MASSPROPS_TESTDATA_DIR) +
+                   "/mesh/box_ascii.stl' scale='3 1 1'/></geometry>");
   const ReadResult read = ReadModelString(urdf, "mesh.urdf");
   ASSERT_TRUE(read.ok() && read.models.size() == 1);
   const KinematicTreeResult made = MakeKinematicTree(read.models[0]);
@@ -285,19 +285,6 @@ PlanarArm ReadPlanarArm() {
   return arm;
 }
 
-// The true arm of tools/make_identify_csv.py and identify_test's StandardErrorsMatch... (m1
-// 2.3 kg, lc1 0.22 m, I1 0.05 kg·m²; m2 1.0 kg, lc2 0.24 m, I2 0.012 kg·m²; ixx, izz
-// plausible), its friction viscous only.
-KinematicTree TruePlanarArm(const KinematicTree& file) {
-  KinematicTree truth = file;
-  truth.bodies[0].pi_BBo_B =
-      MakeInertialParameters(2.3, {0.22, 0, 0}, Inertia(0.005, 0.05, 0.05, 0, 0, 0));
-  truth.bodies[1].pi_BBo_B =
-      MakeInertialParameters(1.0, {0.24, 0, 0}, Inertia(0.002, 0.012, 0.012, 0, 0, 0));
-  truth.friction = {{0.3, 0, 0, 0}, {0.1, 0, 0, 0}};
-  return truth;
-}
-
 // N samples of exciting_motion.h's trajectory at 100 Hz, τ of `truth` by the RNEA plus seeded
 // Gaussian noise σ.
 OrderedTrajectory Simulate(const KinematicTree& truth, int N, double noise, unsigned seed) {
@@ -320,7 +307,7 @@ TEST(IdentifyEllipsoidTest, PlanarArmFitStaysInsideItsBoxesAndPredictsAsWell) {
   const PlanarArm arm = ReadPlanarArm();
   ASSERT_EQ(arm.ellipsoids.size(), 2u);
   ASSERT_TRUE(arm.ellipsoids[0].has_value() && arm.ellipsoids[1].has_value());
-  const KinematicTree truth = TruePlanarArm(arm.file);
+  const KinematicTree truth = test_support::TruePlanarArm(arm.file);
   for (int b = 0; b < 2; ++b) {
     EXPECT_LT(HandRatio(truth.bodies[b].pi_BBo_B, *arm.ellipsoids[b]), 1) << b;
     EXPECT_LT(HandRatio(arm.file.bodies[b].pi_BBo_B, *arm.ellipsoids[b]), 1) << b;
@@ -361,7 +348,7 @@ TEST(IdentifyEllipsoidTest, PlanarArmFitStaysInsideItsBoxesAndPredictsAsWell) {
 // torques within 3% of the free fit (measured: the same to 1e-5 N·m).
 TEST(IdentifyEllipsoidTest, ShrunkEllipsoidsCountLeastSquaresOutsideAndTheFitStaysInside) {
   const PlanarArm arm = ReadPlanarArm();
-  const KinematicTree truth = TruePlanarArm(arm.file);
+  const KinematicTree truth = test_support::TruePlanarArm(arm.file);
   const OrderedTrajectory data = Simulate(truth, 800, 0.05, 2018);
   IdentifyOptions options;
   options.ellipsoids = arm.ellipsoids;
@@ -394,7 +381,7 @@ TEST(IdentifyEllipsoidTest, ShrunkEllipsoidsCountLeastSquaresOutsideAndTheFitSta
 // held-out torque error (measured: 0.150 and 0.102 N·m against 0.053 and 0.050 without it).
 TEST(IdentifyEllipsoidTest, AnEllipsoidTooSmallForTheTruthBindsTheFit) {
   const PlanarArm arm = ReadPlanarArm();
-  const KinematicTree truth = TruePlanarArm(arm.file);
+  const KinematicTree truth = test_support::TruePlanarArm(arm.file);
   const OrderedTrajectory data = Simulate(truth, 800, 0.05, 2018);
   IdentifyOptions options;
   options.ellipsoids = {std::nullopt, Ellipsoid({0.24, 0, 0}, Eigen::Matrix3d::Identity(),

@@ -212,13 +212,8 @@ TEST(IdentifyTest, StandardErrorsMatchTheSpreadOverNoiseSeeds) {
   const KinematicTreeResult made = MakeKinematicTree(read.models.at(0));
   ASSERT_TRUE(made.tree.has_value()) << made.error;
   const KinematicTree& file = *made.tree;
-  KinematicTree truth = file;
   // Central inertia about y (the joint axis, -y) as the URDF writes it; ixx, izz kept plausible.
-  truth.bodies[0].pi_BBo_B =
-      MakeInertialParameters(2.3, {0.22, 0, 0}, Inertia(0.005, 0.05, 0.05, 0, 0, 0));
-  truth.bodies[1].pi_BBo_B =
-      MakeInertialParameters(1.0, {0.24, 0, 0}, Inertia(0.002, 0.012, 0.012, 0, 0, 0));
-  truth.friction = {{0.3, 0, 0, 0}, {0.1, 0, 0, 0}};
+  const KinematicTree truth = test_support::TruePlanarArm(file);
   constexpr int kSeeds = 12;
   std::vector<Eigen::VectorXd> values;  // per seed: m, cx, cy, cz of each body
   Eigen::VectorXd reported = Eigen::VectorXd::Zero(8);
