@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/pseudo_inertia.h"
 #include "massprops/analysis/identify.h"
 #include "massprops/analysis/link_measure.h"
 
@@ -16,27 +17,8 @@ namespace {
 
 using Matrix10 = Eigen::Matrix<double, 10, 10>;
 using Vector9 = Eigen::Matrix<double, 9, 1>;
-
-// The pseudo-inertia J = [S h; hᵀ m] of π (S = ∫x·xᵀ dm = ½·tr(I)·1 − I about the origin) and
-// back: both linear.
-Eigen::Matrix4d PseudoInertiaOf(const InertialParameters& pi) {
-  Eigen::Matrix3d I;
-  I << pi[4], pi[5], pi[7], pi[5], pi[6], pi[8], pi[7], pi[8], pi[9];
-  Eigen::Matrix4d J;
-  J.topLeftCorner<3, 3>() = 0.5 * I.trace() * Eigen::Matrix3d::Identity() - I;
-  J.block<3, 1>(0, 3) = pi.segment<3>(1);
-  J.block<1, 3>(3, 0) = pi.segment<3>(1).transpose();
-  J(3, 3) = pi[0];
-  return J;
-}
-
-InertialParameters ParametersOfPseudoInertia(const Eigen::Matrix4d& J) {
-  const Eigen::Matrix3d S = J.topLeftCorner<3, 3>();
-  const Eigen::Matrix3d I = S.trace() * Eigen::Matrix3d::Identity() - S;
-  InertialParameters pi;
-  pi << J(3, 3), J(0, 3), J(1, 3), J(2, 3), I(0, 0), I(0, 1), I(1, 1), I(0, 2), I(1, 2), I(2, 2);
-  return pi;
-}
+using internal::ParametersOfPseudoInertia;
+using internal::PseudoInertiaOf;
 
 // The matrix of π ↦ π' where J' = X·J·Xᵀ (a congruence of the pseudo-inertia: linear in π).
 Matrix10 CongruenceMap(const Eigen::Matrix4d& X) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/pseudo_inertia.h"
 #include "massprops/analysis/identify.h"
 #include "massprops/core/spatial_inertia.h"
 
@@ -31,31 +32,11 @@ PseudoMatrix UpperFactor(const LogCholeskyParameters& t) {
   return std::exp(t[0]) * U;
 }
 
-// π of a pseudo-inertia J = [Σ h; hᵀ m] (linear in J): I = tr(Σ)·1 − Σ about the origin.
-InertialParameters FromPseudoInertia(const PseudoMatrix& J) {
-  const Eigen::Matrix3d S = J.topLeftCorner<3, 3>();
-  const Eigen::Matrix3d I = S.trace() * Eigen::Matrix3d::Identity() - S;
-  InertialParameters pi;
-  pi << J(3, 3), J(0, 3), J(1, 3), J(2, 3), I(0, 0), I(0, 1), I(1, 1), I(0, 2), I(1, 2), I(2, 2);
-  return pi;
-}
-
-PseudoMatrix ToPseudoInertia(const InertialParameters& pi) {
-  Eigen::Matrix3d I;
-  I << pi[4], pi[5], pi[7], pi[5], pi[6], pi[8], pi[7], pi[8], pi[9];
-  PseudoMatrix J;
-  J.topLeftCorner<3, 3>() = 0.5 * I.trace() * Eigen::Matrix3d::Identity() - I;
-  J.block<3, 1>(0, 3) = pi.segment<3>(1);
-  J.block<1, 3>(3, 0) = pi.segment<3>(1).transpose();
-  J(3, 3) = pi[0];
-  return J;
-}
-
 }  // namespace
 
 InertialParameters InertialParametersFromLogCholesky(const LogCholeskyParameters& theta) {
   const PseudoMatrix U = UpperFactor(theta);
-  return FromPseudoInertia(U * U.transpose());
+  return internal::ParametersOfPseudoInertia(U * U.transpose());
 }
 
 Eigen::Matrix<double, 10, 10> InertialParametersFromLogCholeskyJacobian(
@@ -74,14 +55,14 @@ Eigen::Matrix<double, 10, 10> InertialParametersFromLogCholeskyJacobian(
     } else {
       dU(kRow[k], kCol[k]) = k <= 3 ? U(kRow[k], kCol[k]) : scale;
     }
-    D.col(k) = FromPseudoInertia(dU * U.transpose() + U * dU.transpose());
+    D.col(k) = internal::ParametersOfPseudoInertia(dU * U.transpose() + U * dU.transpose());
   }
   return D;
 }
 
 LogCholeskyParameters LogCholeskyFromInertialParameters(const InertialParameters& pi,
                                                         double floor) {
-  PseudoMatrix J = ToPseudoInertia(pi);
+  PseudoMatrix J = internal::PseudoInertiaOf(pi);
   const Eigen::SelfAdjointEigenSolver<PseudoMatrix> eig(J);
   const Eigen::Vector4d& lambda = eig.eigenvalues();
   const double smallest = std::max(floor * std::max(lambda.maxCoeff(), 0.0), 1e-12);
